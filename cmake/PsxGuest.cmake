@@ -1,0 +1,46 @@
+# Building PlayStation (guest) programs with Debian's MIPS cross compiler. Programs link only the
+# project's own runtime (guest/): the Debian toolchain's libraries are MIPS32r2/PIC/hard-float.
+# psx_add_exe(<target> SOURCES <files...> [INCLUDES <dirs...>] [DEFINES <defs...>] [NO_RUNTIME])
+# produces ${CMAKE_CURRENT_BINARY_DIR}/<target>.exe (a PS-X EXE) and <target>.elf.
+find_program(PSX_CC mipsel-linux-gnu-gcc REQUIRED)
+
+set(PSX_GUEST_DIR ${PROJECT_SOURCE_DIR}/guest)
+set(PSX_CFLAGS -march=r3000 -mabi=32 -mno-abicalls -fno-pic -G0 -msoft-float -ffreestanding
+    -nostdlib -fno-builtin -fno-stack-protector -O2 -Wall -Wno-main -std=gnu11)
+set(PSX_LDFLAGS -nostdlib -static -Wl,--build-id=none -Wl,-T,${PSX_GUEST_DIR}/psx.ld)
+set(PSX_RUNTIME_SOURCES ${PSX_GUEST_DIR}/crt0.S ${PSX_GUEST_DIR}/runtime.c)
+
+function(psx_add_exe target)
+  cmake_parse_arguments(ARG "NO_RUNTIME" "" "SOURCES;INCLUDES;DEFINES;DEPENDS" ${ARGN})
+  set(srcs ${ARG_SOURCES})
+  if(NOT ARG_NO_RUNTIME)
+    list(PREPEND srcs ${PSX_RUNTIME_SOURCES})
+  endif()
+  set(incs -I${PSX_GUEST_DIR}/include)
+  foreach(dir ${ARG_INCLUDES})
+    list(APPEND incs -I${dir})
+  endforeach()
+  set(defs)
+  foreach(def ${ARG_DEFINES})
+    list(APPEND defs -D${def})
+  endforeach()
+  set(objs)
+  foreach(src ${srcs})
+    get_filename_component(name ${src} NAME)
+    set(obj ${CMAKE_CURRENT_BINARY_DIR}/${target}.dir/${name}.o)
+    add_custom_command(OUTPUT ${obj}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/${target}.dir
+      COMMAND ${PSX_CC} ${PSX_CFLAGS} ${incs} ${defs} -c ${src} -o ${obj}
+      DEPENDS ${src} ${ARG_DEPENDS} IMPLICIT_DEPENDS C ${src}
+      COMMENT "PSX cc ${name}" VERBATIM)
+    list(APPEND objs ${obj})
+  endforeach()
+  set(elf ${CMAKE_CURRENT_BINARY_DIR}/${target}.elf)
+  set(exe ${CMAKE_CURRENT_BINARY_DIR}/${target}.exe)
+  add_custom_command(OUTPUT ${exe}
+    COMMAND ${PSX_CC} ${PSX_CFLAGS} ${PSX_LDFLAGS} ${objs} -o ${elf}
+    COMMAND psxexe ${elf} ${exe}
+    DEPENDS ${objs} psxexe ${PSX_GUEST_DIR}/psx.ld
+    COMMENT "PSX link ${target}.exe" VERBATIM)
+  add_custom_target(${target} ALL DEPENDS ${exe})
+endfunction()

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs every dependency psxrl needs (Debian packages, then PyPI packages), configures and
+# builds the project into build/. Safe to run again: installed packages are skipped.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+APT_PACKAGES=(
+  cmake ninja-build g++ pkg-config
+  libgtest-dev libpng-dev libsdl2-dev libosmesa6-dev libeigen3-dev
+  libtorch-dev pybind11-dev liblua5.4-dev lua5.4
+  gcc-mipsel-linux-gnu binutils-mipsel-linux-gnu
+  python3 python3-pip python3-venv
+)
+PIP_PACKAGES=(numpy gymnasium pytest)
+
+missing=()
+for p in "${APT_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  echo "setup: installing ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+PY=${PYTHON:-python3}
+pip_missing=()
+for p in "${PIP_PACKAGES[@]}"; do
+  "$PY" -c "import $p" 2>/dev/null || pip_missing+=("$p")
+done
+if [ ${#pip_missing[@]} -gt 0 ]; then
+  echo "setup: pip installing ${pip_missing[*]}"
+  "$PY" -m pip install -q "${pip_missing[@]}" || "$PY" -m pip install -q --break-system-packages "${pip_missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build

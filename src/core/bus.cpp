@@ -1,0 +1,205 @@
+// Bus: region decoding, access timing, I/O dispatch and the expansion-2 debug ports.
+#include "core/bus.h"
+
+#include <cstdio>
+#include <cstring>
+
+#include "core/irq.h"
+
+namespace psx {
+
+namespace {
+constexpr u32 kExp1Base = 0x1F000000, kExp1End = 0x1F800000;
+constexpr u32 kScratchBase = 0x1F800000;
+constexpr u32 kExp2Base = 0x1F802000, kIoEnd = 0x1F803000;
+constexpr u32 kExp3Base = 0x1FA00000, kExp3End = 0x1FC00000;
+constexpr u32 kBiosBase = 0x1FC00000;
+constexpr u32 kCacheControl = 0xFFFE0130;
+
+u32 load_width(const u8* p, u32 width) {
+  switch (width) {
+    case 1: return p[0];
+    case 2: return p[0] | p[1] << 8;
+    default: return Bus::load_le32(p);
+  }
+}
+void store_width(u8* p, u32 v, u32 width) {
+  p[0] = u8(v);
+  if (width >= 2) p[1] = u8(v >> 8);
+  if (width == 4) {
+    p[2] = u8(v >> 16);
+    p[3] = u8(v >> 24);
+  }
+}
+}  // namespace
+
+Bus::Bus(Scheduler& sched, InterruptController& irq)
+    : sched_(sched), irq_(irq), ram_(kRamSize, 0), bios_(kBiosSize, 0) {
+  // Power-on values of memory control 1 as the BIOS leaves them (psx-spx "Memory Control").
+  memctrl_ = {0x1F000000, 0x1F802000, 0x0013243F, 0x00003022, 0x0013243F,
+              0x200931E1, 0x00020843, 0x00070777, 0x00031125};
+}
+
+void Bus::map_io(u32 phys_base, u32 size, IoDevice* dev) {
+  for (u32 a = phys_base; a < phys_base + size; a += 16) {
+    io_[(a - kIoBase) / 16] = dev;
+    io_base_[(a - kIoBase) / 16] = phys_base;
+  }
+}
+
+void Bus::load_bios(const std::vector<u8>& image) {
+  std::memcpy(bios_.data(), image.data(), kBiosSize);
+  has_bios_ = true;
+}
+
+void Bus::report_unmapped(u32 vaddr, const char* what) {
+  if (unmapped_[vaddr]++ != 0 || !on_log) return;
+  char msg[96];
+  std::snprintf(msg, sizeof msg, "unmapped %s at 0x%08X (reported once)", what, vaddr);
+  on_log(msg);
+}
+
+bool Bus::fetch_slow(u32 vaddr, u32 p, u32& word) {
+  if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
+    word = load_le32(&bios_[p - kBiosBase]);
+    if (vaddr >= 0xA0000000) sched_.advance(kBiosRead);
+    return true;
+  }
+  // The scratchpad is data cache: it cannot be executed. Nor can I/O or expansion space.
+  report_unmapped(vaddr, "instruction fetch");
+  return false;
+}
+
+bool Bus::read(u32 vaddr, u32& v, u32 width) {
+  u32 p = physical(vaddr);
+  if (p < 0x00800000) {
+    v = load_width(&ram_[p & (kRamSize - 1)], width);
+    sched_.advance(kRamRead);
+    return true;
+  }
+  if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
+    v = load_width(&scratch_[p - kScratchBase], width);
+    return true;
+  }
+  if (p >= kIoBase && p < kIoEnd) {
+    sched_.advance(kIoRead);
+    v = io_read(p, width);
+    return true;
+  }
+  if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
+    v = load_width(&bios_[p - kBiosBase], width);
+    sched_.advance(kBiosRead);
+    return true;
+  }
+  if ((p >= kExp1Base && p < kExp1End) || (p >= kExp3Base && p < kExp3End)) {
+    v = width == 4 ? 0xFFFFFFFF : (1u << (width * 8)) - 1;  // open expansion bus reads all ones
+    return true;
+  }
+  if (vaddr == kCacheControl) {
+    v = cache_control_;
+    return true;
+  }
+  report_unmapped(vaddr, "read");
+  return false;
+}
+
+bool Bus::write(u32 vaddr, u32 v, u32 width) {
+  u32 p = physical(vaddr);
+  if (p < 0x00800000) {
+    store_width(&ram_[p & (kRamSize - 1)], v, width);
+    return true;
+  }
+  if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
+    store_width(&scratch_[p - kScratchBase], v, width);
+    return true;
+  }
+  if (p >= kIoBase && p < kIoEnd) {
+    io_write(p, v, width);
+    return true;
+  }
+  if ((p >= kBiosBase && p < kBiosBase + kBiosSize) || (p >= kExp1Base && p < kExp1End) ||
+      (p >= kExp3Base && p < kExp3End))
+    return true;  // ROM and empty expansion space ignore writes
+  if (vaddr == kCacheControl) {
+    cache_control_ = v;
+    return true;
+  }
+  report_unmapped(vaddr, "write");
+  return false;
+}
+
+u32 Bus::io_read(u32 p, u32 width) {
+  u32 shift = (p & 3) * 8;
+  if (p < kIoBase + 0x24) return memctrl_[(p - kIoBase) / 4] >> shift;
+  if ((p & ~3u) == 0x1F801060) return ram_size_ >> shift;
+  if ((p & ~7u) == 0x1F801070) return irq_.read(p & 0xF) >> shift;
+  if (p >= kExp2Base) {
+    // DUART status register A: report the transmitter ready and empty so TTY loops proceed.
+    if (p == 0x1F802021) return 0x0C;
+    return 0;
+  }
+  u32 slot = (p - kIoBase) / 16;
+  if (IoDevice* dev = io_[slot]) return dev->io_read(p - io_base_[slot], width);
+  report_unmapped(p, "I/O read");
+  return 0;
+}
+
+void Bus::io_write(u32 p, u32 v, u32 width) {
+  if (p < kIoBase + 0x24) {
+    memctrl_[(p - kIoBase) / 4] = v;
+    return;
+  }
+  if ((p & ~3u) == 0x1F801060) {
+    ram_size_ = v;
+    return;
+  }
+  if ((p & ~7u) == 0x1F801070) {
+    irq_.write(p & 0xF, v);
+    return;
+  }
+  if (p >= kExp2Base) {
+    expansion2_write(p, v, width);
+    return;
+  }
+  u32 slot = (p - kIoBase) / 16;
+  if (IoDevice* dev = io_[slot]) {
+    dev->io_write(p - io_base_[slot], v, width);
+    return;
+  }
+  report_unmapped(p, "I/O write");
+}
+
+void Bus::expansion2_write(u32 p, u32 v, u32 width) {
+  switch (p) {
+    case 0x1F802023:  // dev-kit DUART channel A transmit
+    case 0x1F802080:  // emulator debug console
+      if (on_tty) on_tty(static_cast<char>(v & 0xFF));
+      return;
+    case 0x1F802082:
+      if (width == 2 && on_exit_request) on_exit_request(v & 0xFFFF);
+      return;
+    case 0x1F802041:  // POST 7-segment display: nothing to show
+      return;
+    default:
+      return;  // other DUART and dev-kit registers: writes have no visible effect here
+  }
+}
+
+void Bus::dma_write_ram(u32 addr, const u32* words, u32 count) {
+  for (u32 i = 0; i < count; ++i) store_le32(&ram_[(addr + i * 4) & (kRamSize - 4)], words[i]);
+}
+
+void Bus::dma_read_ram(u32 addr, u32* words, u32 count) const {
+  for (u32 i = 0; i < count; ++i) words[i] = load_le32(&ram_[(addr + i * 4) & (kRamSize - 4)]);
+}
+
+void Bus::do_state(StateIO& s) {
+  s.section("BUS ", 1);
+  s.bytes(ram_.data(), ram_.size());
+  s.pod(scratch_);
+  s.pod(memctrl_);
+  s.pod(ram_size_);
+  s.pod(cache_control_);
+}
+
+}  // namespace psx

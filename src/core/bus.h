@@ -1,0 +1,125 @@
+// The PlayStation memory map (psx-spx "Memory Map"): KUSEG/KSEG0/KSEG1 mirrors of the physical
+// space, 2 MiB RAM mirrored through the first 8 MiB, the 1 KiB scratchpad (data cache used as
+// RAM), the 512 KiB BIOS ROM, expansion regions 1-3, the I/O ports and the KSEG2 cache control
+// register. Every CPU and DMA access to memory goes through here.
+#pragma once
+#include <array>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/io_device.h"
+#include "core/scheduler.h"
+#include "core/state.h"
+#include "core/types.h"
+
+namespace psx {
+
+class InterruptController;
+
+class Bus {
+ public:
+  static constexpr u32 kRamSize = 2 * 1024 * 1024;
+  static constexpr u32 kScratchSize = 1024;
+  static constexpr u32 kBiosSize = 512 * 1024;
+
+  Bus(Scheduler& sched, InterruptController& irq);
+
+  // Physical address for a virtual one (psx-spx region masks). KSEG2 is not translated.
+  static u32 physical(u32 vaddr) {
+    static constexpr u32 kRegionMask[8] = {0xFFFFFFFF, 0xFFFFFFFF, 0xFFFFFFFF, 0xFFFFFFFF,
+                                           0x7FFFFFFF, 0x1FFFFFFF, 0xFFFFFFFF, 0xFFFFFFFF};
+    return vaddr & kRegionMask[vaddr >> 29];
+  }
+
+  // CPU accesses. They return false on a bus error (the CPU raises IBE/DBE) and charge the
+  // region's access time to the scheduler.
+  bool fetch(u32 vaddr, u32& word) {
+    u32 p = physical(vaddr);
+    if (p < 0x00800000) {
+      word = load_le32(&ram_[p & (kRamSize - 1)]);
+      // KSEG0/KUSEG code runs from the instruction cache; KSEG1 code is fetched uncached.
+      if (vaddr >= 0xA0000000) sched_.advance(kRamFetchUncached);
+      return true;
+    }
+    return fetch_slow(vaddr, p, word);
+  }
+  bool read32(u32 vaddr, u32& v) { return read(vaddr, v, 4); }
+  bool read16(u32 vaddr, u32& v) { return read(vaddr, v, 2); }
+  bool read8(u32 vaddr, u32& v) { return read(vaddr, v, 1); }
+  bool write32(u32 vaddr, u32 v) { return write(vaddr, v, 4); }
+  bool write16(u32 vaddr, u32 v) { return write(vaddr, v, 2); }
+  bool write8(u32 vaddr, u32 v) { return write(vaddr, v, 1); }
+
+  // Maps a block's registers into the I/O region (physical 0x1F801000-0x1F802FFF, 16-byte units).
+  void map_io(u32 phys_base, u32 size, IoDevice* dev);
+
+  // DMA moves whole words between RAM and devices; addresses wrap inside the 2 MiB RAM.
+  void dma_write_ram(u32 addr, const u32* words, u32 count);
+  void dma_read_ram(u32 addr, u32* words, u32 count) const;
+
+  void load_bios(const std::vector<u8>& image);
+  bool has_bios() const { return has_bios_; }
+
+  u8* ram() { return ram_.data(); }
+  const u8* ram() const { return ram_.data(); }
+  u8* scratchpad() { return scratch_.data(); }
+  u8* bios() { return bios_.data(); }
+
+  // Debug ports in expansion region 2 (DESIGN.md "Debug ports").
+  std::function<void(char)> on_tty;
+  std::function<void(u32 code)> on_exit_request;
+  // Where unmapped and not-yet-emulated accesses are reported (once per address).
+  std::function<void(const std::string&)> on_log;
+
+  u32 cache_control() const { return cache_control_; }
+  const std::map<u32, u32>& unmapped_accesses() const { return unmapped_; }
+
+  void do_state(StateIO& s);
+
+  static u32 load_le32(const u8* p) { return p[0] | p[1] << 8 | p[2] << 16 | static_cast<u32>(p[3]) << 24; }
+  static void store_le32(u8* p, u32 v) {
+    p[0] = u8(v);
+    p[1] = u8(v >> 8);
+    p[2] = u8(v >> 16);
+    p[3] = u8(v >> 24);
+  }
+
+  // Access times in CPU cycles beyond the instruction's own cycle (psx-spx "Memory Control";
+  // the BIOS ROM figure follows the default delay/size setting 0x0013243F of 0x1F801010).
+  static constexpr Cycles kRamFetchUncached = 4;
+  static constexpr Cycles kRamRead = 4;
+  static constexpr Cycles kBiosRead = 20;
+  static constexpr Cycles kIoRead = 2;
+
+ private:
+  bool fetch_slow(u32 vaddr, u32 p, u32& word);
+  bool read(u32 vaddr, u32& v, u32 width);
+  bool write(u32 vaddr, u32 v, u32 width);
+  u32 io_read(u32 p, u32 width);
+  void io_write(u32 p, u32 v, u32 width);
+  void expansion2_write(u32 p, u32 v, u32 width);
+  void report_unmapped(u32 vaddr, const char* what);
+
+  Scheduler& sched_;
+  InterruptController& irq_;
+  std::vector<u8> ram_;
+  std::array<u8, kScratchSize> scratch_{};
+  std::vector<u8> bios_;
+  bool has_bios_ = false;
+
+  // Memory control 1 (0x1F801000-0x1F801023), RAM_SIZE (0x1F801060) and cache control.
+  std::array<u32, 9> memctrl_{};
+  u32 ram_size_ = 0x00000B88;
+  u32 cache_control_ = 0;
+
+  static constexpr u32 kIoBase = 0x1F801000;
+  static constexpr u32 kIoSlots = 0x2000 / 16;
+  std::array<IoDevice*, kIoSlots> io_{};
+  std::array<u32, kIoSlots> io_base_{};
+  std::map<u32, u32> unmapped_;
+};
+
+}  // namespace psx

@@ -1,0 +1,41 @@
+// Interfaces between the bus/DMA and the hardware blocks mapped into the I/O region
+// (0x1F801000-0x1F802FFF). Each block implements the ones it needs; the console wires them up.
+#pragma once
+#include "core/types.h"
+
+namespace psx {
+
+// A block with registers in the I/O region. `offset` is relative to the base the block was mapped
+// at; `width` is the access size in bytes (1, 2 or 4). Each block implements the documented
+// behaviour of narrow and wide accesses to its own registers.
+class IoDevice {
+ public:
+  virtual ~IoDevice() = default;
+  virtual u32 io_read(u32 offset, u32 width) = 0;
+  virtual void io_write(u32 offset, u32 value, u32 width) = 0;
+};
+
+// The device side of a DMA channel (MDECin/out, GPU, CD-ROM, SPU). The DMA controller moves
+// words between RAM and the device in blocks; `dma_request` is the device's DRQ line, which
+// sync mode 1 (block) transfers wait on.
+class DmaPort {
+ public:
+  virtual ~DmaPort() = default;
+  virtual void dma_write(const u32* words, u32 count) = 0;  // RAM -> device
+  virtual void dma_read(u32* words, u32 count) = 0;         // device -> RAM
+  virtual bool dma_request() const { return true; }
+};
+
+// Video timing edges the GPU exports to the root counters (timers 0 and 1 count dots and
+// HBlanks and can synchronise to the blanking periods). Called at the scheduler time of the edge.
+class VideoSignals {
+ public:
+  virtual ~VideoSignals() = default;
+  virtual void hblank_changed(bool active) = 0;
+  virtual void vblank_changed(bool active) = 0;
+  // GPU video clock cycles per dot for the current horizontal resolution (10, 8, 7, 5 or 4); the
+  // video clock runs at 11/7 of the CPU clock.
+  virtual void dot_divider_changed(u32 video_cycles_per_dot) = 0;
+};
+
+}  // namespace psx

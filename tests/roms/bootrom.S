@@ -34,6 +34,16 @@ _start:
         sw      $t1, 0x0130($t2)    # cache control as the BIOS sets it
         mtc0    $zero, $12          # SR: kernel mode, interrupts off, RAM exception vectors
 
+        # A0h/B0h/C0h: this ROM has no kernel; each vector just returns ("jr $ra; nop"), so
+        # programs' BIOS calls return and the emulator's putchar hooks still print.
+        li      $t6, 0x03E00008
+        sw      $t6, 0x00A0($zero)
+        sw      $zero, 0x00A4($zero)
+        sw      $t6, 0x00B0($zero)
+        sw      $zero, 0x00B4($zero)
+        sw      $t6, 0x00C0($zero)
+        sw      $zero, 0x00C4($zero)
+
         la      $t3, banner
 1:      lbu     $t4, 0($t3)
         addiu   $t3, $t3, 1

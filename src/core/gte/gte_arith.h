@@ -13,12 +13,9 @@ namespace psx {
 // 30-28 positive, 27-25 negative) and wraps to 44 bits before the next term is added.
 template <int i>
 inline s64 Gte::check_mac(s64 v) {
-  constexpr s64 kMax = (s64(1) << 43) - 1;
-  constexpr s64 kMin = -(s64(1) << 43);
-  if (v > kMax) {
-    r_.flag |= kFlagMac1Pos >> (i - 1);
-  } else if (v < kMin) {
-    r_.flag |= kFlagMac1Neg >> (i - 1);
+  // In range iff v + 2^43 fits in 44 unsigned bits: one well-predicted test on the fast path.
+  if (u64(v + (s64(1) << 43)) >> 44) [[unlikely]] {
+    r_.flag |= v > 0 ? kFlagMac1Pos >> (i - 1) : kFlagMac1Neg >> (i - 1);
   }
   return (v << 20) >> 20;
 }
@@ -27,11 +24,8 @@ inline s64 Gte::check_mac(s64 v) {
 template <int i>
 inline void Gte::set_ir(s32 v, bool lm) {
   const s32 lo = lm ? 0 : -0x8000;
-  if (v < lo) {
-    v = lo;
-    r_.flag |= kFlagIr1 >> (i - 1);
-  } else if (v > 0x7FFF) {
-    v = 0x7FFF;
+  if (u32(v - lo) > u32(0x7FFF - lo)) [[unlikely]] {
+    v = v < lo ? lo : 0x7FFF;
     r_.flag |= kFlagIr1 >> (i - 1);
   }
   r_.ir[i] = s16(v);

@@ -29,7 +29,13 @@ class Gte {
   // Register numbers as seen through read/write: data 0-31, control 32-63 (the numbering of
   // the hardware test vectors). Routes to read_data/read_control.
   u32 read_register(u32 r) { return r < 32 ? read_data(r) : read_control(r - 32); }
-  void write_register(u32 r, u32 v) { r < 32 ? write_data(r, v) : write_control(r - 32, v); }
+  void write_register(u32 r, u32 v) {
+    if (r < 32) {
+      write_data(r, v);
+    } else {
+      write_control(r - 32, v);
+    }
+  }
 
   // Cycles a command takes (psx-spx "GTE Command Summary"); unknown opcodes take 1.
   static u32 command_cycles(u32 command);

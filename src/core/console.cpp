@@ -3,6 +3,7 @@
 
 #include <cstring>
 
+#include "core/hash.h"
 #include "core/input_error.h"
 
 namespace psx {
@@ -11,6 +12,7 @@ Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cp
   frame_event_ = sched_.add_event("frame", [this](Cycles late) {
     frame_done_ = true;
     ++frames_;
+    watches_.on_frame(frames_, sched_.now());
     sched_.schedule(frame_event_, kFrameCycles - late);
     cpu_.stop();
   });
@@ -43,6 +45,7 @@ void Console::load_bios_image(const std::vector<u8>& image, const std::string& n
     throw InputError::whole(name, "a BIOS image must be exactly 524288 bytes (512 KiB), this file has " +
                                       std::to_string(image.size()));
   bus_.load_bios(image);
+  bios_hash_ = fnv1a(image.data(), image.size());
   cpu_.reset();
 }
 
@@ -56,6 +59,7 @@ void Console::boot_exe(const std::string& path) { boot_exe_image(read_file(path)
 
 void Console::boot_exe_image(const std::vector<u8>& file, const std::string& name) {
   PsxExe exe = PsxExe::parse(file, name);
+  program_hash_ = fnv1a(file.data(), file.size());
   if (bus_.has_bios()) {
     boot_bios();
     pending_exe_ = std::move(exe);
@@ -115,6 +119,14 @@ void Console::run_cycles(Cycles n) {
     sched_.run_due_events();
   }
   sched_.cancel(limit_event_);
+}
+
+bool Console::run_until(const std::function<bool()>& done, u64 max_frames) {
+  for (u64 i = 0; i < max_frames && !stopped(); ++i) {
+    if (done()) return true;
+    run_frame();
+  }
+  return done();
 }
 
 void Console::do_state(StateIO& s) {

@@ -124,11 +124,11 @@ void Sio0::write_ctrl(u16 value) {
   }
   const bool was_selected = ctrl_ & kCtrlSelect;
   ctrl_ = value & kCtrlStored;
-  if (value & kCtrlAcknowledge) {
-    // Clears JOY_STAT.9 (and the parity flag, never set here) - except that the flag cannot be
-    // cleared while /ACK is still low with the ACK interrupt enabled (psx-spx "/IRQ7").
-    irq_flag_ = ack_low_ && (ctrl_ & kCtrlAckIrq);
-  }
+  // Acknowledge clears JOY_STAT.9 (and the parity flag, never set here). psx-spx notes that real
+  // hardware cannot clear it while /ACK is still low; the emulated CPU and /ACK timings are not
+  // exact enough to reproduce that ~100-cycle window without hanging programs that acknowledge
+  // early, so the flag always clears.
+  if (value & kCtrlAcknowledge) irq_flag_ = false;
   const bool selected = ctrl_ & kCtrlSelect;
   const u8 port = (ctrl_ & kCtrlPort) ? 1 : 0;
   // /JOYn going high (or the select moving to the other slot) ends the devices' commands.

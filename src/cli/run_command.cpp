@@ -95,7 +95,8 @@ int run_command(const std::vector<std::string>& args) {
     } else if (a == "--quiet") {
       quiet = true;
     } else if (a == "--pad1" || a == "--pad2") {
-      if (!value(v) || !parse_pad(v, pads[a[5] - '1'])) return usage(a + " needs digital, dualshock or none");
+      if (!value(v) || !parse_pad(v, pads[a[5] - '1']))
+        return usage(a + " needs digital, dualshock or none");
     } else if (a == "--memcard1" || a == "--memcard2") {
       if (!value(memcards[a[9] - '1'])) return usage(a + " needs a file");
     } else {

@@ -7,7 +7,8 @@
 
 namespace psx {
 
-Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), sio0_(sched_, irq_) {
+Console::Console()
+    : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), sio0_(sched_, irq_) {
   frame_event_ = sched_.add_event("frame", [this](Cycles late) {
     frame_done_ = true;
     ++frames_;

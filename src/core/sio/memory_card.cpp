@@ -74,7 +74,8 @@ void MemoryCard::load() {
   if (!std::filesystem::is_regular_file(path_, ec))
     throw MemoryCardError("memory card " + quoted(path_) + ": not a regular file");
   const auto size = std::filesystem::file_size(path_, ec);
-  if (ec) throw MemoryCardError("memory card " + quoted(path_) + ": cannot read its size: " + ec.message());
+  if (ec)
+    throw MemoryCardError("memory card " + quoted(path_) + ": cannot read its size: " + ec.message());
   if (size != kSize)
     throw MemoryCardError("memory card " + quoted(path_) + ": file is " + std::to_string(size) +
                           " bytes, expected exactly " + std::to_string(kSize) + " bytes (a raw 128 KiB card image)");

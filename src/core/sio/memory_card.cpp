@@ -78,7 +78,8 @@ void MemoryCard::load() {
     throw MemoryCardError("memory card " + quoted(path_) + ": cannot read its size: " + ec.message());
   if (size != kSize)
     throw MemoryCardError("memory card " + quoted(path_) + ": file is " + std::to_string(size) +
-                          " bytes, expected exactly " + std::to_string(kSize) + " bytes (a raw 128 KiB card image)");
+                          " bytes, expected exactly " + std::to_string(kSize) +
+                          " bytes (a raw 128 KiB card image)");
   std::FILE* f = std::fopen(path_.c_str(), "rb");
   if (!f) throw MemoryCardError("memory card " + quoted(path_) + ": cannot open: " + std::strerror(errno));
   const size_t got = std::fread(data_.data(), 1, kSize, f);

@@ -8,7 +8,8 @@
 
 namespace psx {
 
-Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_) {
+Console::Console()
+    : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), sio0_(sched_, irq_) {
   frame_event_ = sched_.add_event("frame", [this](Cycles late) {
     frame_done_ = true;
     ++frames_;
@@ -33,6 +34,9 @@ Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cp
   hle_.on_tty = bus_.on_tty;
   hle_.on_log = bus_.on_log;
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
+  // SIO0: a digital pad in controller port 1 by default (programs and BIOSes expect one).
+  bus_.map_io(Sio0::kBase, Sio0::kSize, &sio0_);
+  sio0_.attach_pad(0, std::make_unique<DigitalPad>());
   cpu_.reset();
 }
 
@@ -150,6 +154,7 @@ void Console::do_state(StateIO& s) {
   cpu_.do_state(s);
   gte_.do_state(s);
   hle_.do_state(s);
+  sio0_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
 }
 

@@ -18,6 +18,7 @@
 #include "core/irq.h"
 #include "core/memory_watch.h"
 #include "core/scheduler.h"
+#include "core/sio/sio0.h"
 #include "core/state.h"
 
 namespace psx {
@@ -100,6 +101,8 @@ class Console : private CpuHooks {
   Gte& gte() { return gte_; }
   Scheduler& scheduler() { return sched_; }
   InterruptController& irq() { return irq_; }
+  // Controller/memory card port: plug devices, set buttons/sticks, read rumble (sio/sio0.h).
+  Sio0& sio0() { return sio0_; }
 
   void do_state(StateIO& s);
 
@@ -117,6 +120,7 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   HleBios hle_;
+  Sio0 sio0_;
 
   Scheduler::Handle frame_event_;
   Scheduler::Handle limit_event_;

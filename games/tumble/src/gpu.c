@@ -2,10 +2,15 @@
 #include "gpu.h"
 #include "hw.h"
 
-static void gp0_wait(void) {
-  for (uint32_t spin = 0; !(GPU_STAT & GPUSTAT_READY_CMD) && spin < 1000000u; ++spin) {
-  }
+/* Waits for a GPUSTAT bit; returns 0 if it never came (a GPU that does not answer must not hang
+   the game). */
+static int gpu_wait(uint32_t bit) {
+  for (uint32_t spin = 0; spin < 100000u; ++spin)
+    if (GPU_STAT & bit) return 1;
+  return 0;
 }
+
+static void gp0_wait(void) { gpu_wait(GPUSTAT_READY_CMD); }
 
 static void gp1(uint32_t cmd) { GPU_GP1 = cmd; }
 
@@ -29,8 +34,7 @@ void gpu_upload(int x, int y, int w, int h, const uint16_t *data) {
   GPU_GP0 = gpu_xy(w, h);
   uint32_t words = ((uint32_t)w * (uint32_t)h + 1) / 2;
   for (uint32_t i = 0; i < words; ++i) {
-    for (uint32_t spin = 0; !(GPU_STAT & (1u << 25)) && spin < 100000u; ++spin) {
-    }
+    if (!gpu_wait(1u << 25)) return;
     uint32_t lo = data[2 * i];
     uint32_t hi = 2 * i + 1 < (uint32_t)w * (uint32_t)h ? data[2 * i + 1] : 0;
     GPU_GP0 = lo | hi << 16;

@@ -16,9 +16,11 @@ void hw_init(void) {
   DMA_DPCR |= (1u << 11) | (1u << 19) | (1u << 27);
 }
 
+/* The spin limit is a little over one frame of polling on real hardware (each uncached I/O read
+   takes several cycles), so a missing VBlank costs about a frame instead of a hang. */
 void hw_wait_vblank(void) {
   I_STAT = ~IRQ_VBLANK;
-  for (uint32_t spin = 0; !(I_STAT & IRQ_VBLANK) && spin < 4000000u; ++spin) {
+  for (uint32_t spin = 0; !(I_STAT & IRQ_VBLANK) && spin < 150000u; ++spin) {
   }
   I_STAT = ~IRQ_VBLANK;
 }

@@ -8,14 +8,18 @@
 #define SPUCNT_MANUAL_WRITE 0x0010
 #define SPUSTAT_BUSY 0x0400
 
-static void wait_mode(uint16_t mode) {
-  for (uint32_t spin = 0; (SPU_STAT & SPUCNT_MODE_MASK) != mode && spin < 100000; ++spin) {
-  }
+/* SPUSTAT mirrors the SPUCNT transfer mode once the SPU has applied it. Returns 0 if it never
+   does (an SPU that does not answer must not hang the game). */
+static int wait_mode(uint16_t mode) {
+  for (uint32_t spin = 0; spin < 100000; ++spin)
+    if ((SPU_STAT & SPUCNT_MODE_MASK) == mode) return 1;
+  return 0;
 }
 
-static void wait_idle(void) {
-  for (uint32_t spin = 0; (SPU_STAT & SPUSTAT_BUSY) && spin < 100000; ++spin) {
-  }
+static int wait_idle(void) {
+  for (uint32_t spin = 0; spin < 100000; ++spin)
+    if (!(SPU_STAT & SPUSTAT_BUSY)) return 1;
+  return 0;
 }
 
 void spu_init(void) {
@@ -47,10 +51,9 @@ void spu_upload(uint32_t addr, const uint8_t *data, uint32_t bytes) {
     /* The FIFO holds 32 halfwords; fill it, start a manual write, wait until it has drained. */
     for (int n = 0; n < 32 && i < halfwords; ++n, ++i) SPU_FIFO = (uint16_t)(data[2 * i] | data[2 * i + 1] << 8);
     SPU_CNT = (uint16_t)((SPU_CNT & ~SPUCNT_MODE_MASK) | SPUCNT_MANUAL_WRITE);
-    wait_mode(SPUCNT_MANUAL_WRITE);
-    wait_idle();
+    int ok = wait_mode(SPUCNT_MANUAL_WRITE) && wait_idle();
     SPU_CNT = (uint16_t)(SPU_CNT & ~SPUCNT_MODE_MASK);
-    wait_mode(0);
+    if (!ok || !wait_mode(0)) return;
   }
 }
 

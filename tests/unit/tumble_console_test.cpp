@@ -29,7 +29,10 @@ static_assert(offsetof(TumbleContract, state_timer) == 0x64);
 
 struct TumbleConsole {
   psx::Console console;
-  TumbleConsole() { console.boot_exe(TUMBLE_EXE); }
+  explicit TumbleConsole(const char* bios = nullptr) {
+    if (bios) console.load_bios(bios);
+    console.boot_exe(TUMBLE_EXE);
+  }
   psx::u32 word(psx::u32 offset) {
     const psx::u8* ram = console.bus().ram() + kContract + offset;
     return ram[0] | ram[1] << 8 | ram[2] << 16 | static_cast<psx::u32>(ram[3]) << 24;
@@ -81,3 +84,27 @@ TEST(TumbleConsole, RequestVariableStartsLevelAndClockCountsDown) {
   EXPECT_EQ(t.word(offsetof(TumbleContract, clock)), clock0 - elapsed);  // one tick per game frame
   EXPECT_EQ(t.word(offsetof(TumbleContract, score)), 0u);
 }
+
+#ifdef TUMBLE_BOOTROM
+// With the project's boot ROM instead of the HLE kernel the game must behave the same: it uses no
+// BIOS service, so the level it starts and the clock it keeps do not depend on what booted it.
+TEST(TumbleConsole, SameGameUnderTheBootRom) {
+  TumbleConsole hle, rom(TUMBLE_BOOTROM);
+  for (TumbleConsole* t : {&hle, &rom}) {
+    ASSERT_TRUE(t->run_game_frames(2));
+    EXPECT_EQ(t->word(offsetof(TumbleContract, state)), 50u);
+    t->set_word(offsetof(TumbleContract, request_level), 3);
+    ASSERT_TRUE(t->run_game_frames(20));
+  }
+  for (psx::u32 field : {offsetof(TumbleContract, state), offsetof(TumbleContract, level),
+                         offsetof(TumbleContract, ball_x), offsetof(TumbleContract, ball_y),
+                         offsetof(TumbleContract, facing), offsetof(TumbleContract, keys_needed),
+                         offsetof(TumbleContract, rng)})
+    EXPECT_EQ(hle.word(field), rom.word(field)) << "contract offset " << field;
+  // The clock ticks once per frame in play: clock + state_timer is level 3's 60 s in frames.
+  for (TumbleConsole* t : {&hle, &rom})
+    EXPECT_EQ(t->word(offsetof(TumbleContract, clock)) + t->word(offsetof(TumbleContract, state_timer)), 3600u);
+  EXPECT_EQ(rom.word(offsetof(TumbleContract, level)), 3u);
+  EXPECT_EQ(rom.word(offsetof(TumbleContract, ball_y)), 8u);  // level 3 starts at (2,8)
+}
+#endif

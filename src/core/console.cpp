@@ -7,18 +7,18 @@
 
 namespace psx {
 
-Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_) {
-  frame_event_ = sched_.add_event("frame", [this](Cycles late) {
+Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), gpu_(sched_, irq_) {
+  // A frame ends at the GPU's VBlank.
+  gpu_.on_vblank = [this] {
     frame_done_ = true;
     ++frames_;
-    sched_.schedule(frame_event_, kFrameCycles - late);
     cpu_.stop();
-  });
+  };
+  bus_.map_io(Gpu::kBase, Gpu::kSize, &gpu_);
   limit_event_ = sched_.add_event("run-limit", [this](Cycles) {
     limit_reached_ = true;
     cpu_.stop();
   });
-  sched_.schedule(frame_event_, kFrameCycles);
 
   bus_.on_tty = [this](char c) {
     if (on_tty) on_tty(c);
@@ -138,6 +138,7 @@ void Console::do_state(StateIO& s) {
   cpu_.do_state(s);
   gte_.do_state(s);
   hle_.do_state(s);
+  gpu_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
 }
 

@@ -17,6 +17,7 @@
 #include "core/irq.h"
 #include "core/scheduler.h"
 #include "core/state.h"
+#include "gpu/gpu.h"
 
 namespace psx {
 
@@ -24,8 +25,6 @@ class Console : private CpuHooks {
  public:
   // PS-X EXE shell entry: with a real BIOS, EXEs are side-loaded when the BIOS gets here.
   static constexpr u32 kShellEntry = 0x80030000;
-  // Until video timing exists a frame is this many CPU cycles (33868800 / 60).
-  static constexpr Cycles kFrameCycles = kCpuClockHz / 60;
 
   Console();
   ~Console() override;
@@ -44,7 +43,7 @@ class Console : private CpuHooks {
   // Boots the BIOS alone (from reset), e.g. for a BIOS test or a disc.
   void boot_bios();
 
-  // Runs to the end of the current frame (or until the program stops the console).
+  // Runs to the end of the current frame (the GPU's next VBlank) or until the program stops.
   void run_frame();
   void run_frames(u64 n);
   void run_cycles(Cycles n);
@@ -67,6 +66,7 @@ class Console : private CpuHooks {
   Gte& gte() { return gte_; }
   Scheduler& scheduler() { return sched_; }
   InterruptController& irq() { return irq_; }
+  Gpu& gpu() { return gpu_; }
 
   void do_state(StateIO& s);
 
@@ -83,8 +83,8 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   HleBios hle_;
+  Gpu gpu_;
 
-  Scheduler::Handle frame_event_;
   Scheduler::Handle limit_event_;
   bool frame_done_ = false;
   bool limit_reached_ = false;

@@ -193,8 +193,11 @@ const u8* Gpu::vram_rgb() {
   return vram_rgb_.data();
 }
 
+// Converts the display area as VRAM holds it now (a program may have drawn since the last VBlank).
 bool Gpu::write_display_png(const std::string& path, std::string& error) const {
-  return gpu::write_png_rgb(path, display_rgb(), display_width(), display_height(), error);
+  gpu::FrameOutput now;
+  now.refresh(renderer_->vram(), display_area());
+  return gpu::write_png_rgb(path, now.rgb(), now.width(), now.height(), error);
 }
 
 bool Gpu::write_vram_png(const std::string& path, std::string& error) {

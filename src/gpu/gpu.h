@@ -50,7 +50,8 @@ class Gpu final : public IoDevice, public DmaPort {
   // The whole VRAM as 1024x512 RGB888, converted on each call.
   const u8* vram_rgb();
 
-  // PNG files of the display buffer and of VRAM; false with `error` set on failure.
+  // PNG files of the display area (as VRAM holds it now) and of all of VRAM; false with `error`
+  // set on failure.
   bool write_display_png(const std::string& path, std::string& error) const;
   bool write_vram_png(const std::string& path, std::string& error);
 

@@ -128,6 +128,7 @@ void Gpu::gp1_write(u32 word) {
 // ranges 200h..C00h x 10h..100h, 320x240 NTSC mode 0, and GP0(E1)-(E6) all zero.
 void Gpu::gp1_reset() {
   gp1_reset_command_buffer();
+  download_.active = false;
   irq_flag_ = false;
   display_disabled_ = true;
   dma_direction_ = 0;

@@ -57,8 +57,21 @@ inline u16 fetch_texel(const PixelContext& c, u32 u, u32 v) {
   }
 }
 
-// An 8-bit channel value plus dither offset, truncated to the 5 bits VRAM keeps.
-inline u32 dither_to_5(s32 c8, s32 offset) { return static_cast<u32>(std::clamp(c8 + offset, 0, 255)) >> 3; }
+// An 8-bit channel value (up to 511 before saturation, from modulation) plus a dither offset
+// (-4..+3), saturated to 0..255 and truncated to the 5 bits VRAM keeps: a constant table, so the
+// inner loops do one load instead of two clamps per channel.
+struct Saturate5Table {
+  u8 v[8][512];
+};
+constexpr Saturate5Table make_saturate5_table() {
+  Saturate5Table t{};
+  for (int d = -4; d < 4; ++d)
+    for (int c = 0; c < 512; ++c) t.v[d + 4][c] = static_cast<u8>(std::clamp(c + d, 0, 255) >> 3);
+  return t;
+}
+inline constexpr Saturate5Table kSaturate5 = make_saturate5_table();
+
+inline u32 dither_to_5(u32 c8, s32 offset) { return kSaturate5.v[offset + 4][c8]; }
 
 // Untextured colour (flat or Gouraud) to a 15-bit pixel.
 inline u16 colour_pixel(u32 r8, u32 g8, u32 b8, s32 d) {
@@ -68,9 +81,9 @@ inline u16 colour_pixel(u32 r8, u32 g8, u32 b8, s32 d) {
 // Modulation (psx-spx: "colour * texel / 128", 0x80 leaves the texel unchanged), computed in
 // 8-bit precision so the dither offset applies before the final truncation; saturates at 31.
 inline u16 modulate(u16 texel, u32 r8, u32 g8, u32 b8, s32 d) {
-  s32 r = static_cast<s32>(std::min<u32>(255, ((texel & 0x1F) * r8) >> 4));
-  s32 g = static_cast<s32>(std::min<u32>(255, (((texel >> 5) & 0x1F) * g8) >> 4));
-  s32 b = static_cast<s32>(std::min<u32>(255, (((texel >> 10) & 0x1F) * b8) >> 4));
+  u32 r = ((texel & 0x1F) * r8) >> 4;  // at most 31 * 255 / 16 = 494: saturated by the table
+  u32 g = (((texel >> 5) & 0x1F) * g8) >> 4;
+  u32 b = (((texel >> 10) & 0x1F) * b8) >> 4;
   return static_cast<u16>(dither_to_5(r, d) | (dither_to_5(g, d) << 5) | (dither_to_5(b, d) << 10) |
                           (texel & kMaskBit));
 }

@@ -18,6 +18,7 @@ namespace {
 const char* kRunHelp =
     "usage: psxrl run --exe FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
     "                 [--pad1 TYPE] [--pad2 TYPE] [--memcard1 FILE] [--memcard2 FILE]\n"
+    "                 [--screenshot FILE] [--vram FILE]\n"
     "\n"
     "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
     "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
@@ -33,6 +34,8 @@ const char* kRunHelp =
     "  --pad2 TYPE      controller in port 2: none (default), digital or dualshock\n"
     "  --memcard1 FILE  memory card in slot 1 (raw 128 KiB image; created on the first write)\n"
     "  --memcard2 FILE  memory card in slot 2\n"
+    "  --screenshot FILE  write the displayed picture as PNG at the end of the run\n"
+    "  --vram FILE      write all of VRAM (1024x512) as PNG at the end of the run\n"
     "\n"
     "exit codes:\n"
     "  the program's own exit code (written to 0x1F802082; values above 255 exit as 255)\n"
@@ -66,7 +69,7 @@ bool parse_pad(const std::string& s, std::unique_ptr<psx::Pad>& out) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
-  std::string exe, bios;
+  std::string exe, bios, screenshot, vram_png;
   unsigned long long frames = 3600, cycles = 0;
   bool expect_exit = false, quiet = false;
   std::unique_ptr<psx::Pad> pads[2] = {std::make_unique<psx::DigitalPad>(), nullptr};
@@ -90,6 +93,10 @@ int run_command(const std::vector<std::string>& args) {
       if (!value(v) || !parse_count(v, frames)) return usage("--frames needs a whole number");
     } else if (a == "--cycles") {
       if (!value(v) || !parse_count(v, cycles) || cycles == 0) return usage("--cycles needs a positive whole number");
+    } else if (a == "--screenshot") {
+      if (!value(screenshot)) return usage("--screenshot needs a file");
+    } else if (a == "--vram") {
+      if (!value(vram_png)) return usage("--vram needs a file");
     } else if (a == "--expect-exit") {
       expect_exit = true;
     } else if (a == "--quiet") {
@@ -129,6 +136,12 @@ int run_command(const std::vector<std::string>& args) {
   if (cycles) console.run_cycles(cycles);
   else console.run_frames(frames);
   std::fflush(stdout);
+  std::string png_error;
+  if ((!screenshot.empty() && !console.gpu().write_display_png(screenshot, png_error)) ||
+      (!vram_png.empty() && !console.gpu().write_vram_png(vram_png, png_error))) {
+    std::fprintf(stderr, "psxrl run: %s\n", png_error.c_str());
+    return kBadInput;
+  }
 
   if (!console.fatal_error().empty()) {
     std::fprintf(stderr, "psxrl run: %s\n", console.fatal_error().c_str());

@@ -9,20 +9,20 @@
 namespace psx {
 
 Console::Console()
-    : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), sio0_(sched_, irq_) {
-  frame_event_ = sched_.add_event("frame", [this](Cycles late) {
+    : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), sio0_(sched_, irq_), gpu_(sched_, irq_) {
+  // A frame ends at the GPU's VBlank.
+  gpu_.on_vblank = [this] {
     frame_done_ = true;
     ++frames_;
     watches_.on_frame(frames_, sched_.now());
     release_timed_buttons();
-    sched_.schedule(frame_event_, kFrameCycles - late);
     cpu_.stop();
-  });
+  };
+  bus_.map_io(Gpu::kBase, Gpu::kSize, &gpu_);
   limit_event_ = sched_.add_event("run-limit", [this](Cycles) {
     limit_reached_ = true;
     cpu_.stop();
   });
-  sched_.schedule(frame_event_, kFrameCycles);
 
   bus_.on_tty = [this](char c) {
     if (on_tty) on_tty(c);
@@ -157,6 +157,7 @@ void Console::do_state(StateIO& s) {
   hle_.do_state(s);
   sio0_.do_state(s);
   s.pod(hold_frames_);
+  gpu_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
 }
 

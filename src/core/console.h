@@ -21,6 +21,7 @@
 #include "core/scheduler.h"
 #include "core/sio/sio0.h"
 #include "core/state.h"
+#include "gpu/gpu.h"
 
 namespace psx {
 
@@ -28,8 +29,6 @@ class Console : private CpuHooks {
  public:
   // PS-X EXE shell entry: with a real BIOS, EXEs are side-loaded when the BIOS gets here.
   static constexpr u32 kShellEntry = 0x80030000;
-  // Until video timing exists a frame is this many CPU cycles (33868800 / 60).
-  static constexpr Cycles kFrameCycles = kCpuClockHz / 60;
 
   Console();
   ~Console() override;
@@ -48,7 +47,7 @@ class Console : private CpuHooks {
   // Boots the BIOS alone (from reset), e.g. for a BIOS test or a disc.
   void boot_bios();
 
-  // Runs to the end of the current frame (or until the program stops the console).
+  // Runs to the end of the current frame (the GPU's next VBlank) or until the program stops.
   void run_frame();
   void run_frames(u64 n);
   void run_cycles(Cycles n);
@@ -104,6 +103,7 @@ class Console : private CpuHooks {
   InterruptController& irq() { return irq_; }
   // Controller/memory card port: plug devices, set buttons/sticks, read rumble (sio/sio0.h).
   Sio0& sio0() { return sio0_; }
+  Gpu& gpu() { return gpu_; }
 
   // Controller input between run calls. Ports are 1 and 2 as labelled on the console; `buttons`
   // are pad_button bits (1 = pressed). Calls for an empty port do nothing.
@@ -135,8 +135,8 @@ class Console : private CpuHooks {
   Cpu cpu_;
   HleBios hle_;
   Sio0 sio0_;
+  Gpu gpu_;
 
-  Scheduler::Handle frame_event_;
   Scheduler::Handle limit_event_;
   bool frame_done_ = false;
   bool limit_reached_ = false;

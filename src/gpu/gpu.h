@@ -1,0 +1,144 @@
+// The PlayStation GPU (psx-spx "Graphics Processing Unit (GPU)"), mapped at 0x1F801810:
+// GP0 (rendering commands, VRAM transfers) / GPUREAD at +0, GP1 (display control) / GPUSTAT at
+// +4, and DMA channel 2. Command processing lives here and in gp0_commands.cpp; drawing is done by
+// a Renderer backend; video timing and frame output are separate helpers this class owns.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/io_device.h"
+#include "core/irq.h"
+#include "core/scheduler.h"
+#include "core/state.h"
+#include "core/types.h"
+#include "gpu/frame_output.h"
+#include "gpu/renderer.h"
+#include "gpu/video_timing.h"
+
+namespace psx {
+
+class Gpu final : public IoDevice, public DmaPort {
+ public:
+  static constexpr u32 kBase = 0x1F801810;
+  static constexpr u32 kSize = 16;
+
+  Gpu(Scheduler& sched, InterruptController& irq);
+
+  u32 io_read(u32 offset, u32 width) override;
+  void io_write(u32 offset, u32 value, u32 width) override;
+
+  void dma_write(const u32* words, u32 count) override;
+  void dma_read(u32* words, u32 count) override;
+  bool dma_request() const override;
+
+  void gp0_write(u32 word);
+  void gp1_write(u32 word);
+  u32 gpuread();
+  u32 gpustat() const;
+
+  void set_video_signals(VideoSignals* signals) { timing_.set_signals(signals); }
+  // Called at the start of each VBlank, after the display buffer was refreshed.
+  std::function<void()> on_vblank;
+
+  // The displayed picture as RGB888, refreshed at each VBlank.
+  const u8* display_rgb() const { return output_.rgb(); }
+  u32 display_width() const { return output_.width(); }
+  u32 display_height() const { return output_.height(); }
+  const u16* vram() const { return renderer_->vram(); }
+  // The whole VRAM as 1024x512 RGB888, converted on each call.
+  const u8* vram_rgb();
+
+  // PNG files of the display area (as VRAM holds it now) and of all of VRAM; false with `error`
+  // set on failure.
+  bool write_display_png(const std::string& path, std::string& error) const;
+  bool write_vram_png(const std::string& path, std::string& error);
+
+  const gpu::VideoTiming& timing() const { return timing_; }
+
+  void do_state(StateIO& s);
+
+ private:
+  enum class Gp0Mode : u8 { Command, Polyline, CpuToVram };
+  struct Transfer {  // a GP0(A0)/(C0) rectangle being streamed
+    u32 x = 0, y = 0, width = 0, height = 0;
+    u32 col = 0, row = 0;
+    bool active = false;
+  };
+
+  // GP0 (gp0_commands.cpp)
+  static u32 gp0_command_length(u32 command);
+  void gp0_execute();
+  void gp0_polygon();
+  void gp0_line();
+  void gp0_polyline_word(u32 word);
+  void gp0_rectangle();
+  void gp0_fill_rectangle();
+  void gp0_copy_rectangle();
+  void gp0_copy_to_vram();
+  void gp0_copy_from_vram();
+  void gp0_draw_mode(u32 word);
+  void gp0_texture_window(u32 word);
+  void gp0_draw_area_top_left(u32 word);
+  void gp0_draw_area_bottom_right(u32 word);
+  void gp0_draw_offset(u32 word);
+  void gp0_mask_bit(u32 word);
+  void gp0_irq();
+  void upload_pixels(const u16* pixels, u32 count);
+  gpu::Vertex decode_vertex(u32 xy) const;
+  void update_draw_state();
+  const gpu::DrawState& draw_state();
+
+  // GP1 (gpu.cpp)
+  void gp1_reset();
+  void gp1_reset_command_buffer();
+  void gp1_display_mode(u32 word);
+  void gp1_gpu_info(u32 word);
+  bool field_line_odd() const;
+  void vblank_started();
+  gpu::DisplayArea display_area() const;
+
+  Scheduler& sched_;
+  InterruptController& irq_;
+  std::unique_ptr<gpu::Renderer> renderer_;
+  gpu::VideoTiming timing_;
+  gpu::FrameOutput output_;
+  std::vector<u8> vram_rgb_;
+
+  // GP0 state
+  Gp0Mode gp0_mode_ = Gp0Mode::Command;
+  u32 fifo_[16] = {};
+  u32 fifo_len_ = 0;
+  u32 fifo_needed_ = 0;
+  gpu::Vertex polyline_last_;
+  u32 polyline_colour_ = 0;
+  bool polyline_shaded_ = false;
+  bool polyline_semi_ = false;
+  bool polyline_have_colour_ = false;
+  Transfer upload_;    // GP0(A0)
+  Transfer download_;  // GP0(C0)
+  u32 gpuread_latch_ = 0;
+
+  // Drawing environment registers (raw values for GPUSTAT and GP1(10)).
+  u32 draw_mode_ = 0;        // E1 bits 0-13
+  u32 texture_window_ = 0;   // E2 bits 0-19
+  u32 area_top_left_ = 0;    // E3 bits 0-18
+  u32 area_bottom_right_ = 0;  // E4 bits 0-18
+  u32 draw_offset_ = 0;      // E5 bits 0-21
+  u32 mask_bits_ = 0;        // E6 bits 0-1
+  s32 offset_x_ = 0, offset_y_ = 0;
+  gpu::DrawState ds_;
+
+  // Display control registers.
+  bool irq_flag_ = false;           // GPUSTAT.24
+  bool display_disabled_ = true;    // GPUSTAT.23
+  u32 dma_direction_ = 0;           // GP1(04)
+  u32 display_start_ = 0;           // GP1(05)
+  u32 horizontal_range_ = 0;        // GP1(06)
+  u32 vertical_range_ = 0;          // GP1(07)
+  u32 display_mode_ = 0;            // GP1(08) bits 0-7
+  bool texture_disable_allowed_ = false;  // GP1(09)
+};
+
+}  // namespace psx

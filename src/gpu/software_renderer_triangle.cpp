@@ -1,0 +1,149 @@
+// Software rasterizer: triangles (GP0(20)-(3F); a quad arrives as two triangles).
+// Rules (psx-spx "GPU Rendering"): a pixel (x, y) is drawn when the exact edge positions on row y
+// satisfy left <= x < right and the row lies in top <= y < bottom (top-left fill rule: right and
+// bottom edges are left out, so quads sharing an edge never overlap). Colours and texture
+// coordinates are affine planes over the screen, stepped with 12 fraction bits and a half-unit
+// bias at the top vertex like the hardware's interpolators; no perspective correction.
+#include <algorithm>
+#include <utility>
+
+#include "gpu/software_renderer.h"
+#include "gpu/software_renderer_pixel.h"
+
+namespace psx::gpu {
+namespace {
+
+constexpr int kFrac = 12;  // fraction bits of the attribute interpolators
+
+// d(attribute)/dx and d(attribute)/dy in 12-bit fixed point for the plane through three vertices.
+struct Gradient {
+  s32 dx = 0, dy = 0;
+};
+
+Gradient plane_gradient(const Vertex* p[3], s64 cross, s32 a0, s32 a1, s32 a2) {
+  s64 ex1 = p[1]->x - p[0]->x, ey1 = p[1]->y - p[0]->y;
+  s64 ex2 = p[2]->x - p[0]->x, ey2 = p[2]->y - p[0]->y;
+  s64 d1 = a1 - a0, d2 = a2 - a0;
+  Gradient g;
+  g.dx = static_cast<s32>(((d1 * ey2 - d2 * ey1) * (s64{1} << kFrac)) / cross);
+  g.dy = static_cast<s32>(((d2 * ex1 - d1 * ex2) * (s64{1} << kFrac)) / cross);
+  return g;
+}
+
+// ceil(n / d) for d > 0.
+inline s64 ceil_div(s64 n, s64 d) { return n >= 0 ? (n + d - 1) / d : -((-n) / d); }
+
+// x of the edge a->b on row y, rounded up to the first pixel at or right of it.
+inline s32 edge_x(const Vertex& a, const Vertex& b, s32 y) {
+  s64 dy = b.y - a.y;
+  return static_cast<s32>(ceil_div(s64{a.x} * dy + s64{y - a.y} * (b.x - a.x), dy));
+}
+
+// An attribute's value at (x, y): the top vertex's value plus half a unit, stepped by the plane.
+inline s32 attribute_at(s32 base, const Gradient& g, s32 dx, s32 dy) {
+  return static_cast<s32>((s64{base} << kFrac) + (1 << (kFrac - 1)) + s64{g.dx} * dx + s64{g.dy} * dy);
+}
+
+inline u32 channel(s32 fixed) { return static_cast<u32>(std::clamp(fixed >> kFrac, 0, 255)); }
+
+}  // namespace
+
+template <int kTex, bool kRaw, bool kSemi, bool kShaded>
+void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds) {
+  const Vertex* p[3] = {&t.v[0], &t.v[1], &t.v[2]};
+  // Sort by y (stable, so equal rows keep command order).
+  if (p[1]->y < p[0]->y) std::swap(p[0], p[1]);
+  if (p[2]->y < p[1]->y) std::swap(p[1], p[2]);
+  if (p[1]->y < p[0]->y) std::swap(p[0], p[1]);
+  const Vertex &a = *p[0], &b = *p[1], &c = *p[2];
+
+  s64 cross = s64{b.x - a.x} * (c.y - a.y) - s64{c.x - a.x} * (b.y - a.y);
+  if (cross == 0) return;  // degenerate: no area, nothing drawn
+
+  constexpr bool kModulated = kTex == kUntextured || !kRaw;
+  constexpr bool kGouraud = kShaded && kModulated;
+  Gradient gr, gg, gb, gu, gv;
+  if constexpr (kGouraud) {
+    gr = plane_gradient(p, cross, a.r, b.r, c.r);
+    gg = plane_gradient(p, cross, a.g, b.g, c.g);
+    gb = plane_gradient(p, cross, a.b, b.b, c.b);
+  }
+  if constexpr (kTex != kUntextured) {
+    gu = plane_gradient(p, cross, a.u, b.u, c.u);
+    gv = plane_gradient(p, cross, a.v, b.v, c.v);
+  }
+
+  // Dither applies to Gouraud-shaded and texture-modulated polygons (psx-spx GP0(E1).9).
+  PixelContext ctx(vram_.data(), ds, t.clut_x, t.clut_y, kGouraud || (kTex != kUntextured && !kRaw));
+  // cross > 0: the middle vertex lies right of the long edge a->c.
+  const bool long_edge_left = cross > 0;
+  s32 y_begin = std::max(a.y, ds.area_top);
+  s32 y_end = std::min(c.y - 1, ds.area_bottom);
+  for (s32 y = y_begin; y <= y_end; ++y) {
+    if ((y & 1) == ds.skip_row_parity) continue;
+    s32 x_long = edge_x(a, c, y);
+    s32 x_short = y < b.y ? edge_x(a, b, y) : edge_x(b, c, y);
+    s32 x_left = long_edge_left ? x_long : x_short;
+    s32 x_right = (long_edge_left ? x_short : x_long) - 1;
+    x_left = std::max(x_left, ds.area_left);
+    x_right = std::min(x_right, ds.area_right);
+    if (x_left > x_right) continue;
+
+    s32 dx = x_left - a.x, dy = y - a.y;
+    s32 r = 0, g = 0, bl = 0, u = 0, v = 0;
+    u32 r8 = t.v[0].r, g8 = t.v[0].g, b8 = t.v[0].b;
+    if constexpr (kGouraud) {
+      r = attribute_at(a.r, gr, dx, dy);
+      g = attribute_at(a.g, gg, dx, dy);
+      bl = attribute_at(a.b, gb, dx, dy);
+    }
+    if constexpr (kTex != kUntextured) {
+      u = attribute_at(a.u, gu, dx, dy);
+      v = attribute_at(a.v, gv, dx, dy);
+    }
+    const s8* dither = ctx.dither_row(y);
+    for (s32 x = x_left; x <= x_right; ++x) {
+      if constexpr (kGouraud) {
+        r8 = channel(r), g8 = channel(g), b8 = channel(bl);
+        r += gr.dx, g += gg.dx, bl += gb.dx;
+      }
+      u32 tu = 0, tv = 0;
+      if constexpr (kTex != kUntextured) {
+        tu = static_cast<u32>(u >> kFrac) & 0xFF, tv = static_cast<u32>(v >> kFrac) & 0xFF;
+        u += gu.dx, v += gv.dx;
+      }
+      draw_pixel<kTex, kRaw, kSemi>(ctx, x, y, r8, g8, b8, tu, tv, dither[x & 3]);
+    }
+  }
+}
+
+// Flat triangles take their colour from the first vertex of the command (Triangle::v[0]).
+void SoftwareRenderer::draw_triangle(const Triangle& t, const DrawState& ds) {
+  // Primitives spanning 1024 or more columns or 512 or more rows are not drawn (psx-spx).
+  s32 min_x = std::min({t.v[0].x, t.v[1].x, t.v[2].x}), max_x = std::max({t.v[0].x, t.v[1].x, t.v[2].x});
+  s32 min_y = std::min({t.v[0].y, t.v[1].y, t.v[2].y}), max_y = std::max({t.v[0].y, t.v[1].y, t.v[2].y});
+  if (max_x - min_x >= 1024 || max_y - min_y >= 512) return;
+  if (max_x < ds.area_left || min_x > ds.area_right || max_y < ds.area_top || min_y > ds.area_bottom) return;
+
+  int tex = (t.textured && !ds.texture_disable) ? std::min(ds.tex_depth + 1, 3) : 0;
+  switch (tex) {
+    case kUntextured: return triangle_modes<kUntextured, false>(t, ds);
+    case kClut4: return t.raw ? triangle_modes<kClut4, true>(t, ds) : triangle_modes<kClut4, false>(t, ds);
+    case kClut8: return t.raw ? triangle_modes<kClut8, true>(t, ds) : triangle_modes<kClut8, false>(t, ds);
+    default: return t.raw ? triangle_modes<kDirect15, true>(t, ds) : triangle_modes<kDirect15, false>(t, ds);
+  }
+}
+
+// Picks the instantiation for the semi-transparency and shading flags (raw texels ignore shading).
+template <int kTex, bool kRaw>
+void SoftwareRenderer::triangle_modes(const Triangle& t, const DrawState& ds) {
+  constexpr bool kCanShade = kTex == kUntextured || !kRaw;
+  if (t.semi) {
+    if (kCanShade && t.shaded) return rasterize_triangle<kTex, kRaw, true, kCanShade>(t, ds);
+    return rasterize_triangle<kTex, kRaw, true, false>(t, ds);
+  }
+  if (kCanShade && t.shaded) return rasterize_triangle<kTex, kRaw, false, kCanShade>(t, ds);
+  return rasterize_triangle<kTex, kRaw, false, false>(t, ds);
+}
+
+}  // namespace psx::gpu

@@ -1,0 +1,157 @@
+// Video timing (psx-spx "GPU Timings": NTSC 3413 video cycles x 263 lines, PAL 3406 x 314, video
+// clocks 53.693175 / 53.203425 MHz), VBlank interrupt, interlace field, display output
+// conversion, PNG files and save states.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "gpu/png_writer.h"
+#include "gpu_test_util.h"
+
+namespace psx::test {
+namespace {
+
+class Signals : public VideoSignals {
+ public:
+  void hblank_changed(bool active) override { hblanks += active; }
+  void vblank_changed(bool active) override { vblanks += active; }
+  void dot_divider_changed(u32 d) override { divider = d; }
+  int hblanks = 0, vblanks = 0;
+  u32 divider = 0;
+};
+
+// CPU cycle of the k-th VBlank start (k from 0) when frames have `lines` lines of `per_line`
+// video cycles, VBlank starting at line `first`: the video time converted to CPU cycles.
+Cycles vblank_time(u64 first, u64 lines, u64 per_line, u64 hz, u64 k) {
+  return (first + k * lines) * per_line * kCpuClockHz / hz;
+}
+
+TEST_F(GpuTest, NtscVblankTimesAndInterrupt) {
+  std::vector<Cycles> times;
+  gpu.on_vblank = [&] { times.push_back(sched.now()); };
+  run(vblank_time(256, 263, 3413, 53693175, 4) + 10);
+  ASSERT_EQ(times.size(), 5u);
+  for (u64 k = 0; k < 5; ++k) EXPECT_EQ(times[k], vblank_time(256, 263, 3413, 53693175, k)) << k;
+  EXPECT_NE(irq.stat() & (1u << static_cast<u32>(Irq::VBlank)), 0u);
+}
+
+TEST_F(GpuTest, PalFrameLength) {
+  gp1(0x08000008);
+  std::vector<Cycles> times;
+  gpu.on_vblank = [&] { times.push_back(sched.now()); };
+  run(2200000);
+  ASSERT_GE(times.size(), 3u);
+  // 314 lines of 3406 video cycles per frame: 1069484 * 33868800 / 53203425 = 680822.x cycles.
+  const u64 frame = 314ull * 3406 * kCpuClockHz;
+  EXPECT_NEAR(static_cast<double>(times[2] - times[1]), static_cast<double>(frame / 53203425), 1.0);
+}
+
+TEST_F(GpuTest, SignalsCountLinesAndDotDivider) {
+  Signals sig;
+  gpu.set_video_signals(&sig);
+  EXPECT_EQ(sig.divider, 10u);  // 256-wide mode after reset
+  gp1(0x08000001);
+  EXPECT_EQ(sig.divider, 8u);  // 320
+  gp1(0x08000003);
+  EXPECT_EQ(sig.divider, 4u);  // 640
+  int start_h = 0;
+  gpu.on_vblank = [&] {
+    if (sig.vblanks == 1) start_h = sig.hblanks;
+  };
+  run(vblank_time(256, 263, 3413, 53693175, 1) + 10);
+  EXPECT_EQ(sig.vblanks, 2);
+  EXPECT_EQ(sig.hblanks - start_h, 263);  // one HBlank per line
+  gpu.set_video_signals(nullptr);
+}
+
+TEST_F(GpuTest, InterlaceFieldToggles) {
+  gp1(0x08000024);  // 480 lines, interlaced
+  std::vector<u32> fields;
+  gpu.on_vblank = [&] { fields.push_back((stat() >> 13) & 1); };
+  run(4 * 570000);
+  ASSERT_GE(fields.size(), 3u);
+  EXPECT_NE(fields[0], fields[1]);
+  EXPECT_NE(fields[1], fields[2]);
+  gp1(0x08000000);
+  EXPECT_EQ((stat() >> 13) & 1, 1u);  // always 1 without interlace
+}
+
+TEST_F(GpuTest, DisplayOutput15Bit) {
+  poke(0, 0, 0x001F);
+  poke(319, 239, 0x7C00);
+  poke(320, 0, 0x03E0);  // outside the 320-wide display
+  gp1(0x08000001);       // 320x240 NTSC
+  gp1(0x03000000);
+  run(vblank_time(256, 263, 3413, 53693175, 0) + 1);
+  ASSERT_EQ(gpu.display_width(), 320u);
+  ASSERT_EQ(gpu.display_height(), 240u);
+  const u8* rgb = gpu.display_rgb();
+  EXPECT_EQ(rgb[0], 255);
+  EXPECT_EQ(rgb[1], 0);
+  EXPECT_EQ(rgb[2], 0);
+  const u8* last = rgb + (239 * 320 + 319) * 3;
+  EXPECT_EQ(last[0], 0);
+  EXPECT_EQ(last[2], 255);
+  EXPECT_EQ(rgb[319 * 3 + 1], 0);
+}
+
+TEST_F(GpuTest, DisplayOutput24BitAndDisabled) {
+  gp0({0xA0000000, 0x00000000, 0x00010003, 0x44332211, 0x00006655});
+  gp1(0x08000011);  // 320 wide, 24-bit
+  gp1(0x03000000);
+  run(vblank_time(256, 263, 3413, 53693175, 0) + 1);
+  const u8* rgb = gpu.display_rgb();
+  const u8 expected[6] = {0x11, 0x22, 0x33, 0x44, 0x55, 0x66};
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(rgb[i], expected[i]) << i;
+  gp1(0x03000001);  // display off: black
+  run(vblank_time(256, 263, 3413, 53693175, 1) - sched.now() + 1);
+  EXPECT_EQ(gpu.display_rgb()[0], 0);
+}
+
+TEST_F(GpuTest, PngFilesAreWrittenAtomically) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::path(PSXRL_BUILD_DIR) / "gpu_test_png";
+  fs::create_directories(dir);
+  std::string err;
+  ASSERT_TRUE(gpu.write_vram_png((dir / "vram.png").string(), err)) << err;
+  std::ifstream f(dir / "vram.png", std::ios::binary);
+  char sig[8] = {};
+  f.read(sig, 8);
+  EXPECT_EQ(std::string(sig + 1, 3), "PNG");
+  EXPECT_FALSE(fs::exists(dir / "vram.png.tmp"));
+  EXPECT_FALSE(gpu.write_display_png((dir / "missing" / "x.png").string(), err));
+  EXPECT_NE(err.find("x.png"), std::string::npos);
+}
+
+TEST_F(GpuTest, SaveStateRoundTrip) {
+  gp0({0x20000000 | 0x00F800, xy(0, 0), xy(8, 0), xy(0, 8), 0xE1000205, 0xA0000000, 0x00100010, 0x00020002,
+       0x12345678});  // leaves a CPU->VRAM transfer half done
+  run(100000);
+  StateIO w;
+  sched.do_state(w);
+  gpu.do_state(w);
+  // The same inputs after loading give the same VRAM, status and VBlank times as before.
+  auto future = [&] {
+    std::vector<Cycles> vblanks;
+    gpu.on_vblank = [&] { vblanks.push_back(sched.now()); };
+    gp0({0x9ABCDEF0, 0x68FFFFFF, xy(50, 50)});
+    run(1200000);
+    std::vector<u16> v(gpu.vram(), gpu.vram() + 1024 * 512);
+    v.push_back(static_cast<u16>(stat()));
+    for (Cycles c : vblanks) v.push_back(static_cast<u16>(c));
+    return v;
+  };
+  std::vector<u16> first = future();
+  EXPECT_EQ(px(17, 17), 0x9ABC);  // the transfer's second word
+  EXPECT_EQ(px(50, 50), 0x7FFF);
+  StateIO r(w.buffer().data(), w.buffer().size());
+  sched.do_state(r);
+  gpu.do_state(r);
+  EXPECT_TRUE(r.at_end());
+  EXPECT_EQ(px(50, 50), 0);
+  EXPECT_EQ(future(), first);
+}
+
+}  // namespace
+}  // namespace psx::test

@@ -14,13 +14,14 @@ namespace psxrl::cli {
 namespace {
 
 const char* kRunHelp =
-    "usage: psxrl run --exe FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
+    "usage: psxrl run --exe FILE | --disc FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
     "\n"
     "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
     "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
     "\n"
     "options:\n"
     "  --exe FILE       PS-X EXE to run\n"
+    "  --disc FILE      disc image (.cue, .iso or a raw .bin) to insert; without --exe it is booted\n"
     "  --bios FILE      BIOS image (exactly 512 KiB); without it the HLE kernel is used\n"
     "  --frames N       stop after N frames (default 3600)\n"
     "  --cycles N       stop after N CPU cycles (instead of --frames)\n"
@@ -52,7 +53,7 @@ bool parse_count(const std::string& s, unsigned long long& out) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
-  std::string exe, bios;
+  std::string exe, bios, disc;
   unsigned long long frames = 3600, cycles = 0;
   bool expect_exit = false, quiet = false;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -68,6 +69,8 @@ int run_command(const std::vector<std::string>& args) {
       return kSuccess;
     } else if (a == "--exe") {
       if (!value(exe)) return usage("--exe needs a file");
+    } else if (a == "--disc") {
+      if (!value(disc)) return usage("--disc needs a file");
     } else if (a == "--bios") {
       if (!value(bios)) return usage("--bios needs a file");
     } else if (a == "--frames") {
@@ -82,7 +85,7 @@ int run_command(const std::vector<std::string>& args) {
       return usage("unknown option '" + a + "'");
     }
   }
-  if (exe.empty()) return usage("--exe is required");
+  if (exe.empty() && disc.empty()) return usage("--exe or --disc is required");
 
   psx::Console console;
   console.on_tty = [](char c) { std::fputc(c, stdout); };
@@ -91,7 +94,9 @@ int run_command(const std::vector<std::string>& args) {
   };
   try {
     if (!bios.empty()) console.load_bios(bios);
-    console.boot_exe(exe);
+    if (!disc.empty()) console.insert_disc(disc);
+    if (!exe.empty()) console.boot_exe(exe);
+    else console.boot_disc();
   } catch (const psx::InputError& e) {
     std::fprintf(stderr, "psxrl run: %s\n", e.what());
     return kBadInput;

@@ -3,11 +3,12 @@
 
 #include <cstring>
 
+#include "core/disc/disc_boot.h"
 #include "core/input_error.h"
 
 namespace psx {
 
-Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_) {
+Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), cdrom_(sched_, irq_) {
   frame_event_ = sched_.add_event("frame", [this](Cycles late) {
     frame_done_ = true;
     ++frames_;
@@ -31,6 +32,8 @@ Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cp
   hle_.on_tty = bus_.on_tty;
   hle_.on_log = bus_.on_log;
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
+  bus_.map_io(Cdrom::kBase, Cdrom::kMapSize, &cdrom_);
+  cdrom_.on_log = bus_.on_log;
   cpu_.reset();
 }
 
@@ -61,6 +64,22 @@ void Console::boot_exe_image(const std::vector<u8>& file, const std::string& nam
     pending_exe_ = std::move(exe);
     return;
   }
+  hle_mode_ = true;
+  hle_.install();
+  cpu_.set_hooks(this, 0x80000080);
+  side_load(exe);
+}
+
+void Console::insert_disc(const std::string& path) { cdrom_.insert_disc(disc::Disc::open(path)); }
+
+void Console::boot_disc() {
+  if (!cdrom_.disc()) throw InputError("no disc inserted to boot from");
+  if (bus_.has_bios()) {
+    boot_bios();
+    return;
+  }
+  disc::BootConfig config;
+  PsxExe exe = disc::load_boot_exe(*cdrom_.disc(), config);
   hle_mode_ = true;
   hle_.install();
   cpu_.set_hooks(this, 0x80000080);
@@ -138,6 +157,7 @@ void Console::do_state(StateIO& s) {
   cpu_.do_state(s);
   gte_.do_state(s);
   hle_.do_state(s);
+  cdrom_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
 }
 

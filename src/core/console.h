@@ -12,6 +12,7 @@
 #include "core/bios/exe.h"
 #include "core/bios/hle_bios.h"
 #include "core/bus.h"
+#include "core/cdrom/cdrom.h"
 #include "core/cpu/cpu.h"
 #include "core/gte/gte.h"
 #include "core/irq.h"
@@ -44,6 +45,12 @@ class Console : private CpuHooks {
   // Boots the BIOS alone (from reset), e.g. for a BIOS test or a disc.
   void boot_bios();
 
+  // Disc drive: opens a .cue/.iso/.bin image (throws InputError naming file and line), and boots
+  // the inserted disc: the BIOS reads SYSTEM.CNF itself, or without a BIOS the HLE fast boot
+  // loads SYSTEM.CNF's BOOT executable through ISO 9660.
+  void insert_disc(const std::string& path);
+  void boot_disc();
+
   // Runs to the end of the current frame (or until the program stops the console).
   void run_frame();
   void run_frames(u64 n);
@@ -67,6 +74,7 @@ class Console : private CpuHooks {
   Gte& gte() { return gte_; }
   Scheduler& scheduler() { return sched_; }
   InterruptController& irq() { return irq_; }
+  Cdrom& cdrom() { return cdrom_; }
 
   void do_state(StateIO& s);
 
@@ -83,6 +91,7 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   HleBios hle_;
+  Cdrom cdrom_;
 
   Scheduler::Handle frame_event_;
   Scheduler::Handle limit_event_;

@@ -19,8 +19,8 @@ class CdromHarness {
  public:
   Scheduler sched;
   InterruptController irq;
-  AudioFifo fifo;
-  Cdrom cd{sched, irq, fifo};
+  Cdrom cd{sched, irq};
+  AudioFifo& fifo = cd.audio_out();
 
   CdromHarness() {
     cd.io_write(0, 1, 1);

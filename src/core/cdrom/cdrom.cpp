@@ -5,8 +5,7 @@
 
 namespace psx {
 
-Cdrom::Cdrom(Scheduler& sched, InterruptController& irq, AudioFifo& audio_out)
-    : sched_(sched), irq_(irq), audio_(audio_out) {
+Cdrom::Cdrom(Scheduler& sched, InterruptController& irq) : sched_(sched), irq_(irq) {
   ev_command_ = sched_.add_event("cdrom.command", [this](Cycles late) { command_event(late); });
   ev_second_ = sched_.add_event("cdrom.second", [this](Cycles late) { second_event(late); });
   ev_drive_ = sched_.add_event("cdrom.drive", [this](Cycles late) { drive_event(late); });
@@ -207,6 +206,7 @@ void Cdrom::do_state(StateIO& s) {
   s.pod(volume_);
   s.boolean(adpcm_muted_);
   xa_.do_state(s);
+  audio_.do_state(s);
   if (s.loading() && (param_count_ > 16 || response_.size > 16 || queued_.size > 16 || sector_size_ > sector_.size() ||
                       data_size_ > data_.size() || data_pos_ > data_size_ || static_cast<u8>(drive_) > 3 ||
                       static_cast<u8>(after_seek_) > 3 || static_cast<u8>(second_) > 7))

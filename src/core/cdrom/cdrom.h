@@ -51,12 +51,13 @@ class Cdrom final : public IoDevice, public DmaPort {
   static constexpr u8 kErrInvalidCommand = 0x40;
   static constexpr u8 kErrNotReady = 0x80;  // lid open / no disc / not possible now
 
-  Cdrom(Scheduler& sched, InterruptController& irq, AudioFifo& audio_out);
+  Cdrom(Scheduler& sched, InterruptController& irq);
 
   // nullptr = an empty drive with the lid closed.
   void insert_disc(std::unique_ptr<disc::Disc> d);
   void set_lid_open(bool open);
   disc::Disc* disc() const { return disc_.get(); }
+  // 44.1 kHz stereo CD audio (CD-DA and XA-ADPCM, after the volume matrix) for the SPU's CD input.
   AudioFifo& audio_out() { return audio_; }
 
   u32 io_read(u32 offset, u32 width) override;
@@ -139,7 +140,7 @@ class Cdrom final : public IoDevice, public DmaPort {
 
   Scheduler& sched_;
   InterruptController& irq_;
-  AudioFifo& audio_;
+  AudioFifo audio_;
   std::unique_ptr<disc::Disc> disc_;
   XaAdpcm xa_;
   Scheduler::Handle ev_command_, ev_second_, ev_drive_, ev_deliver_;

@@ -10,15 +10,16 @@
 #include <vector>
 
 #include "core/disc/sector.h"
+#include "core/input_error.h"
 #include "core/types.h"
 
 namespace psx::disc {
 
 // A defect in a user's disc image or cue sheet; the message names the file, the line or offset,
-// and what was expected.
-class DiscError : public std::runtime_error {
+// and what was expected. An InputError, so front ends report it like any bad user file.
+class DiscError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 enum class TrackType : u8 { Audio, Mode1, Mode2 };

@@ -71,4 +71,12 @@ BootConfig read_boot_config(Disc& disc) {
   return cfg;
 }
 
+PsxExe load_boot_exe(Disc& disc, BootConfig& config) {
+  config = read_boot_config(disc);
+  PsxExe exe = PsxExe::parse(config.exe, disc.path() + ":" + config.boot_path);
+  exe.stack_base = config.stack;
+  exe.stack_offset = 0;
+  return exe;
+}
+
 }  // namespace psx::disc

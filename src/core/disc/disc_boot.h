@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bios/exe.h"
 #include "core/disc/disc.h"
 
 namespace psx::disc {
@@ -26,5 +27,10 @@ BootConfig parse_system_cnf(const std::string& text, const std::string& name);
 // Reads SYSTEM.CNF and the boot EXE from the disc. Throws DiscError when the disc has no ISO
 // 9660 volume, the executable is missing, or it is not a PS-X EXE.
 BootConfig read_boot_config(Disc& disc);
+
+// The HLE fast boot's executable: the boot EXE parsed, with SYSTEM.CNF's STACK as its stack
+// (the BIOS passes STACK to Exec(), overriding the header's stack fields). The kernel's TCB and
+// EVENT counts are returned in `config` for a kernel that allocates those tables.
+PsxExe load_boot_exe(Disc& disc, BootConfig& config);
 
 }  // namespace psx::disc

@@ -16,7 +16,7 @@ namespace psxrl::cli {
 namespace {
 
 const char* kRunHelp =
-    "usage: psxrl run --exe FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
+    "usage: psxrl run --exe FILE | --disc FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
     "                 [--pad1 TYPE] [--pad2 TYPE] [--memcard1 FILE] [--memcard2 FILE]\n"
     "                 [--screenshot FILE] [--vram FILE]\n"
     "\n"
@@ -25,6 +25,7 @@ const char* kRunHelp =
     "\n"
     "options:\n"
     "  --exe FILE       PS-X EXE to run\n"
+    "  --disc FILE      disc image (.cue, .iso or a raw .bin) to insert; without --exe it is booted\n"
     "  --bios FILE      BIOS image (exactly 512 KiB); without it the HLE kernel is used\n"
     "  --frames N       stop after N frames (default 3600)\n"
     "  --cycles N       stop after N CPU cycles (instead of --frames)\n"
@@ -69,7 +70,7 @@ bool parse_pad(const std::string& s, std::unique_ptr<psx::Pad>& out) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
-  std::string exe, bios, screenshot, vram_png;
+  std::string exe, bios, disc, screenshot, vram_png;
   unsigned long long frames = 3600, cycles = 0;
   bool expect_exit = false, quiet = false;
   std::unique_ptr<psx::Pad> pads[2] = {std::make_unique<psx::DigitalPad>(), nullptr};
@@ -87,6 +88,8 @@ int run_command(const std::vector<std::string>& args) {
       return kSuccess;
     } else if (a == "--exe") {
       if (!value(exe)) return usage("--exe needs a file");
+    } else if (a == "--disc") {
+      if (!value(disc)) return usage("--disc needs a file");
     } else if (a == "--bios") {
       if (!value(bios)) return usage("--bios needs a file");
     } else if (a == "--frames") {
@@ -110,7 +113,7 @@ int run_command(const std::vector<std::string>& args) {
       return usage("unknown option '" + a + "'");
     }
   }
-  if (exe.empty()) return usage("--exe is required");
+  if (exe.empty() && disc.empty()) return usage("--exe is required (or --disc to boot a disc)");
 
   psx::Console console;
   console.on_tty = [](char c) { std::fputc(c, stdout); };
@@ -119,7 +122,9 @@ int run_command(const std::vector<std::string>& args) {
   };
   try {
     if (!bios.empty()) console.load_bios(bios);
-    console.boot_exe(exe);
+    if (!disc.empty()) console.insert_disc(disc);
+    if (!exe.empty()) console.boot_exe(exe);
+    else console.boot_disc();
     for (int port = 0; port < 2; ++port) {
       console.sio0().attach_pad(port, std::move(pads[port]));
       if (!memcards[port].empty())

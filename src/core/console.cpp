@@ -3,13 +3,19 @@
 
 #include <cstring>
 
+#include "core/disc/disc_boot.h"
 #include "core/hash.h"
 #include "core/input_error.h"
 
 namespace psx {
 
 Console::Console()
-    : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), sio0_(sched_, irq_), gpu_(sched_, irq_) {
+    : bus_(sched_, irq_),
+      cpu_(bus_, sched_, irq_, gte_),
+      hle_(cpu_, bus_),
+      cdrom_(sched_, irq_),
+      sio0_(sched_, irq_),
+      gpu_(sched_, irq_) {
   // A frame ends at the GPU's VBlank.
   gpu_.on_vblank = [this] {
     frame_done_ = true;
@@ -35,6 +41,8 @@ Console::Console()
   hle_.on_tty = bus_.on_tty;
   hle_.on_log = bus_.on_log;
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
+  bus_.map_io(Cdrom::kBase, Cdrom::kMapSize, &cdrom_);
+  cdrom_.on_log = bus_.on_log;
   // SIO0: a digital pad in controller port 1 by default (programs and BIOSes expect one).
   bus_.map_io(Sio0::kBase, Sio0::kSize, &sio0_);
   sio0_.attach_pad(0, std::make_unique<DigitalPad>());
@@ -70,6 +78,23 @@ void Console::boot_exe_image(const std::vector<u8>& file, const std::string& nam
     pending_exe_ = std::move(exe);
     return;
   }
+  hle_mode_ = true;
+  hle_.install();
+  cpu_.set_hooks(this, 0x80000080);
+  side_load(exe);
+}
+
+void Console::insert_disc(const std::string& path) { cdrom_.insert_disc(disc::Disc::open(path)); }
+
+void Console::boot_disc() {
+  if (!cdrom_.disc()) throw InputError("no disc inserted to boot from");
+  if (bus_.has_bios()) {
+    boot_bios();
+    return;
+  }
+  disc::BootConfig config;
+  PsxExe exe = disc::load_boot_exe(*cdrom_.disc(), config);
+  program_hash_ = fnv1a(config.exe.data(), config.exe.size());
   hle_mode_ = true;
   hle_.install();
   cpu_.set_hooks(this, 0x80000080);
@@ -155,6 +180,7 @@ void Console::do_state(StateIO& s) {
   cpu_.do_state(s);
   gte_.do_state(s);
   hle_.do_state(s);
+  cdrom_.do_state(s);
   sio0_.do_state(s);
   s.pod(hold_frames_);
   gpu_.do_state(s);

@@ -14,6 +14,7 @@
 #include "core/bios/exe.h"
 #include "core/bios/hle_bios.h"
 #include "core/bus.h"
+#include "core/cdrom/cdrom.h"
 #include "core/cpu/cpu.h"
 #include "core/gte/gte.h"
 #include "core/irq.h"
@@ -46,6 +47,12 @@ class Console : private CpuHooks {
   void boot_exe_image(const std::vector<u8>& file, const std::string& name);
   // Boots the BIOS alone (from reset), e.g. for a BIOS test or a disc.
   void boot_bios();
+
+  // Disc drive: opens a .cue/.iso/.bin image (throws InputError naming file and line), and boots
+  // the inserted disc: the BIOS reads SYSTEM.CNF itself, or without a BIOS the HLE fast boot
+  // loads SYSTEM.CNF's BOOT executable through ISO 9660.
+  void insert_disc(const std::string& path);
+  void boot_disc();
 
   // Runs to the end of the current frame (the GPU's next VBlank) or until the program stops.
   void run_frame();
@@ -101,6 +108,7 @@ class Console : private CpuHooks {
   Gte& gte() { return gte_; }
   Scheduler& scheduler() { return sched_; }
   InterruptController& irq() { return irq_; }
+  Cdrom& cdrom() { return cdrom_; }
   // Controller/memory card port: plug devices, set buttons/sticks, read rumble (sio/sio0.h).
   Sio0& sio0() { return sio0_; }
   Gpu& gpu() { return gpu_; }
@@ -134,6 +142,7 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   HleBios hle_;
+  Cdrom cdrom_;
   Sio0 sio0_;
   Gpu gpu_;
 

@@ -8,6 +8,7 @@
 #include "cli/cli.h"
 #include "core/console.h"
 #include "core/input_error.h"
+#include "spu/wav.h"
 
 namespace psxrl::cli {
 
@@ -15,6 +16,7 @@ namespace {
 
 const char* kRunHelp =
     "usage: psxrl run --exe FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
+    "                 [--wav FILE]\n"
     "\n"
     "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
     "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
@@ -26,6 +28,7 @@ const char* kRunHelp =
     "  --cycles N       stop after N CPU cycles (instead of --frames)\n"
     "  --expect-exit    reaching the limit is a failure (exit 3): the program must exit itself\n"
     "  --quiet          no summary or diagnostics on standard error\n"
+    "  --wav FILE       write the whole run's audio (stereo 16-bit, 44.1 kHz) to FILE\n"
     "\n"
     "exit codes:\n"
     "  the program's own exit code (written to 0x1F802082; values above 255 exit as 255)\n"
@@ -52,7 +55,7 @@ bool parse_count(const std::string& s, unsigned long long& out) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
-  std::string exe, bios;
+  std::string exe, bios, wav;
   unsigned long long frames = 3600, cycles = 0;
   bool expect_exit = false, quiet = false;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -74,6 +77,8 @@ int run_command(const std::vector<std::string>& args) {
       if (!value(v) || !parse_count(v, frames)) return usage("--frames needs a whole number");
     } else if (a == "--cycles") {
       if (!value(v) || !parse_count(v, cycles) || cycles == 0) return usage("--cycles needs a positive whole number");
+    } else if (a == "--wav") {
+      if (!value(wav)) return usage("--wav needs a file");
     } else if (a == "--expect-exit") {
       expect_exit = true;
     } else if (a == "--quiet") {
@@ -100,6 +105,16 @@ int run_command(const std::vector<std::string>& args) {
   if (cycles) console.run_cycles(cycles);
   else console.run_frames(frames);
   std::fflush(stdout);
+  if (!wav.empty()) {
+    std::vector<psx::StereoSample> audio;
+    console.spu().take_samples(audio);
+    try {
+      psx::spu::write_wav(wav, audio.data(), audio.size());
+    } catch (const psx::spu::WavError& e) {
+      std::fprintf(stderr, "psxrl run: %s\n", e.what());
+      return kBadInput;
+    }
+  }
 
   if (!console.fatal_error().empty()) {
     std::fprintf(stderr, "psxrl run: %s\n", console.fatal_error().c_str());

@@ -7,7 +7,9 @@
 
 namespace psx {
 
-Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_) {
+Console::Console()
+    : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), spu_(sched_, irq_, cd_audio_) {
+  bus_.map_io(Spu::kBase, Spu::kSize, &spu_);
   frame_event_ = sched_.add_event("frame", [this](Cycles late) {
     frame_done_ = true;
     ++frames_;
@@ -138,6 +140,8 @@ void Console::do_state(StateIO& s) {
   cpu_.do_state(s);
   gte_.do_state(s);
   hle_.do_state(s);
+  cd_audio_.do_state(s);
+  spu_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/audio_fifo.h"
 #include "core/bios/exe.h"
 #include "core/bios/hle_bios.h"
 #include "core/bus.h"
@@ -17,6 +18,7 @@
 #include "core/irq.h"
 #include "core/scheduler.h"
 #include "core/state.h"
+#include "spu/spu.h"
 
 namespace psx {
 
@@ -67,6 +69,9 @@ class Console : private CpuHooks {
   Gte& gte() { return gte_; }
   Scheduler& scheduler() { return sched_; }
   InterruptController& irq() { return irq_; }
+  // Sound: output samples, capture (spu/spu.h); CD audio flows CD-ROM -> cd_audio -> SPU.
+  Spu& spu() { return spu_; }
+  AudioFifo& cd_audio() { return cd_audio_; }
 
   void do_state(StateIO& s);
 
@@ -83,6 +88,8 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   HleBios hle_;
+  AudioFifo cd_audio_;
+  Spu spu_;
 
   Scheduler::Handle frame_event_;
   Scheduler::Handle limit_event_;

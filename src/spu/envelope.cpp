@@ -65,6 +65,7 @@ EnvelopeParams Adsr::params() const {
 void Adsr::start(Phase p) {
   phase_ = p;
   counter_ = 0;
+  params_ = params();
 }
 
 void Adsr::key_on() {
@@ -83,7 +84,7 @@ void Adsr::force_off() {
 
 void Adsr::tick() {
   if (phase_ == Phase::Off) return;
-  level_ = envelope_tick(counter_, level_, params());
+  level_ = envelope_tick(counter_, level_, params_);
   switch (phase_) {
     case Phase::Attack:
       if (level_ >= 0x7FFF) start(Phase::Decay);
@@ -106,6 +107,7 @@ void Adsr::do_state(StateIO& s) {
   s.pod(level_);
   s.pod(counter_);
   if (s.loading() && static_cast<u8>(phase_) > static_cast<u8>(Phase::Release)) s.fail("bad ADSR phase");
+  if (s.loading()) params_ = params();
 }
 
 void VolumeSweep::write(u16 value) {

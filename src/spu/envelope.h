@@ -27,7 +27,10 @@ class Adsr {
  public:
   enum class Phase : u8 { Off, Attack, Decay, Sustain, Release };
 
-  void set_register(u32 value) { reg_ = value; }
+  void set_register(u32 value) {
+    reg_ = value;
+    params_ = params();
+  }
   u32 reg() const { return reg_; }
 
   // Key on starts Attack from level 0; key off starts Release from wherever the level is.
@@ -54,6 +57,7 @@ class Adsr {
   Phase phase_ = Phase::Off;
   s16 level_ = 0;
   u32 counter_ = 0;
+  EnvelopeParams params_;  // params() of the current phase and register, kept up to date
 };
 
 // A volume register (VOLL/VOLR, MVOLL/MVOLR): fixed volume (bit 15 = 0) or a sweep envelope.

@@ -44,3 +44,20 @@ function(psx_add_exe target)
     COMMENT "PSX link ${target}.exe" VERBATIM)
   add_custom_target(${target} ALL DEPENDS ${exe})
 endfunction()
+
+# psx_add_rom_image(<target> SOURCES <files...> LINKER_SCRIPT <ld>) builds a 512 KiB raw ROM
+# image ${CMAKE_CURRENT_BINARY_DIR}/<target>.bin (code linked at 0xBFC00000, padded with zeros).
+find_program(PSX_OBJCOPY mipsel-linux-gnu-objcopy REQUIRED)
+function(psx_add_rom_image target)
+  cmake_parse_arguments(ARG "" "LINKER_SCRIPT" "SOURCES" ${ARGN})
+  set(elf ${CMAKE_CURRENT_BINARY_DIR}/${target}.elf)
+  set(bin ${CMAKE_CURRENT_BINARY_DIR}/${target}.bin)
+  add_custom_command(OUTPUT ${bin}
+    COMMAND ${PSX_CC} ${PSX_CFLAGS} -I${PSX_GUEST_DIR}/include -nostdlib -static -Wl,--build-id=none
+            -Wl,-T,${ARG_LINKER_SCRIPT} ${ARG_SOURCES} -o ${elf}
+    COMMAND ${PSX_OBJCOPY} -O binary ${elf} ${bin}
+    COMMAND truncate -s 524288 ${bin}
+    DEPENDS ${ARG_SOURCES} ${ARG_LINKER_SCRIPT}
+    COMMENT "PSX ROM ${target}.bin" VERBATIM)
+  add_custom_target(${target} ALL DEPENDS ${bin})
+endfunction()

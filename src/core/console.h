@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,9 @@
 #include "core/cpu/cpu.h"
 #include "core/gte/gte.h"
 #include "core/irq.h"
+#include "core/memory_watch.h"
 #include "core/scheduler.h"
+#include "core/sio/sio0.h"
 #include "core/state.h"
 #include "spu/spu.h"
 
@@ -50,6 +53,9 @@ class Console : private CpuHooks {
   void run_frame();
   void run_frames(u64 n);
   void run_cycles(Cycles n);
+  // Runs whole frames until `done()` holds after a frame (checked before the first frame too) or
+  // `max_frames` have run; returns whether `done()` held.
+  bool run_until(const std::function<bool()>& done, u64 max_frames);
 
   // The program wrote its exit code to the debug port, or the console hit a fatal guest error.
   bool stopped() const { return exit_code_.has_value() || !fatal_error_.empty(); }
@@ -60,6 +66,34 @@ class Console : private CpuHooks {
   u64 frames() const { return frames_; }
   u64 instructions() const { return cpu_.instructions(); }
 
+  // Guest memory as the host sees it: RAM (any mirror, any segment) and the scratchpad. Host
+  // accesses take no emulated time and have no side effects; other addresses throw
+  // std::invalid_argument. Writes are not reported to memory watches (only guest writes are).
+  u8 read8(u32 addr) const { return *host_pointer(addr, 1); }
+  u16 read16(u32 addr) const;
+  u32 read32(u32 addr) const;
+  void write8(u32 addr, u8 v) { *host_pointer(addr, 1) = v; }
+  void write16(u32 addr, u16 v);
+  void write32(u32 addr, u32 v);
+  std::span<u8> ram() { return {bus_.ram(), Bus::kRamSize}; }
+  std::span<u8> scratchpad() { return {bus_.scratchpad(), Bus::kScratchSize}; }
+  // Writes the 2 MiB of RAM to a file (atomically).
+  void dump_ram(const std::string& path) const;
+
+  // Memory watches (memory_watch.h). Events accumulate until taken.
+  void watch(const std::string& key, u32 addr, u32 length, bool fresh_only = false, u32 flow_limit_frames = 0);
+  void unwatch(const std::string& key);
+  void sleep_watch(const std::string& key) { watches_.sleep(key); }
+  void wake_watch(const std::string& key) { watches_.wake(key); }
+  std::vector<WatchEvent> take_watch_events() { return watches_.take_events(); }
+
+  // Save states (save_state.h): the whole console. Loading checks the header against this
+  // console's BIOS and program; on any error it throws StateError and the console is unchanged.
+  std::vector<u8> save_state(bool compress = false);
+  void load_state(const std::vector<u8>& blob);
+  void save_state_file(const std::string& path, bool compress = true);
+  void load_state_file(const std::string& path);
+
   // Text the program prints (debug ports and BIOS putchar); diagnostic messages.
   std::function<void(char)> on_tty;
   std::function<void(const std::string&)> on_log;
@@ -69,6 +103,8 @@ class Console : private CpuHooks {
   Gte& gte() { return gte_; }
   Scheduler& scheduler() { return sched_; }
   InterruptController& irq() { return irq_; }
+  // Controller/memory card port: plug devices, set buttons/sticks, read rumble (sio/sio0.h).
+  Sio0& sio0() { return sio0_; }
   // Sound: output samples, capture (spu/spu.h); CD audio flows CD-ROM -> cd_audio -> SPU.
   Spu& spu() { return spu_; }
   AudioFifo& cd_audio() { return cd_audio_; }
@@ -77,6 +113,7 @@ class Console : private CpuHooks {
 
  private:
   void on_reach(u32 pc) override;
+  u8* host_pointer(u32 addr, u32 width) const;
   void side_load(const PsxExe& exe);
   void log(const std::string& msg) {
     if (on_log) on_log(msg);
@@ -88,6 +125,7 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   HleBios hle_;
+  Sio0 sio0_;
   AudioFifo cd_audio_;
   Spu spu_;
 
@@ -100,6 +138,9 @@ class Console : private CpuHooks {
   std::optional<PsxExe> pending_exe_;
   std::optional<u32> exit_code_;
   std::string fatal_error_;
+  MemoryWatches watches_;
+  u64 bios_hash_ = 0;
+  u64 program_hash_ = 0;
 };
 
 }  // namespace psx

@@ -1,5 +1,6 @@
 // `psxrl run`: boots a PS-X EXE (with a BIOS or the HLE kernel) headless, prints the program's TTY
 // output, and exits with the program's exit code or when the frame/cycle limit is reached.
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -131,6 +132,7 @@ int run_command(const std::vector<std::string>& args) {
     return kBadInput;
   }
 
+  if (!wav.empty()) console.spu().set_output_limit(SIZE_MAX);
   if (cycles) console.run_cycles(cycles);
   else console.run_frames(frames);
   std::fflush(stdout);

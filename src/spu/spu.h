@@ -44,6 +44,9 @@ class Spu final : public IoDevice, public DmaPort {
   // swap storage, so nothing is copied).
   void take_samples(std::vector<StereoSample>& out);
   size_t pending_samples() const { return output_.size(); }
+  // Bounds the untaken output so a console nobody listens to does not grow without end: when
+  // the limit is reached the older half is dropped. Default one minute; SIZE_MAX keeps all.
+  void set_output_limit(size_t samples) { output_limit_ = samples < 2 ? 2 : samples; }
 
   // --- Capture (seed §2.5) ----------------------------------------------------------------
   void start_capture(const spu::CaptureOptions& options) { capture_.start(options); }
@@ -130,6 +133,7 @@ class Spu final : public IoDevice, public DmaPort {
   std::array<u16, kSize / 2> raw_{};
 
   std::vector<StereoSample> output_;
+  size_t output_limit_ = kSampleRate * 60;
   spu::AudioCapture capture_;
 };
 

@@ -129,6 +129,7 @@ void Spu::generate_sample() {
   out.right = static_cast<s16>(clamp16(apply_volume(clamp16(right), main_right_.level())));
   main_left_.tick();
   main_right_.tick();
+  if (output_.size() >= output_limit_) output_.erase(output_.begin(), output_.begin() + output_.size() / 2);
   output_.push_back(out);
   capture_.push(out);
 }

@@ -106,3 +106,12 @@ TEST(SpuRegisters, CdAudioVolumesAndCaptureBuffers) {
   r.run_samples(0x100 - 3);
   EXPECT_EQ(r.r16(0x1F801DAE) & 0x800, 0x800);  // writing the second half now
 }
+
+TEST(SpuRegisters, OutputLimitDropsTheOlderHalf) {
+  SpuRig r;
+  r.spu.set_output_limit(100);
+  r.run_samples(100);
+  EXPECT_EQ(r.spu.pending_samples(), 100u);
+  r.run_samples(1);  // 100 reached: the older 50 go, the new one is appended
+  EXPECT_EQ(r.spu.pending_samples(), 51u);
+}

@@ -19,6 +19,7 @@ Console::Console()
     frame_done_ = true;
     ++frames_;
     watches_.on_frame(frames_, sched_.now());
+    release_timed_buttons();
     sched_.schedule(frame_event_, kFrameCycles - late);
     cpu_.stop();
   });
@@ -160,6 +161,7 @@ void Console::do_state(StateIO& s) {
   gte_.do_state(s);
   hle_.do_state(s);
   sio0_.do_state(s);
+  s.pod(hold_frames_);
   cd_audio_.do_state(s);
   spu_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);

@@ -3,6 +3,7 @@
 // else from the core. A console is self-contained (no global state): many can run on many
 // threads. It never starts threads itself; every run call returns synchronously.
 #pragma once
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -109,11 +110,24 @@ class Console : private CpuHooks {
   Spu& spu() { return spu_; }
   AudioFifo& cd_audio() { return cd_audio_; }
 
+  // Controller input between run calls. Ports are 1 and 2 as labelled on the console; `buttons`
+  // are pad_button bits (1 = pressed). Calls for an empty port do nothing.
+  void set_buttons(int port, u16 pressed);
+  void press(int port, u16 buttons);
+  void release(int port, u16 buttons);
+  // Holds `buttons` for the next `frames` frame ends, then releases them (the seed's press and
+  // release delays, in frames instead of 10 ms units).
+  void press_for(int port, u16 buttons, u32 frames);
+  void set_axes(int port, const AnalogAxes& axes);
+  Rumble rumble(int port) const;
+
   void do_state(StateIO& s);
 
  private:
   void on_reach(u32 pc) override;
   u8* host_pointer(u32 addr, u32 width) const;
+  static int port_index(int port);
+  void release_timed_buttons();
   void side_load(const PsxExe& exe);
   void log(const std::string& msg) {
     if (on_log) on_log(msg);
@@ -141,6 +155,8 @@ class Console : private CpuHooks {
   MemoryWatches watches_;
   u64 bios_hash_ = 0;
   u64 program_hash_ = 0;
+  // Frames left before press_for() releases each button of each port (0 = not timed).
+  std::array<std::array<u32, 16>, 2> hold_frames_{};
 };
 
 }  // namespace psx

@@ -1,5 +1,6 @@
 // `psxrl run`: boots a PS-X EXE (with a BIOS or the HLE kernel) headless, prints the program's TTY
 // output, and exits with the program's exit code or when the frame/cycle limit is reached.
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "core/console.h"
 #include "core/input_error.h"
 #include "core/sio/dualshock.h"
+#include "spu/wav.h"
 
 namespace psxrl::cli {
 
@@ -18,7 +20,7 @@ namespace {
 const char* kRunHelp =
     "usage: psxrl run --exe FILE | --disc FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
     "                 [--pad1 TYPE] [--pad2 TYPE] [--memcard1 FILE] [--memcard2 FILE]\n"
-    "                 [--screenshot FILE] [--vram FILE]\n"
+    "                 [--screenshot FILE] [--vram FILE] [--wav FILE]\n"
     "\n"
     "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
     "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
@@ -37,6 +39,7 @@ const char* kRunHelp =
     "  --memcard2 FILE  memory card in slot 2\n"
     "  --screenshot FILE  write the displayed picture as PNG at the end of the run\n"
     "  --vram FILE      write all of VRAM (1024x512) as PNG at the end of the run\n"
+    "  --wav FILE       write the whole run's audio (stereo 16-bit, 44.1 kHz) to FILE\n"
     "\n"
     "exit codes:\n"
     "  the program's own exit code (written to 0x1F802082; values above 255 exit as 255)\n"
@@ -70,7 +73,7 @@ bool parse_pad(const std::string& s, std::unique_ptr<psx::Pad>& out) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
-  std::string exe, bios, disc, screenshot, vram_png;
+  std::string exe, bios, disc, screenshot, vram_png, wav;
   unsigned long long frames = 3600, cycles = 0;
   bool expect_exit = false, quiet = false;
   std::unique_ptr<psx::Pad> pads[2] = {std::make_unique<psx::DigitalPad>(), nullptr};
@@ -100,6 +103,8 @@ int run_command(const std::vector<std::string>& args) {
       if (!value(screenshot)) return usage("--screenshot needs a file");
     } else if (a == "--vram") {
       if (!value(vram_png)) return usage("--vram needs a file");
+    } else if (a == "--wav") {
+      if (!value(wav)) return usage("--wav needs a file");
     } else if (a == "--expect-exit") {
       expect_exit = true;
     } else if (a == "--quiet") {
@@ -138,6 +143,7 @@ int run_command(const std::vector<std::string>& args) {
     return kBadInput;
   }
 
+  if (!wav.empty()) console.spu().set_output_limit(SIZE_MAX);
   if (cycles) console.run_cycles(cycles);
   else console.run_frames(frames);
   std::fflush(stdout);
@@ -146,6 +152,16 @@ int run_command(const std::vector<std::string>& args) {
       (!vram_png.empty() && !console.gpu().write_vram_png(vram_png, png_error))) {
     std::fprintf(stderr, "psxrl run: %s\n", png_error.c_str());
     return kBadInput;
+  }
+  if (!wav.empty()) {
+    std::vector<psx::StereoSample> audio;
+    console.spu().take_samples(audio);
+    try {
+      psx::spu::write_wav(wav, audio.data(), audio.size());
+    } catch (const psx::spu::WavError& e) {
+      std::fprintf(stderr, "psxrl run: %s\n", e.what());
+      return kBadInput;
+    }
   }
 
   if (!console.fatal_error().empty()) {

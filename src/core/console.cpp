@@ -15,7 +15,9 @@ Console::Console()
       hle_(cpu_, bus_),
       cdrom_(sched_, irq_),
       sio0_(sched_, irq_),
-      gpu_(sched_, irq_) {
+      gpu_(sched_, irq_),
+      spu_(sched_, irq_, cdrom_.audio_out()) {
+  bus_.map_io(Spu::kBase, Spu::kSize, &spu_);
   // A frame ends at the GPU's VBlank.
   gpu_.on_vblank = [this] {
     frame_done_ = true;
@@ -184,6 +186,7 @@ void Console::do_state(StateIO& s) {
   sio0_.do_state(s);
   s.pod(hold_frames_);
   gpu_.do_state(s);
+  spu_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/audio_fifo.h"
 #include "core/bios/exe.h"
 #include "core/bios/hle_bios.h"
 #include "core/bus.h"
@@ -23,6 +24,7 @@
 #include "core/sio/sio0.h"
 #include "core/state.h"
 #include "gpu/gpu.h"
+#include "spu/spu.h"
 
 namespace psx {
 
@@ -112,6 +114,9 @@ class Console : private CpuHooks {
   // Controller/memory card port: plug devices, set buttons/sticks, read rumble (sio/sio0.h).
   Sio0& sio0() { return sio0_; }
   Gpu& gpu() { return gpu_; }
+  // Sound: output samples, capture (spu/spu.h); CD audio flows CD-ROM -> cd_audio -> SPU.
+  Spu& spu() { return spu_; }
+  AudioFifo& cd_audio() { return cdrom_.audio_out(); }
 
   // Controller input between run calls. Ports are 1 and 2 as labelled on the console; `buttons`
   // are pad_button bits (1 = pressed). Calls for an empty port do nothing.
@@ -145,6 +150,7 @@ class Console : private CpuHooks {
   Cdrom cdrom_;
   Sio0 sio0_;
   Gpu gpu_;
+  Spu spu_;
 
   Scheduler::Handle limit_event_;
   bool frame_done_ = false;

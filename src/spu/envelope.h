@@ -1,0 +1,82 @@
+// SPU envelope generators (psx-spx "SPU Volume and ADSR Generator"): the rate engine shared by
+// every envelope ("Envelope Operation depending on Shift/Step/Mode/Direction"), the four-phase
+// ADSR of each voice (ADSR1/ADSR2, ENVX) and the volume sweeps of the voice and main volumes.
+#pragma once
+#include "core/state.h"
+#include "core/types.h"
+
+namespace psx::spu {
+
+// One envelope phase. `rate` is the 7-bit Shift:Step pair (shift in bits 2-6, step in bits 0-1).
+struct EnvelopeParams {
+  u8 rate = 0;
+  // Rate bits that, all set, freeze the envelope (psx-spx: "all-ones never steps"): 7Fh for
+  // attack/sustain/sweeps; decay and release have no step field, so only their shift counts (7Ch).
+  u8 rate_mask = 0x7F;
+  bool decreasing = false;
+  bool exponential = false;
+  bool phase_negative = false;
+};
+
+// Advances an envelope by one 44.1 kHz tick. `counter` is the phase's step counter (zeroed when
+// a phase starts); returns the new level.
+s16 envelope_tick(u32& counter, s16 level, const EnvelopeParams& p);
+
+// The ADSR envelope of one voice (ADSR1 = low half, ADSR2 = high half of the 32-bit value).
+class Adsr {
+ public:
+  enum class Phase : u8 { Off, Attack, Decay, Sustain, Release };
+
+  void set_register(u32 value) {
+    reg_ = value;
+    params_ = params();
+  }
+  u32 reg() const { return reg_; }
+
+  // Key on starts Attack from level 0; key off starts Release from wherever the level is.
+  void key_on();
+  void key_off();
+  // An End+Mute ADPCM block (flags End without Repeat) silences the voice at once.
+  void force_off();
+  void tick();
+
+  s16 level() const { return level_; }
+  // ENVX is writable; the next step continues from the written level.
+  void set_level(s16 v) { level_ = v; }
+  Phase phase() const { return phase_; }
+  // Sustain level: (N+1)*800h (psx-spx ADSR1 bits 0-3).
+  s32 sustain_target() const { return static_cast<s32>((reg_ & 0xF) + 1) * 0x800; }
+  EnvelopeParams params() const;
+
+  void do_state(StateIO& s);
+
+ private:
+  void start(Phase p);
+
+  u32 reg_ = 0;
+  Phase phase_ = Phase::Off;
+  s16 level_ = 0;
+  u32 counter_ = 0;
+  EnvelopeParams params_;  // params() of the current phase and register, kept up to date
+};
+
+// A volume register (VOLL/VOLR, MVOLL/MVOLR): fixed volume (bit 15 = 0) or a sweep envelope.
+class VolumeSweep {
+ public:
+  void write(u16 value);
+  u16 reg() const { return reg_; }
+  // Once per 44.1 kHz tick. A fixed volume is latched here, not on the register write (psx-spx:
+  // "the Bit15=0 setting isn't applied until the next 44.1kHz cycle").
+  void tick();
+  s16 level() const { return level_; }
+  void set_level(s16 v) { level_ = v; }
+
+  void do_state(StateIO& s);
+
+ private:
+  u16 reg_ = 0;
+  s16 level_ = 0;
+  u32 counter_ = 0;
+};
+
+}  // namespace psx::spu

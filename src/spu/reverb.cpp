@@ -1,0 +1,131 @@
+// SPU reverb: the 22.05 kHz formula on the sound-RAM work area and its FIR resampling
+// (psx-spx "SPU Reverb Formula", "Reverb Buffer Resampling").
+#include "spu/reverb.h"
+
+#include <algorithm>
+
+namespace psx::spu {
+namespace {
+
+// psx-spx "Reverb Buffer Resampling": the 39-tap filter used both ways.
+constexpr s32 kFir[39] = {
+    -0x0001, 0, 0x0002, 0, -0x000A, 0, 0x0023, 0, -0x0067, 0, 0x010A, 0, -0x0268, 0,
+    0x0534,  0, -0x0B90, 0, 0x2806, 0x4000, 0x2806, 0, -0x0B90, 0, 0x0534, 0, -0x0268, 0,
+    0x010A,  0, -0x0067, 0, 0x0023, 0, -0x000A, 0, 0x0002, 0, -0x0001,
+};
+
+s32 sat(s32 v) { return std::clamp(v, -0x8000, 0x7FFF); }
+s32 mul(s32 a, s32 b) { return (a * b) >> 15; }
+
+}  // namespace
+
+void Reverb::write_base(u16 value) {
+  base_ = value;
+  current_ = value * 4u;
+}
+
+u32 Reverb::address(s32 rel) const {
+  // Addresses wrap inside ESA..7FFFEh (halfwords base*4 .. 3FFFFh).
+  const s64 start = base_ * 4;
+  const s64 size = 0x40000 - start;
+  s64 off = (static_cast<s64>(current_) - start + rel) % size;
+  if (off < 0) off += size;
+  return static_cast<u32>(start + off);
+}
+
+s16 Reverb::read(u32 hw, const u8* ram, IrqWatch& irq) const {
+  if (irq.enabled && (hw >> 2) == irq.unit) irq.hit = true;
+  return static_cast<s16>(ram[hw * 2] | ram[hw * 2 + 1] << 8);
+}
+
+void Reverb::write(u32 hw, s32 value, u8* ram, bool write_enable, IrqWatch& irq) const {
+  // With the master enable off the hardware turns the write into a read.
+  if (irq.enabled && (hw >> 2) == irq.unit) irq.hit = true;
+  if (!write_enable) return;
+  const u16 v = static_cast<u16>(sat(value));
+  ram[hw * 2] = static_cast<u8>(v);
+  ram[hw * 2 + 1] = static_cast<u8>(v >> 8);
+}
+
+s32 Reverb::downsample(u32 side) const {
+  s32 sum = 0;
+  for (u32 k = 0; k < 39; ++k) sum += kFir[k] * in_history_[side][(in_pos_ - k) & (kRing - 1)];
+  return sat(sum >> 15);
+}
+
+s32 Reverb::upsample(u32 side, bool fresh) const {
+  // The 22.05 kHz output, zero-stuffed to 44.1 kHz and filtered (gain 2). On the cycle a new
+  // value arrives the even taps apply; on the other cycle only the centre tap does.
+  const auto& h = out_history_[side];
+  const u32 pos = out_pos_[side];
+  if (!fresh) return h[(pos - 9) & (kRing - 1)];
+  s32 sum = 0;
+  for (u32 j = 0; j < 20; ++j) sum += kFir[2 * j] * h[(pos - j) & (kRing - 1)];
+  return sat(sum >> 14);
+}
+
+s16 Reverb::process_side(u32 side, s32 input, u8* ram, bool we, IrqWatch& irq) {
+  auto reg = [&](u32 r) { return static_cast<s32>(regs[r]) * 4; };  // 8-byte units -> halfwords
+  auto vol = [&](u32 r) { return static_cast<s32>(static_cast<s16>(regs[r])); };
+  auto rd = [&](s32 rel) { return static_cast<s32>(read(address(rel), ram, irq)); };
+  const u32 other = side ^ 1;
+
+  const s32 in = sat(mul(input, vol(vLIN + side)));
+  const s32 iir = vol(vIIR);
+  // Same-side and different-side reflections: [m] = (in + [d]*vWALL - [m-2])*vIIR + [m-2].
+  auto reflect = [&](u32 m_reg, u32 d_reg) {
+    const s32 prev = rd(reg(m_reg) - 1);
+    const s32 x = sat(in + mul(rd(reg(d_reg)), vol(vWALL)) - prev);
+    s32 result = sat(mul(x, iir) + prev);
+    // psx-spx "Bug": with vIIR = -8000h the value written is negated.
+    if (iir == -0x8000) result = -result;
+    write(address(reg(m_reg)), result, ram, we, irq);
+  };
+  reflect(mLSAME + side, dLSAME + side);
+  reflect(mLDIFF + side, dLDIFF + other);
+
+  s32 out = sat((vol(vCOMB1) * rd(reg(mLCOMB1 + side)) + vol(vCOMB2) * rd(reg(mLCOMB2 + side)) +
+                 vol(vCOMB3) * rd(reg(mLCOMB3 + side)) + vol(vCOMB4) * rd(reg(mLCOMB4 + side))) >> 15);
+  // Two all-pass filters: out -= vAPF*[m-d]; [m] = out; out = out*vAPF + [m-d].
+  auto all_pass = [&](u32 m_reg, u32 d_reg, u32 v_reg) {
+    const s32 delayed = rd(reg(m_reg) - reg(d_reg));
+    out = sat(out - mul(vol(v_reg), delayed));
+    write(address(reg(m_reg)), out, ram, we, irq);
+    out = sat(mul(out, vol(v_reg)) + delayed);
+  };
+  all_pass(mLAPF1 + side, dAPF1, vAPF1);
+  all_pass(mLAPF2 + side, dAPF2, vAPF2);
+  return static_cast<s16>(out);
+}
+
+StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, IrqWatch& irq) {
+  in_pos_ = (in_pos_ + 1) & (kRing - 1);
+  in_history_[0][in_pos_] = static_cast<s16>(sat(in_left));
+  in_history_[1][in_pos_] = static_cast<s16>(sat(in_right));
+
+  const u32 side = phase_;
+  out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
+  out_history_[side][out_pos_[side]] = process_side(side, downsample(side), ram, write_enable, irq);
+
+  StereoSample out;
+  out.left = static_cast<s16>(upsample(0, side == 0));
+  out.right = static_cast<s16>(upsample(1, side == 1));
+  if (side == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
+  phase_ ^= 1;
+  return out;
+}
+
+void Reverb::do_state(StateIO& s) {
+  s.pod(regs);
+  s.pod(base_);
+  s.pod(current_);
+  s.pod(phase_);
+  s.pod(in_pos_);
+  s.pod(out_pos_);
+  s.pod(in_history_);
+  s.pod(out_history_);
+  if (s.loading() && (current_ > 0x3FFFF || phase_ > 1 || in_pos_ >= kRing || out_pos_[0] >= kRing || out_pos_[1] >= kRing))
+    s.fail("reverb state out of range");
+}
+
+}  // namespace psx::spu

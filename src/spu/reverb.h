@@ -1,0 +1,60 @@
+// The SPU reverb unit (psx-spx "SPU Reverb Registers", "SPU Reverb Formula"): a stereo
+// Schroeder reverberator running at 22.05 kHz on a work area in sound RAM (ESA..7FFFEh), with
+// the 39-tap FIR resampling between the 44.1 kHz mixer and the 22.05 kHz core. Left is computed
+// on one 44.1 kHz cycle and right on the next, as the hardware does.
+#pragma once
+#include <array>
+
+#include "core/audio_fifo.h"
+#include "core/state.h"
+#include "core/types.h"
+
+namespace psx::spu {
+
+class Reverb {
+ public:
+  // Register indices into regs (1F801DC0h + 2*index), names from psx-spx.
+  enum Reg : u32 {
+    dAPF1, dAPF2, vIIR, vCOMB1, vCOMB2, vCOMB3, vCOMB4, vWALL, vAPF1, vAPF2,
+    mLSAME, mRSAME, mLCOMB1, mRCOMB1, mLCOMB2, mRCOMB2, dLSAME, dRSAME, mLDIFF, mRDIFF,
+    mLCOMB3, mRCOMB3, mLCOMB4, mRCOMB4, dLDIFF, dRDIFF, mLAPF1, mRAPF1, mLAPF2, mRAPF2, vLIN, vRIN,
+  };
+  std::array<u16, 32> regs{};
+
+  // ESA (1F801DA2h): the work area start; writing it also resets the buffer address.
+  void write_base(u16 value);
+  u16 base() const { return base_; }
+
+  // Where a reverb access touched sound RAM this tick at the IRQ address (8-byte units).
+  struct IrqWatch {
+    bool enabled = false;
+    u32 unit = 0;
+    bool hit = false;
+  };
+
+  // One 44.1 kHz tick. `in` is the sum of reverb-enabled voices and CD audio; the result is the
+  // reverb output before the EVOLL/EVOLR volumes. Writes to the work area only when
+  // `write_enable` (ATTR bit 7); reads always happen.
+  StereoSample tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, IrqWatch& irq);
+
+  void do_state(StateIO& s);
+
+ private:
+  static constexpr u32 kRing = 64;
+  s16 process_side(u32 side, s32 input, u8* ram, bool write_enable, IrqWatch& irq);
+  u32 address(s32 rel_halfwords) const;
+  s16 read(u32 halfword, const u8* ram, IrqWatch& irq) const;
+  void write(u32 halfword, s32 value, u8* ram, bool write_enable, IrqWatch& irq) const;
+  s32 downsample(u32 side) const;
+  s32 upsample(u32 side, bool fresh) const;
+
+  u16 base_ = 0;
+  u32 current_ = 0;  // buffer address in halfwords
+  u32 phase_ = 0;    // 0: left's cycle, 1: right's cycle
+  u32 in_pos_ = 0;
+  std::array<u32, 2> out_pos_{};  // newest 22.05 kHz output of each side
+  std::array<std::array<s16, kRing>, 2> in_history_{};   // 44.1 kHz inputs
+  std::array<std::array<s16, kRing>, 2> out_history_{};  // 22.05 kHz outputs
+};
+
+}  // namespace psx::spu

@@ -1,0 +1,140 @@
+// The Sound Processing Unit (psx-spx "Sound Processing Unit (SPU)"): registers at 1F801C00h
+// (400h bytes), 512 KiB of sound RAM filled by manual writes or DMA channel 4, 24 ADPCM voices,
+// reverb, CD audio input, and stereo 16-bit output at 44.1 kHz - one sample every 768 CPU
+// cycles, booked on the scheduler. The console and environment take the produced samples and
+// control audio capture through the public API below.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "core/audio_fifo.h"
+#include "core/io_device.h"
+#include "core/irq.h"
+#include "core/scheduler.h"
+#include "core/state.h"
+#include "core/types.h"
+#include "spu/capture.h"
+#include "spu/noise.h"
+#include "spu/reverb.h"
+#include "spu/voice.h"
+
+namespace psx {
+
+class Spu final : public IoDevice, public DmaPort {
+ public:
+  static constexpr u32 kBase = 0x1F801C00;
+  static constexpr u32 kSize = 0x400;
+  static constexpr u32 kRamSize = 512 * 1024;
+  static constexpr u32 kNumVoices = 24;
+  static constexpr u32 kSampleRate = 44100;
+  static constexpr Cycles kCyclesPerSample = 768;  // 33.8688 MHz / 44.1 kHz
+
+  Spu(Scheduler& sched, InterruptController& irq, AudioFifo& cd_audio);
+
+  u32 io_read(u32 offset, u32 width) override;
+  void io_write(u32 offset, u32 value, u32 width) override;
+
+  // DMA channel 4 (psx-spx "SPU RAM DMA-Write/Read"): words go to/from the transfer address.
+  void dma_write(const u32* words, u32 count) override;
+  void dma_read(u32* words, u32 count) override;
+  bool dma_request() const override;
+
+  // --- Output ----------------------------------------------------------------------------
+  // Moves the samples produced since the last call into `out` (cleared first; the two vectors
+  // swap storage, so nothing is copied).
+  void take_samples(std::vector<StereoSample>& out);
+  size_t pending_samples() const { return output_.size(); }
+  // Bounds the untaken output so a console nobody listens to does not grow without end: when
+  // the limit is reached the older half is dropped. Default one minute; SIZE_MAX keeps all.
+  void set_output_limit(size_t samples) { output_limit_ = samples < 2 ? 2 : samples; }
+
+  // --- Capture (seed §2.5) ----------------------------------------------------------------
+  void start_capture(const spu::CaptureOptions& options) { capture_.start(options); }
+  // Stops the recording and returns it, cropped.
+  std::vector<StereoSample> stop_capture() { return capture_.stop(); }
+  const spu::AudioCapture& capture() const { return capture_; }
+
+  // Sound RAM, for tests and tools.
+  const u8* ram() const { return ram_.data(); }
+  u8* ram() { return ram_.data(); }
+  const spu::Voice& voice(u32 i) const { return voices_[i]; }
+
+  // Save states hold the whole SPU; the not-yet-taken output samples and a running capture
+  // are the host's, not the console's, and are not part of the state.
+  void do_state(StateIO& s);
+
+ private:
+  // Register offsets (from 1F801C00h) of the control block, names from psx-spx.
+  enum : u32 {
+    kMVOLL = 0x180, kMVOLR = 0x182, kEVOLL = 0x184, kEVOLR = 0x186,
+    kKON = 0x188, kKOFF = 0x18C, kPMON = 0x190, kNON = 0x194, kEON = 0x198, kENDX = 0x19C,
+    kESA = 0x1A2, kIRQA = 0x1A4, kTSA = 0x1A6, kFIFO = 0x1A8, kATTR = 0x1AA, kRAMCTRL = 0x1AC,
+    kSTAT = 0x1AE, kAVOLL = 0x1B0, kAVOLR = 0x1B2, kBVOLL = 0x1B4, kBVOLR = 0x1B6,
+    kMVOLXL = 0x1B8, kMVOLXR = 0x1BA, kReverbRegs = 0x1C0, kVoiceVolumes = 0x200,
+  };
+  // ATTR (SPUCNT) bits.
+  enum : u16 {
+    kAttrCdEnable = 1 << 0, kAttrCdReverb = 1 << 2, kAttrIrqEnable = 1 << 6,
+    kAttrReverbEnable = 1 << 7, kAttrUnmute = 1 << 14, kAttrEnable = 1 << 15,
+  };
+  enum class TransferMode : u8 { Stop = 0, ManualWrite = 1, DmaWrite = 2, DmaRead = 3 };
+  static constexpr u32 kFifoSize = 32;
+
+  // Registers (spu_registers.cpp).
+  u16 read16(u32 offset);
+  void write16(u32 offset, u16 value);
+  u16 read_voice(u32 v, u32 reg) const;
+  void write_voice(u32 v, u32 reg, u16 value);
+  void write_attr(u16 value);
+  u16 status() const;
+  static void set_half(u32& bits, u32 offset, u16 value);
+
+  // Transfers and the RAM IRQ (spu_transfer.cpp).
+  TransferMode transfer_mode() const { return static_cast<TransferMode>((attr_ >> 4) & 3); }
+  void fifo_push(u16 value);
+  void flush_fifo();
+  void ram_write16(u32 byte_addr, u16 value);
+  u16 ram_read16(u32 byte_addr);
+  void check_irq(u32 byte_addr);
+  void raise_irq();
+
+  // Sample generation (spu_mixer.cpp).
+  void on_sample(Cycles late);
+  void generate_sample();
+  void apply_key_events();
+  void sample_voice(u32 i, s32& left, s32& right, s32& reverb_left, s32& reverb_right);
+  void write_capture_buffers(StereoSample cd, s16 voice1, s16 voice3);
+
+  Scheduler& sched_;
+  InterruptController& irq_;
+  AudioFifo& cd_audio_;
+  Scheduler::Handle sample_event_;
+
+  std::vector<u8> ram_;
+  std::array<spu::Voice, kNumVoices> voices_{};
+  spu::Reverb reverb_;
+  spu::NoiseGenerator noise_;
+  spu::VolumeSweep main_left_, main_right_;
+  s16 cd_volume_left_ = 0, cd_volume_right_ = 0;      // AVOLL/AVOLR
+  s16 ext_volume_left_ = 0, ext_volume_right_ = 0;    // BVOLL/BVOLR (external input is silent)
+  s16 reverb_volume_left_ = 0, reverb_volume_right_ = 0;  // EVOLL/EVOLR
+  u32 key_on_ = 0, key_off_ = 0;  // written KON/KOFF bits, applied on the next sample
+  u32 pitch_mod_ = 0, noise_on_ = 0, reverb_on_ = 0, endx_ = 0;
+  u16 attr_ = 0;
+  bool irq_flag_ = false;  // STAT bit 6
+  u16 irq_address_ = 0;    // IRQA, 8-byte units
+  u16 transfer_start_ = 0; // TSA, 8-byte units
+  u32 transfer_addr_ = 0;  // current transfer address in bytes
+  u16 ram_control_ = 0;    // 1F801DACh
+  std::array<u16, kFifoSize> fifo_{};
+  u32 fifo_count_ = 0;
+  u32 capture_pos_ = 0;    // halfword index into each 1 KiB capture buffer
+  // Read-back of registers with no other home (KON/KOFF last written, unknown registers).
+  std::array<u16, kSize / 2> raw_{};
+
+  std::vector<StereoSample> output_;
+  size_t output_limit_ = kSampleRate * 60;
+  spu::AudioCapture capture_;
+};
+
+}  // namespace psx

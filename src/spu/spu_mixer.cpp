@@ -1,0 +1,171 @@
+// SPU sample generation, once per 768 CPU cycles: key events, the 24 voices (pitch modulation,
+// noise, envelopes, volumes), CD audio input with its volumes, the capture buffers in the first
+// 4 KiB of sound RAM, reverb, the main volume, and the 44.1 kHz stereo output.
+#include <algorithm>
+
+#include "spu/spu.h"
+
+namespace psx {
+namespace {
+
+s32 clamp16(s32 v) { return std::clamp(v, -0x8000, 0x7FFF); }
+s32 apply_volume(s32 sample, s32 volume) { return (sample * volume) >> 15; }
+
+}  // namespace
+
+Spu::Spu(Scheduler& sched, InterruptController& irq, AudioFifo& cd_audio)
+    : sched_(sched), irq_(irq), cd_audio_(cd_audio), ram_(kRamSize, 0) {
+  sample_event_ = sched_.add_event("spu.sample", [this](Cycles late) { on_sample(late); });
+  sched_.schedule(sample_event_, kCyclesPerSample);
+}
+
+void Spu::on_sample(Cycles late) {
+  generate_sample();
+  sched_.schedule_at(sample_event_, sched_.now() - late + kCyclesPerSample);
+}
+
+void Spu::take_samples(std::vector<StereoSample>& out) {
+  out.clear();
+  out.swap(output_);
+}
+
+void Spu::apply_key_events() {
+  // KON/KOFF writes take effect at the next 44.1 kHz cycle (psx-spx "Unstable and Delayed I/O").
+  for (u32 i = 0; i < kNumVoices; ++i) {
+    const u32 bit = 1u << i;
+    if (key_off_ & bit) voices_[i].key_off();
+    if (key_on_ & bit) {
+      voices_[i].key_on();
+      endx_ &= ~bit;
+    }
+  }
+  key_on_ = key_off_ = 0;
+}
+
+void Spu::sample_voice(u32 i, s32& left, s32& right, s32& reverb_left, s32& reverb_right) {
+  spu::Voice& v = voices_[i];
+  const u32 bit = 1u << i;
+  v.fetch_block(ram_.data());
+  // Every voice reads its block header and current sample each cycle, audible or not.
+  check_irq(v.current_address() * 8u);
+  check_irq(v.data_address());
+
+  const bool noise = (noise_on_ & bit) != 0;
+  const s32 sample = noise ? noise_.level() : v.interpolate();
+  v.output = static_cast<s16>(clamp16(apply_volume(sample, v.adsr.level())));
+  v.adsr.tick();
+
+  // psx-spx "Pitch Counter": modulation by the previous voice's output, then clip to 4000h.
+  u32 step = v.pitch;
+  if (pitch_mod_ & bit) {
+    const s32 factor = voices_[i - 1].output + 0x8000;
+    step = static_cast<u32>((static_cast<s32>(static_cast<s16>(v.pitch)) * factor) >> 15) & 0xFFFF;
+  }
+  step = std::min<u32>(step, 0x4000);
+  if (v.advance(step, noise) == spu::Voice::BlockEvent::LoopEnd) endx_ |= bit;
+
+  const s32 l = apply_volume(v.output, v.volume_left.level());
+  const s32 r = apply_volume(v.output, v.volume_right.level());
+  v.volume_left.tick();
+  v.volume_right.tick();
+  left += l;
+  right += r;
+  if (reverb_on_ & bit) {
+    reverb_left += l;
+    reverb_right += r;
+  }
+}
+
+void Spu::write_capture_buffers(StereoSample cd, s16 voice1, s16 voice3) {
+  // psx-spx "SPU Memory layout": CD left/right before volume, voices 1 and 3 after the
+  // envelope, 200h samples each. Capture IRQs need RAM_CTRL bits 2-3.
+  const u32 off = capture_pos_ * 2;
+  const bool irq_ok = (ram_control_ & 0xC) != 0;
+  const u16 values[4] = {static_cast<u16>(cd.left), static_cast<u16>(cd.right), static_cast<u16>(voice1),
+                         static_cast<u16>(voice3)};
+  for (u32 b = 0; b < 4; ++b) {
+    const u32 addr = b * 0x400 + off;
+    if (irq_ok) check_irq(addr);
+    ram_[addr] = static_cast<u8>(values[b]);
+    ram_[addr + 1] = static_cast<u8>(values[b] >> 8);
+  }
+  capture_pos_ = (capture_pos_ + 1) & 0x1FF;
+}
+
+void Spu::generate_sample() {
+  apply_key_events();
+  s32 left = 0, right = 0, reverb_left = 0, reverb_right = 0;
+  const bool enabled = (attr_ & kAttrEnable) != 0;
+  if (enabled) {
+    for (u32 i = 0; i < kNumVoices; ++i) sample_voice(i, left, right, reverb_left, reverb_right);
+    noise_.tick(attr_);
+  }
+  // "Mute SPU" silences the voices; CD audio does not care.
+  if (!(attr_ & kAttrUnmute)) left = right = 0;
+
+  const StereoSample cd = cd_audio_.pop();
+  write_capture_buffers(cd, voices_[1].output, voices_[3].output);
+  if (attr_ & kAttrCdEnable) {
+    const s32 cd_left = apply_volume(cd.left, cd_volume_left_);
+    const s32 cd_right = apply_volume(cd.right, cd_volume_right_);
+    left += cd_left;
+    right += cd_right;
+    if (attr_ & kAttrCdReverb) {
+      reverb_left += cd_left;
+      reverb_right += cd_right;
+    }
+  }
+
+  spu::Reverb::IrqWatch watch{(attr_ & (kAttrIrqEnable | kAttrEnable)) == (kAttrIrqEnable | kAttrEnable),
+                              irq_address_, false};
+  const StereoSample wet =
+      reverb_.tick(reverb_left, reverb_right, ram_.data(), (attr_ & kAttrReverbEnable) != 0, watch);
+  if (watch.hit) raise_irq();
+  left += apply_volume(wet.left, reverb_volume_left_);
+  right += apply_volume(wet.right, reverb_volume_right_);
+
+  StereoSample out;
+  out.left = static_cast<s16>(clamp16(apply_volume(clamp16(left), main_left_.level())));
+  out.right = static_cast<s16>(clamp16(apply_volume(clamp16(right), main_right_.level())));
+  main_left_.tick();
+  main_right_.tick();
+  if (output_.size() >= output_limit_) output_.erase(output_.begin(), output_.begin() + output_.size() / 2);
+  output_.push_back(out);
+  capture_.push(out);
+}
+
+void Spu::do_state(StateIO& s) {
+  s.section("SPU ", 1);
+  s.bytes(ram_.data(), ram_.size());
+  for (spu::Voice& v : voices_) v.do_state(s);
+  reverb_.do_state(s);
+  noise_.do_state(s);
+  main_left_.do_state(s);
+  main_right_.do_state(s);
+  s.pod(cd_volume_left_);
+  s.pod(cd_volume_right_);
+  s.pod(ext_volume_left_);
+  s.pod(ext_volume_right_);
+  s.pod(reverb_volume_left_);
+  s.pod(reverb_volume_right_);
+  s.pod(key_on_);
+  s.pod(key_off_);
+  s.pod(pitch_mod_);
+  s.pod(noise_on_);
+  s.pod(reverb_on_);
+  s.pod(endx_);
+  s.pod(attr_);
+  s.boolean(irq_flag_);
+  s.pod(irq_address_);
+  s.pod(transfer_start_);
+  s.pod(transfer_addr_);
+  s.pod(ram_control_);
+  s.pod(fifo_);
+  s.pod(fifo_count_);
+  s.pod(capture_pos_);
+  s.pod(raw_);
+  if (s.loading() && (fifo_count_ > kFifoSize || capture_pos_ > 0x1FF || transfer_addr_ >= kRamSize))
+    s.fail("SPU transfer state out of range");
+}
+
+}  // namespace psx

@@ -1,0 +1,76 @@
+// SPU voice playback: ADPCM block fetching with loop flags, pitch counter, interpolation
+// (psx-spx "SPU ADPCM Samples", "SPU ADPCM Pitch", "4-Point Gaussian Interpolation").
+#include "spu/voice.h"
+
+#include <algorithm>
+
+#include "spu/gauss.h"
+
+namespace psx::spu {
+
+void Voice::key_on() {
+  current_address_ = start_address & ~1u;  // blocks are 16 bytes
+  counter_ = 0;
+  has_block_ = false;
+  ignore_loop_start_ = false;
+  history_ = {};
+  // The interpolation must not reach back into the previous sound.
+  std::fill(samples_.begin(), samples_.end(), 0);
+  adsr.key_on();
+}
+
+void Voice::write_repeat_address(u16 value) {
+  repeat_address = value;
+  if (adsr.phase() != Adsr::Phase::Off) ignore_loop_start_ = true;
+}
+
+void Voice::fetch_block(const u8* ram) {
+  if (has_block_) return;
+  const u8* block = ram + ((current_address_ * 8u) & 0x7FFFF);
+  decode_adpcm_block(block, history_, &samples_[3]);
+  block_flags_ = block[1];
+  has_block_ = true;
+  if ((block_flags_ & kAdpcmLoopStart) && !ignore_loop_start_) repeat_address = current_address_;
+}
+
+s32 Voice::interpolate() const {
+  const u32 s = counter_ >> 12;
+  const u32 i = (counter_ >> 4) & 0xFF;
+  return gauss_interpolate(samples_[s], samples_[s + 1], samples_[s + 2], samples_[s + 3], i);
+}
+
+Voice::BlockEvent Voice::advance(u32 step, bool noise) {
+  counter_ += step;
+  if ((counter_ >> 12) < kAdpcmBlockSamples) return BlockEvent::None;
+  counter_ -= kAdpcmBlockSamples << 12;
+  // Keep the last three samples for interpolation across the block boundary.
+  std::copy(samples_.end() - 3, samples_.end(), samples_.begin());
+  has_block_ = false;
+  if (!(block_flags_ & kAdpcmLoopEnd)) {
+    current_address_ += 2;
+    return BlockEvent::NextBlock;
+  }
+  current_address_ = repeat_address & ~1u;
+  if (!(block_flags_ & kAdpcmLoopRepeat) && !noise) adsr.force_off();
+  return BlockEvent::LoopEnd;
+}
+
+void Voice::do_state(StateIO& s) {
+  volume_left.do_state(s);
+  volume_right.do_state(s);
+  s.pod(pitch);
+  s.pod(start_address);
+  adsr.do_state(s);
+  s.pod(repeat_address);
+  s.pod(output);
+  s.pod(current_address_);
+  s.pod(counter_);
+  s.boolean(has_block_);
+  s.boolean(ignore_loop_start_);
+  s.pod(block_flags_);
+  s.pod(history_);
+  s.pod(samples_);
+  if (s.loading() && (counter_ >> 12) >= kAdpcmBlockSamples) s.fail("voice pitch counter out of range");
+}
+
+}  // namespace psx::spu

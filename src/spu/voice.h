@@ -1,0 +1,65 @@
+// One of the 24 SPU voices (psx-spx "SPU ADPCM Samples", "SPU ADPCM Pitch"): its registers
+// (volumes, pitch, start/repeat addresses, ADSR), the ADPCM block it is playing with the loop
+// flag behaviour, the pitch counter and the interpolation history.
+#pragma once
+#include <array>
+
+#include "core/state.h"
+#include "core/types.h"
+#include "spu/adpcm.h"
+#include "spu/envelope.h"
+
+namespace psx::spu {
+
+class Voice {
+ public:
+  // What happened when the pitch counter moved on.
+  enum class BlockEvent : u8 { None, NextBlock, LoopEnd };
+
+  // Registers at 1F801C00h + 10h*N.
+  VolumeSweep volume_left;   // +0 VOLL
+  VolumeSweep volume_right;  // +2 VOLR
+  u16 pitch = 0;             // +4 PITCH (1000h = 44.1 kHz)
+  u16 start_address = 0;     // +6 SSA, in 8-byte units
+  Adsr adsr;                 // +8/+A ADSR1/ADSR2, +C ENVX
+  u16 repeat_address = 0;    // +E LSAX, in 8-byte units
+
+  // Key on: restart at SSA with an empty history and the envelope in Attack.
+  void key_on();
+  void key_off() { adsr.key_off(); }
+  // A write to LSAX while the voice plays wins over the next LoopStart flag (psx-spx LSAX:
+  // writing it redirects a playing sample; the flag must not overwrite that choice).
+  void write_repeat_address(u16 value);
+
+  // Loads and decodes the block at the current address if not loaded yet; a LoopStart flag
+  // copies the current address into LSAX.
+  void fetch_block(const u8* ram);
+  // The interpolated sample at the pitch counter (call after fetch_block).
+  s32 interpolate() const;
+  // Adds the (already modulated and clipped) step to the pitch counter. Leaving the block
+  // either moves to the next one or, with LoopEnd, jumps to LSAX; End without Repeat silences
+  // the voice unless it plays noise (the ADPCM flags still advance then).
+  BlockEvent advance(u32 step, bool noise);
+
+  u16 current_address() const { return current_address_; }
+  // Byte address of the halfword holding the current sample (for the IRQ address check).
+  u32 data_address() const { return current_address_ * 8u + 2 + ((counter_ >> 12) / 4) * 2; }
+
+  // Sample after the envelope (OUTX): feeds pitch modulation of the next voice and, for voices
+  // 1 and 3, the capture buffers.
+  s16 output = 0;
+
+  void do_state(StateIO& s);
+
+ private:
+  u16 current_address_ = 0;
+  u32 counter_ = 0;  // bits 12+: sample in block, bits 4-11: interpolation index
+  bool has_block_ = false;
+  bool ignore_loop_start_ = false;
+  u8 block_flags_ = 0;
+  AdpcmHistory history_;
+  // Three samples from the previous block, then the 28 of the current block.
+  std::array<s16, 3 + kAdpcmBlockSamples> samples_{};
+};
+
+}  // namespace psx::spu

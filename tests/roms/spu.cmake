@@ -1,0 +1,2 @@
+# SPU test programs.
+psx_add_rom_test(spu_voices SOURCES spu_voices.c)

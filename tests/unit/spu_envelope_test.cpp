@@ -1,0 +1,188 @@
+// ADSR envelope and volume sweep values at chosen sample counts, worked by hand from psx-spx
+// "Envelope Operation depending on Shift/Step/Mode/Direction": step = (7 - StepValue), negated
+// (NOT) when decreasing, shifted left by max(0, 11 - shift); the step applies every
+// 1 << max(0, shift - 11) samples; exponential decrease scales the step by level/8000h;
+// exponential increase above 6000h slows down.
+#include <gtest/gtest.h>
+
+#include "spu/envelope.h"
+#include "spu/noise.h"
+
+using namespace psx;
+using namespace psx::spu;
+
+namespace {
+// ADSR1 (low half) and ADSR2 (high half) fields, psx-spx bit positions.
+u32 adsr(u32 attack_exp, u32 attack_shift, u32 attack_step, u32 decay_shift, u32 sustain_level, u32 sustain_exp,
+         u32 sustain_dec, u32 sustain_shift, u32 sustain_step, u32 release_exp, u32 release_shift) {
+  u32 lo = attack_exp << 15 | attack_shift << 10 | attack_step << 8 | decay_shift << 4 | sustain_level;
+  u32 hi = sustain_exp << 15 | sustain_dec << 14 | sustain_shift << 8 | sustain_step << 6 | release_exp << 5 |
+           release_shift;
+  return lo | hi << 16;
+}
+void ticks(Adsr& a, int n) {
+  for (int i = 0; i < n; ++i) a.tick();
+}
+}  // namespace
+
+TEST(SpuEnvelope, FastLinearAttackThenExponentialDecayToSustain) {
+  Adsr a;
+  // Attack shift 0 step 0: +7 << 11 = +14336 every sample. Decay shift 0: -8 << 11 = -16384
+  // scaled by level/32768. Sustain level 3: (3+1)*800h = 8192.
+  a.set_register(adsr(0, 0, 0, 0, 3, 0, 0, 31, 3, 0, 0));
+  a.key_on();
+  EXPECT_EQ(a.level(), 0);
+  a.tick();
+  EXPECT_EQ(a.level(), 14336);
+  a.tick();
+  EXPECT_EQ(a.level(), 28672);
+  a.tick();
+  EXPECT_EQ(a.level(), 32767);  // 43008 saturates at 7FFFh, attack ends
+  EXPECT_EQ(a.phase(), Adsr::Phase::Decay);
+  a.tick();
+  EXPECT_EQ(a.level(), 16383);  // 32767 + (-16384*32767 >> 15) = 32767 - 16384
+  a.tick();
+  EXPECT_EQ(a.level(), 8191);  // 16383 + (-16384*16383 >> 15) = 16383 - 8192
+  EXPECT_EQ(a.phase(), Adsr::Phase::Sustain);  // 8191 <= 8192
+  ticks(a, 100000);  // sustain shift 31 step 3 is the all-ones rate: it never steps
+  EXPECT_EQ(a.level(), 8191);
+}
+
+TEST(SpuEnvelope, SlowAttackStepsEveryFewSamples) {
+  Adsr a;
+  // Attack shift 12, step 1: +6 every 1 << (12-11) = 2 samples.
+  a.set_register(adsr(0, 12, 1, 0, 15, 0, 0, 0, 0, 0, 0));
+  a.key_on();
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 0);
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 6);
+  ticks(a, 98);
+  EXPECT_EQ(a.level(), 300);  // 100 samples = 50 steps of 6
+  // Shift 15: one step of +6 every 16 samples.
+  a.set_register(adsr(0, 15, 1, 0, 15, 0, 0, 0, 0, 0, 0));
+  a.key_on();
+  ticks(a, 15);
+  EXPECT_EQ(a.level(), 0);
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 6);
+}
+
+TEST(SpuEnvelope, ExponentialAttackSlowsAbove6000h) {
+  Adsr a;
+  // Attack shift 8, step 0: +7 << 3 = +56 per sample; exponential: above 6000h (24576) the
+  // step is divided by 4 (shift < 10) = +14.
+  a.set_register(adsr(1, 8, 0, 0, 15, 0, 0, 0, 0, 0, 0));
+  a.key_on();
+  ticks(a, 439);
+  EXPECT_EQ(a.level(), 439 * 56);  // 24584: just over 6000h
+  a.tick();
+  EXPECT_EQ(a.level(), 24584 + 14);
+}
+
+TEST(SpuEnvelope, LinearReleaseAndOff) {
+  Adsr a;
+  // Release shift 13: -8 every 1 << 2 = 4 samples.
+  a.set_register(adsr(0, 0, 0, 0, 15, 0, 0, 31, 3, 0, 13));
+  a.key_on();
+  ticks(a, 3);
+  ASSERT_EQ(a.level(), 32767);
+  a.key_off();
+  EXPECT_EQ(a.phase(), Adsr::Phase::Release);
+  ticks(a, 3);
+  EXPECT_EQ(a.level(), 32767);
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 32759);
+  ticks(a, 400);
+  EXPECT_EQ(a.level(), 32759 - 800);  // 100 more steps
+  // Release shift 0 linear: -16384 per sample: 32767 -> 16383 -> 0 and off.
+  a.set_register(adsr(0, 0, 0, 0, 15, 0, 0, 31, 3, 0, 0));
+  a.key_on();
+  ticks(a, 3);
+  a.key_off();
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 16383);
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 0);
+  EXPECT_EQ(a.phase(), Adsr::Phase::Off);
+}
+
+TEST(SpuEnvelope, ExponentialReleaseHalvesAtShiftZero) {
+  Adsr a;
+  a.set_register(adsr(0, 0, 0, 0, 15, 0, 0, 31, 3, 1, 0));
+  a.key_on();
+  ticks(a, 3);
+  a.key_off();
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 16383);  // 32767 + (-16384*32767 >> 15)
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 8191);  // 16383 + (-16384*16383 >> 15)
+  ticks(a, 1);
+  EXPECT_EQ(a.level(), 4095);
+}
+
+TEST(SpuEnvelope, SlowestRatesWait32768Samples) {
+  // Sustain increase, shift 26 step 2 (rate 6Ah): +5 once every 8000h samples. psx-spx: rate
+  // 76h (shift 29 step 2) behaves the same.
+  for (u32 shift : {26u, 29u}) {
+    u32 counter = 0;
+    EnvelopeParams p{static_cast<u8>(shift << 2 | 2), 0x7F, false, false, false};
+    s16 level = 1000;
+    for (int i = 0; i < 32767; ++i) level = envelope_tick(counter, level, p);
+    EXPECT_EQ(level, 1000) << shift;
+    level = envelope_tick(counter, level, p);
+    EXPECT_EQ(level, 1005) << shift;
+  }
+}
+
+TEST(SpuEnvelope, VolumeSweeps) {
+  VolumeSweep v;
+  // Fixed volume 2000h is volume/2: level 4000h, latched on the next tick.
+  v.write(0x2000);
+  EXPECT_EQ(v.level(), 0);
+  v.tick();
+  EXPECT_EQ(v.level(), 0x4000);
+  // Linear increase, shift 0 step 0: +14336 per sample up to 7FFFh.
+  v.write(0x8000);
+  v.tick();
+  EXPECT_EQ(v.level(), 0x4000 + 14336);
+  v.tick();
+  EXPECT_EQ(v.level(), 32767);
+  // Linear decrease (bit 13), shift 11 step 3: -5 per sample, floored at 0.
+  v.write(0x8000 | 1 << 13 | 11 << 2 | 3);
+  v.tick();
+  EXPECT_EQ(v.level(), 32762);
+  // Decrease with negative phase (bit 12): "decreasing XOR phase" is false, so the step is +7
+  // (shift 11 step 0), and the level is clamped to -8000h..0.
+  v.set_level(-100);
+  v.write(0x8000 | 1 << 13 | 1 << 12 | 11 << 2 | 0);
+  v.tick();
+  EXPECT_EQ(v.level(), -93);
+  for (int i = 0; i < 20; ++i) v.tick();
+  EXPECT_EQ(v.level(), 0);
+}
+
+TEST(SpuNoise, ShiftRegisterSequence) {
+  // Shift 15, step 3 (step 7): timer -7 each sample, reload +4 (20000h >> 15) up to twice, so
+  // the register shifts every sample; parity of bits 15,12,11,10 XOR 1 enters at bit 0.
+  NoiseGenerator n;
+  const u16 attr = 15 << 10 | 3 << 8;
+  u32 expect = 0;
+  for (int i = 1; i <= 11; ++i) {
+    n.tick(attr);
+    expect = (expect << 1) | 1;  // bits 10..15 still clear: parity 1
+    EXPECT_EQ(static_cast<u16>(n.level()), expect) << i;
+  }
+  n.tick(attr);  // 7FFh has bit 10 set: parity 0
+  EXPECT_EQ(static_cast<u16>(n.level()), 0xFFEu);
+
+  // Shift 0, step 0 (step 4): first sample shifts (timer -4) and reloads 20000h; the next
+  // shift comes when 4*(k-1) > 131068, at sample 32769.
+  NoiseGenerator slow;
+  slow.tick(0);
+  EXPECT_EQ(slow.level(), 1);
+  for (int k = 2; k <= 32768; ++k) slow.tick(0);
+  EXPECT_EQ(slow.level(), 1);
+  slow.tick(0);
+  EXPECT_EQ(slow.level(), 3);
+}

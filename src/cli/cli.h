@@ -1,0 +1,19 @@
+// Shared pieces of the psxrl command line: exit codes and the subcommand entry points.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace psxrl::cli {
+
+// Exit codes of `psxrl` (DESIGN.md "Exit codes"); a program run by `psxrl run` may also exit with
+// its own code through the debug port.
+enum ExitCode : int {
+  kSuccess = 0,
+  kUsage = 1,
+  kBadInput = 2,
+  kProgramFailed = 3,
+};
+
+int run_command(const std::vector<std::string>& args);
+
+}  // namespace psxrl::cli

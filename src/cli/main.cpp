@@ -1,0 +1,36 @@
+// psxrl: the command-line front door. Dispatches to the subcommands.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/cli.h"
+
+namespace {
+
+const char* kHelp =
+    "usage: psxrl <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  run     run PlayStation software headless (see psxrl run --help)\n"
+    "\n"
+    "exit codes:\n"
+    "  0  success\n"
+    "  1  usage error\n"
+    "  2  bad input file (disc, cue, EXE, BIOS, save state, memory card, manifest, script)\n"
+    "  3  the emulated program failed or timed out\n"
+    "  psxrl run also exits with the code a program writes to the debug port 0x1F802082\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::fputs(kHelp, args.empty() ? stderr : stdout);
+    return args.empty() ? psxrl::cli::kUsage : psxrl::cli::kSuccess;
+  }
+  std::string cmd = args[0];
+  args.erase(args.begin());
+  if (cmd == "run") return psxrl::cli::run_command(args);
+  std::fprintf(stderr, "psxrl: unknown command '%s'\n\n%s", cmd.c_str(), kHelp);
+  return psxrl::cli::kUsage;
+}

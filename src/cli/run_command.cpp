@@ -1,0 +1,120 @@
+// `psxrl run`: boots a PS-X EXE (with a BIOS or the HLE kernel) headless, prints the program's TTY
+// output, and exits with the program's exit code or when the frame/cycle limit is reached.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "cli/cli.h"
+#include "core/console.h"
+#include "core/input_error.h"
+
+namespace psxrl::cli {
+
+namespace {
+
+const char* kRunHelp =
+    "usage: psxrl run --exe FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
+    "\n"
+    "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
+    "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
+    "\n"
+    "options:\n"
+    "  --exe FILE       PS-X EXE to run\n"
+    "  --bios FILE      BIOS image (exactly 512 KiB); without it the HLE kernel is used\n"
+    "  --frames N       stop after N frames (default 3600)\n"
+    "  --cycles N       stop after N CPU cycles (instead of --frames)\n"
+    "  --expect-exit    reaching the limit is a failure (exit 3): the program must exit itself\n"
+    "  --quiet          no summary or diagnostics on standard error\n"
+    "\n"
+    "exit codes:\n"
+    "  the program's own exit code (written to 0x1F802082; values above 255 exit as 255)\n"
+    "  0  the limit was reached (without --expect-exit)\n"
+    "  1  usage error\n"
+    "  2  bad input file\n"
+    "  3  the program failed (fatal guest error) or timed out under --expect-exit\n";
+
+int usage(const std::string& msg) {
+  std::fprintf(stderr, "psxrl run: %s\n\n%s", msg.c_str(), kRunHelp);
+  return kUsage;
+}
+
+bool parse_count(const std::string& s, unsigned long long& out) {
+  if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos) return false;
+  try {
+    out = std::stoull(s);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int run_command(const std::vector<std::string>& args) {
+  std::string exe, bios;
+  unsigned long long frames = 3600, cycles = 0;
+  bool expect_exit = false, quiet = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= args.size()) return false;
+      out = args[++i];
+      return true;
+    };
+    std::string v;
+    if (a == "--help" || a == "-h") {
+      std::fputs(kRunHelp, stdout);
+      return kSuccess;
+    } else if (a == "--exe") {
+      if (!value(exe)) return usage("--exe needs a file");
+    } else if (a == "--bios") {
+      if (!value(bios)) return usage("--bios needs a file");
+    } else if (a == "--frames") {
+      if (!value(v) || !parse_count(v, frames)) return usage("--frames needs a whole number");
+    } else if (a == "--cycles") {
+      if (!value(v) || !parse_count(v, cycles) || cycles == 0) return usage("--cycles needs a positive whole number");
+    } else if (a == "--expect-exit") {
+      expect_exit = true;
+    } else if (a == "--quiet") {
+      quiet = true;
+    } else {
+      return usage("unknown option '" + a + "'");
+    }
+  }
+  if (exe.empty()) return usage("--exe is required");
+
+  psx::Console console;
+  console.on_tty = [](char c) { std::fputc(c, stdout); };
+  console.on_log = [quiet](const std::string& m) {
+    if (!quiet) std::fprintf(stderr, "psxrl: %s\n", m.c_str());
+  };
+  try {
+    if (!bios.empty()) console.load_bios(bios);
+    console.boot_exe(exe);
+  } catch (const psx::InputError& e) {
+    std::fprintf(stderr, "psxrl run: %s\n", e.what());
+    return kBadInput;
+  }
+
+  if (cycles) console.run_cycles(cycles);
+  else console.run_frames(frames);
+  std::fflush(stdout);
+
+  if (!console.fatal_error().empty()) {
+    std::fprintf(stderr, "psxrl run: %s\n", console.fatal_error().c_str());
+    return kProgramFailed;
+  }
+  if (auto code = console.exit_code()) {
+    if (!quiet) std::fprintf(stderr, "psxrl run: program exited with code %u\n", *code);
+    return *code > 255 ? 255 : static_cast<int>(*code);
+  }
+  if (expect_exit) {
+    std::fprintf(stderr, "psxrl run: timed out after %llu cycles without the program exiting\n",
+                 static_cast<unsigned long long>(console.cycles()));
+    return kProgramFailed;
+  }
+  return kSuccess;
+}
+
+}  // namespace psxrl::cli

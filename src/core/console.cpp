@@ -1,0 +1,144 @@
+// Console: wiring of the hardware blocks, boot paths and the synchronous run loop.
+#include "core/console.h"
+
+#include <cstring>
+
+#include "core/input_error.h"
+
+namespace psx {
+
+Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_) {
+  frame_event_ = sched_.add_event("frame", [this](Cycles late) {
+    frame_done_ = true;
+    ++frames_;
+    sched_.schedule(frame_event_, kFrameCycles - late);
+    cpu_.stop();
+  });
+  limit_event_ = sched_.add_event("run-limit", [this](Cycles) {
+    limit_reached_ = true;
+    cpu_.stop();
+  });
+  sched_.schedule(frame_event_, kFrameCycles);
+
+  bus_.on_tty = [this](char c) {
+    if (on_tty) on_tty(c);
+  };
+  bus_.on_exit_request = [this](u32 code) {
+    exit_code_ = code;
+    cpu_.stop();
+  };
+  bus_.on_log = [this](const std::string& m) { log(m); };
+  hle_.on_tty = bus_.on_tty;
+  hle_.on_log = bus_.on_log;
+  hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
+  cpu_.reset();
+}
+
+Console::~Console() = default;
+
+void Console::load_bios(const std::string& path) { load_bios_image(read_file(path), path); }
+
+void Console::load_bios_image(const std::vector<u8>& image, const std::string& name) {
+  if (image.size() != Bus::kBiosSize)
+    throw InputError::whole(name, "a BIOS image must be exactly 524288 bytes (512 KiB), this file has " +
+                                      std::to_string(image.size()));
+  bus_.load_bios(image);
+  cpu_.reset();
+}
+
+void Console::boot_bios() {
+  hle_mode_ = false;
+  cpu_.reset();
+  cpu_.set_hooks(this, kShellEntry);
+}
+
+void Console::boot_exe(const std::string& path) { boot_exe_image(read_file(path), path); }
+
+void Console::boot_exe_image(const std::vector<u8>& file, const std::string& name) {
+  PsxExe exe = PsxExe::parse(file, name);
+  if (bus_.has_bios()) {
+    boot_bios();
+    pending_exe_ = std::move(exe);
+    return;
+  }
+  hle_mode_ = true;
+  hle_.install();
+  cpu_.set_hooks(this, 0x80000080);
+  side_load(exe);
+}
+
+void Console::side_load(const PsxExe& exe) {
+  // What the BIOS's Exec() does: copy the text, clear the BSS, set PC/GP/SP/FP.
+  for (u32 i = 0; i < exe.text.size(); ++i)
+    bus_.ram()[(Bus::physical(exe.text_addr) + i) & (Bus::kRamSize - 1)] = exe.text[i];
+  for (u32 i = 0; i < exe.bss_size; ++i) bus_.ram()[(Bus::physical(exe.bss_addr) + i) & (Bus::kRamSize - 1)] = 0;
+  u32 sp = exe.stack_base ? exe.stack_base + exe.stack_offset : PsxExe::kDefaultStack;
+  cpu_.set_reg(28, exe.gp);
+  cpu_.set_reg(29, sp);
+  cpu_.set_reg(30, sp);
+  cpu_.set_pc(exe.pc);
+}
+
+void Console::on_reach(u32 pc) {
+  u32 p = Bus::physical(pc);
+  if (hle_mode_) {
+    hle_.handle(pc);
+    return;
+  }
+  // A real BIOS runs; print its putchar calls and let it continue.
+  if (p == 0xA0 && (cpu_.reg(9) & 0xFF) == 0x3C && on_tty) on_tty(static_cast<char>(cpu_.reg(4)));
+  if (p == 0xB0 && (cpu_.reg(9) & 0xFF) == 0x3D && on_tty) on_tty(static_cast<char>(cpu_.reg(4)));
+  if (pc == kShellEntry && pending_exe_) {
+    PsxExe exe = std::move(*pending_exe_);
+    pending_exe_.reset();
+    side_load(exe);
+  }
+}
+
+void Console::run_frame() {
+  frame_done_ = false;
+  while (!frame_done_ && !stopped()) {
+    cpu_.run();
+    sched_.run_due_events();
+  }
+}
+
+void Console::run_frames(u64 n) {
+  for (u64 i = 0; i < n && !stopped(); ++i) run_frame();
+}
+
+void Console::run_cycles(Cycles n) {
+  limit_reached_ = false;
+  sched_.schedule(limit_event_, n);
+  while (!limit_reached_ && !stopped()) {
+    cpu_.run();
+    sched_.run_due_events();
+  }
+  sched_.cancel(limit_event_);
+}
+
+void Console::do_state(StateIO& s) {
+  s.section("CONS", 1);
+  s.pod(frames_);
+  s.boolean(hle_mode_);
+  bool has_pending = pending_exe_.has_value();
+  s.boolean(has_pending);
+  if (has_pending) {
+    if (s.loading()) pending_exe_.emplace();
+    PsxExe& e = *pending_exe_;
+    s.pod(e.pc), s.pod(e.gp), s.pod(e.text_addr), s.pod(e.text_size), s.pod(e.bss_addr), s.pod(e.bss_size);
+    s.pod(e.stack_base), s.pod(e.stack_offset);
+    s.vec(e.text, Bus::kRamSize);
+  } else if (s.loading()) {
+    pending_exe_.reset();
+  }
+  sched_.do_state(s);
+  irq_.do_state(s);
+  bus_.do_state(s);
+  cpu_.do_state(s);
+  gte_.do_state(s);
+  hle_.do_state(s);
+  if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
+}
+
+}  // namespace psx

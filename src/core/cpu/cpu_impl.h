@@ -1,0 +1,231 @@
+// R3000A instruction semantics (psx-spx "CPU Specifications"), included by the translation units
+// that instantiate CpuT: cpu.cpp for the console's Bus, and the CPU unit tests for a test bus.
+#pragma once
+#include "core/cpu/cpu.h"
+
+namespace psx {
+
+namespace cpu_detail {
+inline u32 op(u32 i) { return i >> 26; }
+inline u32 rs(u32 i) { return (i >> 21) & 31; }
+inline u32 rt(u32 i) { return (i >> 16) & 31; }
+inline u32 rd(u32 i) { return (i >> 11) & 31; }
+inline u32 shamt(u32 i) { return (i >> 6) & 31; }
+inline u32 funct(u32 i) { return i & 63; }
+inline u32 imm(u32 i) { return i & 0xFFFF; }
+inline u32 simm(u32 i) { return static_cast<u32>(static_cast<s32>(static_cast<s16>(i & 0xFFFF))); }
+}  // namespace cpu_detail
+
+template <class BusT>
+void CpuT<BusT>::reset() {
+  regs_ = {};
+  hi_ = lo_ = 0;
+  cop0_ = Cop0{};
+  cop0_.sr = Cop0::kBEV;  // boot vectors in ROM, caches not isolated, kernel mode
+  set_pc(kResetVector);
+}
+
+template <class BusT>
+void CpuT<BusT>::set_pc(u32 pc) {
+  pc_ = pc;
+  next_pc_ = pc + 4;
+  next_in_delay_ = false;
+  // A load still in flight lands now rather than being lost.
+  regs_[load_reg_] = load_val_;
+  regs_[0] = 0;
+  load_reg_ = new_load_reg_ = 0;
+  hook_armed_ = false;
+  arm_hook(pc);
+}
+
+template <class BusT>
+void CpuT<BusT>::run() {
+  stop_ = false;
+  while (!stop_ && sched_.now() < sched_.next_deadline()) step();
+}
+
+template <class BusT>
+bool CpuT<BusT>::interrupt_pending() const {
+  // Cause.IP2 follows (I_STAT & I_MASK) directly; IP0/IP1 are the software interrupt bits.
+  if (!(cop0_.sr & Cop0::kIEc)) return false;
+  u32 ip = (cop0_.cause & 0x300) | (irq_.pending() ? Cop0::kIP2 : 0);
+  return (ip & cop0_.sr & 0xFF00) != 0;
+}
+
+template <class BusT>
+void CpuT<BusT>::step() {
+  if (hook_armed_) {
+    if (pc_ == hook_pc_ && !next_in_delay_) {
+      hook_armed_ = false;
+      u32 before = pc_;
+      hooks_->on_reach(pc_);
+      if (pc_ != before) return;  // the hook redirected the CPU (an HLE call returned)
+    } else if (!next_in_delay_) {
+      hook_armed_ = false;
+    }
+  }
+  if (interrupt_pending()) {
+    take_interrupt();
+    return;
+  }
+  current_pc_ = pc_;
+  in_delay_slot_ = next_in_delay_;
+  next_in_delay_ = false;
+  ++instructions_;
+  sched_.advance(1);
+
+  u32 instr;
+  if (pc_ & 3) {
+    cop0_.badvaddr = pc_;
+    exception(Exception::AddressLoad);
+  } else if (!bus_.fetch(pc_, instr)) {
+    exception(Exception::BusFetch);
+  } else {
+    pc_ = next_pc_;
+    next_pc_ += 4;
+    execute(instr);
+  }
+  // The load issued by the previous instruction lands now; this instruction's load is pending.
+  regs_[load_reg_] = load_val_;
+  regs_[0] = 0;
+  load_reg_ = new_load_reg_;
+  load_val_ = new_load_val_;
+  new_load_reg_ = 0;
+}
+
+template <class BusT>
+void CpuT<BusT>::take_interrupt() {
+  // A GTE command at the interrupted address is executed by the hardware anyway; the BIOS
+  // handler knows this and resumes after it (psx-spx "COP0 - Interrupt Handling").
+  u32 next;
+  if (!next_in_delay_ && (pc_ & 3) == 0 && bus_.fetch(pc_, next) && (next >> 25) == 0x25 &&
+      (cop0_.sr & Cop0::kCU2)) {
+    wait_gte();
+    gte_ready_at_ = sched_.now() + gte_.execute(next & 0x1FFFFFF);
+  }
+  current_pc_ = pc_;
+  in_delay_slot_ = next_in_delay_;
+  next_in_delay_ = false;
+  exception(Exception::Interrupt);
+}
+
+template <class BusT>
+void CpuT<BusT>::exception(Exception code, u32 coprocessor) {
+  cop0_.cause = (cop0_.cause & ~(Cop0::kBD | 0x3000007Cu)) | (static_cast<u32>(code) << 2) | (coprocessor << 28);
+  if (in_delay_slot_) {
+    cop0_.cause |= Cop0::kBD;
+    cop0_.epc = current_pc_ - 4;
+    cop0_.jumpdest = pc_;
+  } else {
+    cop0_.epc = current_pc_;
+  }
+  // Push the KU/IE stack: current -> previous -> old, then kernel mode with interrupts off.
+  cop0_.sr = (cop0_.sr & ~0x3Fu) | ((cop0_.sr << 2) & 0x3F);
+  u32 vector = (cop0_.sr & Cop0::kBEV) ? 0xBFC00180 : 0x80000080;
+  pc_ = vector;
+  next_pc_ = vector + 4;
+  next_in_delay_ = false;
+  in_delay_slot_ = false;
+  new_load_reg_ = 0;
+  arm_hook(vector);
+}
+
+template <class BusT>
+void CpuT<BusT>::wait_muldiv() {
+  if (sched_.now() < muldiv_ready_at_) sched_.advance(muldiv_ready_at_ - sched_.now());
+}
+
+template <class BusT>
+void CpuT<BusT>::wait_gte() {
+  if (sched_.now() < gte_ready_at_) sched_.advance(gte_ready_at_ - sched_.now());
+}
+
+template <class BusT>
+bool CpuT<BusT>::check_address(u32 addr, u32 align_mask, Exception code) {
+  // Misaligned, or a kernel-segment address while in user mode.
+  if ((addr & align_mask) || ((cop0_.sr & Cop0::kKUc) && (addr & 0x80000000))) {
+    cop0_.badvaddr = addr;
+    exception(code);
+    return false;
+  }
+  return true;
+}
+
+template <class BusT>
+void CpuT<BusT>::load(u32 instr, u32 width, bool sign) {
+  using namespace cpu_detail;
+  u32 addr = regs_[rs(instr)] + simm(instr);
+  if (!check_address(addr, width - 1, Exception::AddressLoad)) return;
+  u32 v;
+  bool ok = width == 4 ? bus_.read32(addr, v) : width == 2 ? bus_.read16(addr, v) : bus_.read8(addr, v);
+  if (!ok) {
+    exception(Exception::BusData);
+    return;
+  }
+  if (sign) v = width == 2 ? u32(s32(s16(v))) : u32(s32(s8(v)));
+  delayed_load(rt(instr), v);
+}
+
+template <class BusT>
+void CpuT<BusT>::load_unaligned(u32 instr, bool left) {
+  using namespace cpu_detail;
+  u32 addr = regs_[rs(instr)] + simm(instr);
+  if ((cop0_.sr & Cop0::kKUc) && (addr & 0x80000000)) {
+    cop0_.badvaddr = addr;
+    exception(Exception::AddressLoad);
+    return;
+  }
+  u32 word;
+  if (!bus_.read32(addr & ~3u, word)) {
+    exception(Exception::BusData);
+    return;
+  }
+  // LWL/LWR merge with the register's in-flight load value, not the stale register.
+  u32 t = rt(instr);
+  u32 cur = load_reg_ == t ? load_val_ : regs_[t];
+  u32 sh = (addr & 3) * 8;
+  u32 v = left ? (cur & (0x00FFFFFFu >> sh)) | (word << (24 - sh))
+               : (cur & ~(0xFFFFFFFFu >> sh)) | (word >> sh);
+  delayed_load(t, v);
+}
+
+template <class BusT>
+void CpuT<BusT>::store(u32 instr, u32 width) {
+  using namespace cpu_detail;
+  u32 addr = regs_[rs(instr)] + simm(instr);
+  if (!check_address(addr, width - 1, Exception::AddressStore)) return;
+  if (cop0_.sr & Cop0::kIsC) return;  // cache isolated: the store only touches the cache
+  u32 v = regs_[rt(instr)];
+  bool ok = width == 4 ? bus_.write32(addr, v) : width == 2 ? bus_.write16(addr, v & 0xFFFF) : bus_.write8(addr, v & 0xFF);
+  if (!ok) exception(Exception::BusData);
+}
+
+template <class BusT>
+void CpuT<BusT>::store_unaligned(u32 instr, bool left) {
+  using namespace cpu_detail;
+  u32 addr = regs_[rs(instr)] + simm(instr);
+  if ((cop0_.sr & Cop0::kKUc) && (addr & 0x80000000)) {
+    cop0_.badvaddr = addr;
+    exception(Exception::AddressStore);
+    return;
+  }
+  if (cop0_.sr & Cop0::kIsC) return;
+  // SWL stores the register's top (offset+1) bytes into the word's bytes 0..offset; SWR stores
+  // its low (4-offset) bytes into bytes offset..3. The bus sees a write of just those bytes.
+  u32 v = regs_[rt(instr)];
+  u32 off = addr & 3, base = addr & ~3u;
+  u32 first = left ? 0 : off, last = left ? off : 3;
+  u32 shift = left ? 24 - 8 * off : 8 * off;  // register bits that land in byte `first`
+  u32 data = left ? v >> shift : v << shift;
+  bool ok = true;
+  if (first == 0 && last == 3) {
+    ok = bus_.write32(base, data);
+  } else {
+    for (u32 b = first; b <= last && ok; ++b) ok = bus_.write8(base + b, (data >> (8 * b)) & 0xFF);
+  }
+  if (!ok) exception(Exception::BusData);
+}
+
+}  // namespace psx
+
+#include "core/cpu/cpu_execute.h"

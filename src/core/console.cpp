@@ -31,6 +31,12 @@ Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cp
   hle_.on_tty = bus_.on_tty;
   hle_.on_log = bus_.on_log;
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
+
+  bus_.map_io(Dma::kBase, Dma::kSize, &dma_);
+  bus_.map_io(Timers::kBase, Timers::kSize, &timers_);
+  bus_.map_io(Mdec::kBase, Mdec::kSize, &mdec_);
+  dma_.connect(Dma::MdecIn, &mdec_.dma_in());
+  dma_.connect(Dma::MdecOut, &mdec_.dma_out());
   cpu_.reset();
 }
 
@@ -138,6 +144,9 @@ void Console::do_state(StateIO& s) {
   cpu_.do_state(s);
   gte_.do_state(s);
   hle_.do_state(s);
+  dma_.do_state(s);
+  timers_.do_state(s);
+  mdec_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
 }
 

@@ -13,10 +13,13 @@
 #include "core/bios/hle_bios.h"
 #include "core/bus.h"
 #include "core/cpu/cpu.h"
+#include "core/dma.h"
 #include "core/gte/gte.h"
 #include "core/irq.h"
+#include "core/mdec.h"
 #include "core/scheduler.h"
 #include "core/state.h"
+#include "core/timers.h"
 
 namespace psx {
 
@@ -83,6 +86,10 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   HleBios hle_;
+  // DMA, root counters, MDEC (issue 5).
+  Dma dma_{sched_, irq_, bus_};
+  Timers timers_{sched_, irq_};
+  Mdec mdec_;
 
   Scheduler::Handle frame_event_;
   Scheduler::Handle limit_event_;

@@ -142,7 +142,9 @@ void Dma::service() {
     budget -= std::min(moved, budget);
   }
   Cycles next = Scheduler::kNever;
-  if (budget == 0 && pick_channel() >= 0) next = sched_.now();
+  // A slice that used its whole budget continues one cycle later, so the scheduler's dispatch
+  // loop returns and other events (frame end, run limits) still get their turn.
+  if (budget == 0 && pick_channel() >= 0) next = sched_.now() + 1;
   for (u32 c = 0; c < kChannels; ++c) {
     const Channel& chan = channels_[c];
     if (!(chan.chcr & kChcrBusy) || !enabled(c)) continue;

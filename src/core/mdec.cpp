@@ -72,7 +72,7 @@ void Mdec::reset() {
   command_ = Command::None;
   command_word_ = 0;
   remaining_ = 0;
-  idle_low_ = 0xFFFF;
+  idle_low_ = 0;  // psx-spx: reset sets status 80040000h
   input_.clear();
   input_pos_ = 0;
   output_.clear();

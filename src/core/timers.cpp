@@ -180,7 +180,10 @@ void Timers::blank_start(u32 i) {
   Counter& c = counters_[i];
   if (!(c.mode & kGatf)) return;
   u32 sync = (c.mode >> 1) & 3;
-  if (sync == 1 || sync == 2) c.value = 0;
+  if (sync == 1 || sync == 2) {
+    c.value = 0;
+    c.hold = false;
+  }
   if (sync == 3) c.released = true;
 }
 

@@ -2,12 +2,14 @@
 // output, and exits with the program's exit code or when the frame/cycle limit is reached.
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cli/cli.h"
 #include "core/console.h"
 #include "core/input_error.h"
+#include "core/sio/dualshock.h"
 
 namespace psxrl::cli {
 
@@ -15,6 +17,7 @@ namespace {
 
 const char* kRunHelp =
     "usage: psxrl run --exe FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
+    "                 [--pad1 TYPE] [--pad2 TYPE] [--memcard1 FILE] [--memcard2 FILE]\n"
     "\n"
     "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
     "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
@@ -26,6 +29,10 @@ const char* kRunHelp =
     "  --cycles N       stop after N CPU cycles (instead of --frames)\n"
     "  --expect-exit    reaching the limit is a failure (exit 3): the program must exit itself\n"
     "  --quiet          no summary or diagnostics on standard error\n"
+    "  --pad1 TYPE      controller in port 1: digital (default), dualshock or none\n"
+    "  --pad2 TYPE      controller in port 2: none (default), digital or dualshock\n"
+    "  --memcard1 FILE  memory card in slot 1 (raw 128 KiB image; created on the first write)\n"
+    "  --memcard2 FILE  memory card in slot 2\n"
     "\n"
     "exit codes:\n"
     "  the program's own exit code (written to 0x1F802082; values above 255 exit as 255)\n"
@@ -49,12 +56,21 @@ bool parse_count(const std::string& s, unsigned long long& out) {
   return true;
 }
 
+bool parse_pad(const std::string& s, std::unique_ptr<psx::Pad>& out) {
+  if (s == "digital") out = std::make_unique<psx::DigitalPad>();
+  else if (s == "dualshock") out = std::make_unique<psx::DualShock>();
+  else if (s != "none") return false;
+  return true;
+}
+
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
   std::string exe, bios;
   unsigned long long frames = 3600, cycles = 0;
   bool expect_exit = false, quiet = false;
+  std::unique_ptr<psx::Pad> pads[2] = {std::make_unique<psx::DigitalPad>(), nullptr};
+  std::string memcards[2];
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](std::string& out) {
@@ -78,6 +94,11 @@ int run_command(const std::vector<std::string>& args) {
       expect_exit = true;
     } else if (a == "--quiet") {
       quiet = true;
+    } else if (a == "--pad1" || a == "--pad2") {
+      if (!value(v) || !parse_pad(v, pads[a[5] - '1']))
+        return usage(a + " needs digital, dualshock or none");
+    } else if (a == "--memcard1" || a == "--memcard2") {
+      if (!value(memcards[a[9] - '1'])) return usage(a + " needs a file");
     } else {
       return usage("unknown option '" + a + "'");
     }
@@ -92,7 +113,15 @@ int run_command(const std::vector<std::string>& args) {
   try {
     if (!bios.empty()) console.load_bios(bios);
     console.boot_exe(exe);
+    for (int port = 0; port < 2; ++port) {
+      console.sio0().attach_pad(port, std::move(pads[port]));
+      if (!memcards[port].empty())
+        console.sio0().attach_memory_card(port, std::make_unique<psx::MemoryCard>(memcards[port]));
+    }
   } catch (const psx::InputError& e) {
+    std::fprintf(stderr, "psxrl run: %s\n", e.what());
+    return kBadInput;
+  } catch (const psx::MemoryCardError& e) {
     std::fprintf(stderr, "psxrl run: %s\n", e.what());
     return kBadInput;
   }

@@ -103,14 +103,24 @@ bool Bus::read(u32 vaddr, u32& v, u32 width) {
   return false;
 }
 
+void Bus::watched_store(u8* mem, u32 phys, u32 v, u32 width) {
+  u32 old = load_width(mem, width);
+  store_width(mem, v, width);
+  u32 mask = width == 4 ? 0xFFFFFFFF : (1u << (width * 8)) - 1;
+  watches_->on_write(phys, width, old, v & mask, *frame_, sched_.now());
+}
+
 bool Bus::write(u32 vaddr, u32 v, u32 width) {
   u32 p = physical(vaddr);
   if (p < 0x00800000) {
-    store_width(&ram_[p & (kRamSize - 1)], v, width);
+    u32 off = p & (kRamSize - 1);
+    if (watches_ && watches_->ram_page_watched(off)) watched_store(&ram_[off], off, v, width);
+    else store_width(&ram_[off], v, width);
     return true;
   }
   if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
-    store_width(&scratch_[p - kScratchBase], v, width);
+    if (watches_) watched_store(&scratch_[p - kScratchBase], p, v, width);
+    else store_width(&scratch_[p - kScratchBase], v, width);
     return true;
   }
   if (p >= kIoBase && p < kIoEnd) {
@@ -186,7 +196,11 @@ void Bus::expansion2_write(u32 p, u32 v, u32 width) {
 }
 
 void Bus::dma_write_ram(u32 addr, const u32* words, u32 count) {
-  for (u32 i = 0; i < count; ++i) store_le32(&ram_[(addr + i * 4) & (kRamSize - 4)], words[i]);
+  for (u32 i = 0; i < count; ++i) {
+    u32 off = (addr + i * 4) & (kRamSize - 4);
+    if (watches_ && watches_->ram_page_watched(off)) watched_store(&ram_[off], off, words[i], 4);
+    else store_le32(&ram_[off], words[i]);
+  }
 }
 
 void Bus::dma_read_ram(u32 addr, u32* words, u32 count) const {

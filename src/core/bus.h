@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/io_device.h"
+#include "core/memory_watch.h"
 #include "core/scheduler.h"
 #include "core/state.h"
 #include "core/types.h"
@@ -74,6 +75,13 @@ class Bus {
   // Where unmapped and not-yet-emulated accesses are reported (once per address).
   std::function<void(const std::string&)> on_log;
 
+  // Memory watches see every RAM/scratchpad write (CPU and DMA) while attached; `frame` is the
+  // console's frame counter, stamped on each event. Detached (nullptr) the write path is unchanged.
+  void attach_watches(MemoryWatches* w, const u64* frame) {
+    watches_ = w;
+    frame_ = frame;
+  }
+
   u32 cache_control() const { return cache_control_; }
   const std::map<u32, u32>& unmapped_accesses() const { return unmapped_; }
 
@@ -102,6 +110,7 @@ class Bus {
   void io_write(u32 p, u32 v, u32 width);
   void expansion2_write(u32 p, u32 v, u32 width);
   void report_unmapped(u32 vaddr, const char* what);
+  void watched_store(u8* mem, u32 phys, u32 v, u32 width);
 
   Scheduler& sched_;
   InterruptController& irq_;
@@ -120,6 +129,8 @@ class Bus {
   std::array<IoDevice*, kIoSlots> io_{};
   std::array<u32, kIoSlots> io_base_{};
   std::map<u32, u32> unmapped_;
+  MemoryWatches* watches_ = nullptr;
+  const u64* frame_ = nullptr;
 };
 
 }  // namespace psx

@@ -3,14 +3,18 @@
 
 #include <cstring>
 
+#include "core/hash.h"
 #include "core/input_error.h"
 
 namespace psx {
 
-Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_) {
+Console::Console()
+    : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cpu_, bus_), sio0_(sched_, irq_) {
   frame_event_ = sched_.add_event("frame", [this](Cycles late) {
     frame_done_ = true;
     ++frames_;
+    watches_.on_frame(frames_, sched_.now());
+    release_timed_buttons();
     sched_.schedule(frame_event_, kFrameCycles - late);
     cpu_.stop();
   });
@@ -31,6 +35,9 @@ Console::Console() : bus_(sched_, irq_), cpu_(bus_, sched_, irq_, gte_), hle_(cp
   hle_.on_tty = bus_.on_tty;
   hle_.on_log = bus_.on_log;
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
+  // SIO0: a digital pad in controller port 1 by default (programs and BIOSes expect one).
+  bus_.map_io(Sio0::kBase, Sio0::kSize, &sio0_);
+  sio0_.attach_pad(0, std::make_unique<DigitalPad>());
 
   bus_.map_io(Dma::kBase, Dma::kSize, &dma_);
   bus_.map_io(Timers::kBase, Timers::kSize, &timers_);
@@ -49,6 +56,7 @@ void Console::load_bios_image(const std::vector<u8>& image, const std::string& n
     throw InputError::whole(name, "a BIOS image must be exactly 524288 bytes (512 KiB), this file has " +
                                       std::to_string(image.size()));
   bus_.load_bios(image);
+  bios_hash_ = fnv1a(image.data(), image.size());
   cpu_.reset();
 }
 
@@ -62,6 +70,7 @@ void Console::boot_exe(const std::string& path) { boot_exe_image(read_file(path)
 
 void Console::boot_exe_image(const std::vector<u8>& file, const std::string& name) {
   PsxExe exe = PsxExe::parse(file, name);
+  program_hash_ = fnv1a(file.data(), file.size());
   if (bus_.has_bios()) {
     boot_bios();
     pending_exe_ = std::move(exe);
@@ -123,6 +132,14 @@ void Console::run_cycles(Cycles n) {
   sched_.cancel(limit_event_);
 }
 
+bool Console::run_until(const std::function<bool()>& done, u64 max_frames) {
+  for (u64 i = 0; i < max_frames && !stopped(); ++i) {
+    if (done()) return true;
+    run_frame();
+  }
+  return done();
+}
+
 void Console::do_state(StateIO& s) {
   s.section("CONS", 1);
   s.pod(frames_);
@@ -144,9 +161,11 @@ void Console::do_state(StateIO& s) {
   cpu_.do_state(s);
   gte_.do_state(s);
   hle_.do_state(s);
+  sio0_.do_state(s);
   dma_.do_state(s);
   timers_.do_state(s);
   mdec_.do_state(s);
+  s.pod(hold_frames_);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
 }
 

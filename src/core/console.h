@@ -3,9 +3,11 @@
 // else from the core. A console is self-contained (no global state): many can run on many
 // threads. It never starts threads itself; every run call returns synchronously.
 #pragma once
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,7 +19,9 @@
 #include "core/gte/gte.h"
 #include "core/irq.h"
 #include "core/mdec.h"
+#include "core/memory_watch.h"
 #include "core/scheduler.h"
+#include "core/sio/sio0.h"
 #include "core/state.h"
 #include "core/timers.h"
 
@@ -51,6 +55,9 @@ class Console : private CpuHooks {
   void run_frame();
   void run_frames(u64 n);
   void run_cycles(Cycles n);
+  // Runs whole frames until `done()` holds after a frame (checked before the first frame too) or
+  // `max_frames` have run; returns whether `done()` held.
+  bool run_until(const std::function<bool()>& done, u64 max_frames);
 
   // The program wrote its exit code to the debug port, or the console hit a fatal guest error.
   bool stopped() const { return exit_code_.has_value() || !fatal_error_.empty(); }
@@ -61,6 +68,34 @@ class Console : private CpuHooks {
   u64 frames() const { return frames_; }
   u64 instructions() const { return cpu_.instructions(); }
 
+  // Guest memory as the host sees it: RAM (any mirror, any segment) and the scratchpad. Host
+  // accesses take no emulated time and have no side effects; other addresses throw
+  // std::invalid_argument. Writes are not reported to memory watches (only guest writes are).
+  u8 read8(u32 addr) const { return *host_pointer(addr, 1); }
+  u16 read16(u32 addr) const;
+  u32 read32(u32 addr) const;
+  void write8(u32 addr, u8 v) { *host_pointer(addr, 1) = v; }
+  void write16(u32 addr, u16 v);
+  void write32(u32 addr, u32 v);
+  std::span<u8> ram() { return {bus_.ram(), Bus::kRamSize}; }
+  std::span<u8> scratchpad() { return {bus_.scratchpad(), Bus::kScratchSize}; }
+  // Writes the 2 MiB of RAM to a file (atomically).
+  void dump_ram(const std::string& path) const;
+
+  // Memory watches (memory_watch.h). Events accumulate until taken.
+  void watch(const std::string& key, u32 addr, u32 length, bool fresh_only = false, u32 flow_limit_frames = 0);
+  void unwatch(const std::string& key);
+  void sleep_watch(const std::string& key) { watches_.sleep(key); }
+  void wake_watch(const std::string& key) { watches_.wake(key); }
+  std::vector<WatchEvent> take_watch_events() { return watches_.take_events(); }
+
+  // Save states (save_state.h): the whole console. Loading checks the header against this
+  // console's BIOS and program; on any error it throws StateError and the console is unchanged.
+  std::vector<u8> save_state(bool compress = false);
+  void load_state(const std::vector<u8>& blob);
+  void save_state_file(const std::string& path, bool compress = true);
+  void load_state_file(const std::string& path);
+
   // Text the program prints (debug ports and BIOS putchar); diagnostic messages.
   std::function<void(char)> on_tty;
   std::function<void(const std::string&)> on_log;
@@ -70,11 +105,27 @@ class Console : private CpuHooks {
   Gte& gte() { return gte_; }
   Scheduler& scheduler() { return sched_; }
   InterruptController& irq() { return irq_; }
+  // Controller/memory card port: plug devices, set buttons/sticks, read rumble (sio/sio0.h).
+  Sio0& sio0() { return sio0_; }
+
+  // Controller input between run calls. Ports are 1 and 2 as labelled on the console; `buttons`
+  // are pad_button bits (1 = pressed). Calls for an empty port do nothing.
+  void set_buttons(int port, u16 pressed);
+  void press(int port, u16 buttons);
+  void release(int port, u16 buttons);
+  // Holds `buttons` for the next `frames` frame ends, then releases them (the seed's press and
+  // release delays, in frames instead of 10 ms units).
+  void press_for(int port, u16 buttons, u32 frames);
+  void set_axes(int port, const AnalogAxes& axes);
+  Rumble rumble(int port) const;
 
   void do_state(StateIO& s);
 
  private:
   void on_reach(u32 pc) override;
+  u8* host_pointer(u32 addr, u32 width) const;
+  static int port_index(int port);
+  void release_timed_buttons();
   void side_load(const PsxExe& exe);
   void log(const std::string& msg) {
     if (on_log) on_log(msg);
@@ -86,6 +137,7 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   HleBios hle_;
+  Sio0 sio0_;
   // DMA, root counters, MDEC (issue 5).
   Dma dma_{sched_, irq_, bus_};
   Timers timers_{sched_, irq_};
@@ -100,6 +152,11 @@ class Console : private CpuHooks {
   std::optional<PsxExe> pending_exe_;
   std::optional<u32> exit_code_;
   std::string fatal_error_;
+  MemoryWatches watches_;
+  u64 bios_hash_ = 0;
+  u64 program_hash_ = 0;
+  // Frames left before press_for() releases each button of each port (0 = not timed).
+  std::array<std::array<u32, 16>, 2> hold_frames_{};
 };
 
 }  // namespace psx

@@ -1,18 +1,223 @@
-// GTE register file. The commands arrive with issue #3 (src/core/gte/ is its helper's).
+// GTE register file: the read/write quirks of the 32 data and 32 control registers
+// (psx-spx "GTE Data Register Summary", "GTE Control Register Summary"), command dispatch
+// with the documented cycle counts, and save states.
 #include "core/gte/gte.h"
+
+#include <algorithm>
+#include <bit>
 
 namespace psx {
 
-u32 Gte::read_data(u32 r) { return data_[r & 31]; }
-void Gte::write_data(u32 r, u32 v) { data_[r & 31] = v; }
-u32 Gte::read_control(u32 r) { return control_[r & 31]; }
-void Gte::write_control(u32 r, u32 v) { control_[r & 31] = v; }
-u32 Gte::execute(u32) { return 1; }
+namespace {
+
+// VXY/SXY-style packing: low half X, high half Y.
+u32 pack(s16 lo, s16 hi) { return u32(u16(lo)) | (u32(u16(hi)) << 16); }
+
+// Control registers 0-4, 8-12, 16-20 hold a 3x3 matrix of s16 two per word, row-major;
+// the fifth word holds only element 33 and reads sign-extended.
+u32 read_matrix(const std::array<std::array<s16, 3>, 3>& m, u32 k) {
+  const u32 i = 2 * k;
+  if (k == 4) return u32(s32(m[2][2]));
+  return pack(m[i / 3][i % 3], m[(i + 1) / 3][(i + 1) % 3]);
+}
+
+void write_matrix(std::array<std::array<s16, 3>, 3>& m, u32 k, u32 v) {
+  const u32 i = 2 * k;
+  m[i / 3][i % 3] = s16(v);
+  if (k != 4) m[(i + 1) / 3][(i + 1) % 3] = s16(v >> 16);
+}
+
+// ORGB: each of IR1-IR3 divided by 80h and saturated to 0..1Fh (no flags).
+u32 orgb_component(s16 ir) { return u32(std::clamp(ir >> 7, 0, 0x1F)); }
+
+}  // namespace
+
+u32 Gte::read_data(u32 r) {
+  r &= 31;
+  switch (r) {
+    case 0: case 2: case 4: return pack(r_.v[r / 2][0], r_.v[r / 2][1]);
+    case 1: case 3: case 5: return u32(s32(r_.v[r / 2][2]));
+    case 6: return r_.rgbc;
+    case 7: return r_.otz;
+    case 8: case 9: case 10: case 11: return u32(s32(r_.ir[r - 8]));
+    case 12: case 13: case 14: return r_.sxy[r - 12];
+    case 15: return r_.sxy[2];  // SXYP reads as a mirror of SXY2
+    case 16: case 17: case 18: case 19: return r_.sz[r - 16];
+    case 20: case 21: case 22: return r_.rgb[r - 20];
+    case 23: return r_.res1;
+    case 24: case 25: case 26: case 27: return u32(r_.mac[r - 24]);
+    case 28: case 29:  // IRGB reads as ORGB
+      return orgb_component(r_.ir[1]) | (orgb_component(r_.ir[2]) << 5) | (orgb_component(r_.ir[3]) << 10);
+    case 30: return r_.lzcs;
+    default: return r_.lzcr;
+  }
+}
+
+void Gte::write_data(u32 r, u32 v) {
+  r &= 31;
+  switch (r) {
+    case 0: case 2: case 4:
+      r_.v[r / 2][0] = s16(v);
+      r_.v[r / 2][1] = s16(v >> 16);
+      break;
+    case 1: case 3: case 5: r_.v[r / 2][2] = s16(v); break;
+    case 6: r_.rgbc = v; break;
+    case 7: r_.otz = u16(v); break;
+    case 8: case 9: case 10: case 11: r_.ir[r - 8] = s16(v); break;
+    case 12: case 13: case 14: r_.sxy[r - 12] = v; break;
+    case 15:  // SXYP: a write pushes the screen XY FIFO
+      r_.sxy[0] = r_.sxy[1];
+      r_.sxy[1] = r_.sxy[2];
+      r_.sxy[2] = v;
+      break;
+    case 16: case 17: case 18: case 19: r_.sz[r - 16] = u16(v); break;
+    case 20: case 21: case 22: r_.rgb[r - 20] = v; break;
+    case 23: r_.res1 = v; break;
+    case 24: case 25: case 26: case 27: r_.mac[r - 24] = s32(v); break;
+    case 28:  // IRGB: 5-bit colours expanded into IR1-IR3 (times 80h)
+      r_.ir[1] = s16((v & 0x1F) << 7);
+      r_.ir[2] = s16(((v >> 5) & 0x1F) << 7);
+      r_.ir[3] = s16(((v >> 10) & 0x1F) << 7);
+      break;
+    case 30:  // LZCS: LZCR counts its leading bits equal to bit 31 (1..32)
+      r_.lzcs = v;
+      r_.lzcr = u32(std::countl_zero(s32(v) < 0 ? ~v : v));
+      break;
+    default: break;  // ORGB and LZCR are read-only
+  }
+}
+
+u32 Gte::read_control(u32 r) {
+  r &= 31;
+  switch (r) {
+    case 0: case 1: case 2: case 3: case 4: return read_matrix(r_.rt, r);
+    case 5: case 6: case 7: return u32(r_.tr[r - 5]);
+    case 8: case 9: case 10: case 11: case 12: return read_matrix(r_.llm, r - 8);
+    case 13: case 14: case 15: return u32(r_.bk[r - 13]);
+    case 16: case 17: case 18: case 19: case 20: return read_matrix(r_.lcm, r - 16);
+    case 21: case 22: case 23: return u32(r_.fc[r - 21]);
+    case 24: return u32(r_.ofx);
+    case 25: return u32(r_.ofy);
+    case 26: return u32(s32(s16(r_.h)));  // H is unsigned but reads sign-extended
+    case 27: return u32(s32(r_.dqa));
+    case 28: return u32(r_.dqb);
+    case 29: return u32(s32(r_.zsf3));
+    case 30: return u32(s32(r_.zsf4));
+    default: return r_.flag | ((r_.flag & kFlagErrorMask) ? kFlagError : 0);
+  }
+}
+
+void Gte::write_control(u32 r, u32 v) {
+  r &= 31;
+  switch (r) {
+    case 0: case 1: case 2: case 3: case 4: write_matrix(r_.rt, r, v); break;
+    case 5: case 6: case 7: r_.tr[r - 5] = s32(v); break;
+    case 8: case 9: case 10: case 11: case 12: write_matrix(r_.llm, r - 8, v); break;
+    case 13: case 14: case 15: r_.bk[r - 13] = s32(v); break;
+    case 16: case 17: case 18: case 19: case 20: write_matrix(r_.lcm, r - 16, v); break;
+    case 21: case 22: case 23: r_.fc[r - 21] = s32(v); break;
+    case 24: r_.ofx = s32(v); break;
+    case 25: r_.ofy = s32(v); break;
+    case 26: r_.h = u16(v); break;
+    case 27: r_.dqa = s16(v); break;
+    case 28: r_.dqb = s32(v); break;
+    case 29: r_.zsf3 = s16(v); break;
+    case 30: r_.zsf4 = s16(v); break;
+    default: r_.flag = v & 0x7FFFF000; break;  // bits 0-11 read 0, bit 31 is computed
+  }
+}
+
+u32 Gte::command_cycles(u32 command) {
+  switch (command & 0x3F) {
+    case 0x01: return 15;  // RTPS
+    case 0x06: return 8;   // NCLIP
+    case 0x0C: return 6;   // OP
+    case 0x10: return 8;   // DPCS
+    case 0x11: return 8;   // INTPL
+    case 0x12: return 8;   // MVMVA
+    case 0x13: return 19;  // NCDS
+    case 0x14: return 13;  // CDP
+    case 0x16: return 44;  // NCDT
+    case 0x1B: return 17;  // NCCS
+    case 0x1C: return 11;  // CC
+    case 0x1E: return 14;  // NCS
+    case 0x20: return 30;  // NCT
+    case 0x28: return 5;   // SQR
+    case 0x29: return 8;   // DCPL
+    case 0x2A: return 17;  // DPCT
+    case 0x2D: return 5;   // AVSZ3
+    case 0x2E: return 6;   // AVSZ4
+    case 0x30: return 23;  // RTPT
+    case 0x3D: return 5;   // GPF
+    case 0x3E: return 5;   // GPL
+    case 0x3F: return 39;  // NCCT
+    default: return 1;
+  }
+}
+
+u32 Gte::execute(u32 command) {
+  r_.flag = 0;  // every command starts with a clear FLAG
+  run_command(command);
+  return command_cycles(command);
+}
+
+void Gte::run_command(u32 command) {
+  const Op op{(command & (1u << 19)) ? 12u : 0u, (command & (1u << 10)) != 0};
+  switch (command & 0x3F) {
+    case 0x01: rtps(op); break;
+    case 0x06: nclip(); break;
+    case 0x0C: op_cross(op); break;
+    case 0x10: dpcs(op); break;
+    case 0x11: intpl(op); break;
+    case 0x12: mvmva(command, op); break;
+    case 0x13: ncds(op); break;
+    case 0x14: cdp(op); break;
+    case 0x16: ncdt(op); break;
+    case 0x1B: nccs(op); break;
+    case 0x1C: cc(op); break;
+    case 0x1E: ncs(op); break;
+    case 0x20: nct(op); break;
+    case 0x28: sqr(op); break;
+    case 0x29: dcpl(op); break;
+    case 0x2A: dpct(op); break;
+    case 0x2D: avsz3(); break;
+    case 0x2E: avsz4(); break;
+    case 0x30: rtpt(op); break;
+    case 0x3D: gpf(op); break;
+    case 0x3E: gpl(op); break;
+    case 0x3F: ncct(op); break;
+    default: break;  // opcodes psx-spx does not list compute nothing (FLAG was still cleared)
+  }
+}
 
 void Gte::do_state(StateIO& s) {
-  s.section("GTE ", 1);
-  s.pod(data_);
-  s.pod(control_);
+  // Field by field, so padding bytes never reach the state.
+  s.section("GTE ", 2);
+  s.pod(r_.v);
+  s.pod(r_.rgbc);
+  s.pod(r_.otz);
+  s.pod(r_.ir);
+  s.pod(r_.sxy);
+  s.pod(r_.sz);
+  s.pod(r_.rgb);
+  s.pod(r_.res1);
+  s.pod(r_.mac);
+  s.pod(r_.lzcs);
+  s.pod(r_.lzcr);
+  s.pod(r_.rt);
+  s.pod(r_.llm);
+  s.pod(r_.lcm);
+  s.pod(r_.tr);
+  s.pod(r_.bk);
+  s.pod(r_.fc);
+  s.pod(r_.ofx);
+  s.pod(r_.ofy);
+  s.pod(r_.h);
+  s.pod(r_.dqa);
+  s.pod(r_.dqb);
+  s.pod(r_.zsf3);
+  s.pod(r_.zsf4);
+  s.pod(r_.flag);
 }
 
 }  // namespace psx

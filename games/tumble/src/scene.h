@@ -1,0 +1,11 @@
+/* Drawing a level in play: sky, tiles (textured, Gouraud-shaded by distance), spikes (GTE-culled
+   pyramids), items, the exit and the ball, from the camera that follows the ball. */
+#ifndef TUMBLE_SCENE_H
+#define TUMBLE_SCENE_H
+#include "game.h"
+#include "gpu.h"
+
+void scene_sky(Gpu *gpu);
+void scene_draw(Gpu *gpu, const Game *g);
+
+#endif

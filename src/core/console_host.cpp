@@ -1,0 +1,92 @@
+// Console services for the host: memory access without emulated side effects, RAM dumps,
+// memory watches and save states.
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/console.h"
+#include "core/input_error.h"
+#include "core/save_state.h"
+
+namespace psx {
+
+u8* Console::host_pointer(u32 addr, u32 width) const {
+  u32 p = Bus::physical(addr);
+  Bus& bus = const_cast<Bus&>(bus_);
+  if ((addr & (width - 1)) == 0) {
+    if (p < 0x00800000) return bus.ram() + (p & (Bus::kRamSize - 1));
+    if (p >= MemoryWatches::kScratchBase && p < MemoryWatches::kScratchBase + Bus::kScratchSize)
+      return bus.scratchpad() + (p - MemoryWatches::kScratchBase);
+  }
+  char msg[96];
+  std::snprintf(msg, sizeof msg, "host memory access at 0x%08X: not an aligned RAM or scratchpad address", addr);
+  throw std::invalid_argument(msg);
+}
+
+u16 Console::read16(u32 addr) const {
+  const u8* p = host_pointer(addr, 2);
+  return u16(p[0] | p[1] << 8);
+}
+u32 Console::read32(u32 addr) const { return Bus::load_le32(host_pointer(addr, 4)); }
+void Console::write16(u32 addr, u16 v) {
+  u8* p = host_pointer(addr, 2);
+  p[0] = u8(v);
+  p[1] = u8(v >> 8);
+}
+void Console::write32(u32 addr, u32 v) { Bus::store_le32(host_pointer(addr, 4), v); }
+
+void Console::dump_ram(const std::string& path) const {
+  const u8* r = bus_.ram();
+  write_file_atomically(path, std::vector<u8>(r, r + Bus::kRamSize));
+}
+
+void Console::watch(const std::string& key, u32 addr, u32 length, bool fresh_only, u32 flow_limit_frames) {
+  watches_.watch(key, addr, length, fresh_only, flow_limit_frames);
+  bus_.attach_watches(&watches_, &frames_);
+}
+
+void Console::unwatch(const std::string& key) {
+  watches_.unwatch(key);
+  if (watches_.empty()) bus_.attach_watches(nullptr, nullptr);
+}
+
+std::vector<u8> Console::save_state(bool compress) {
+  StateIO w;
+  do_state(w);
+  SaveStateHeader h;
+  h.compressed = compress;
+  h.bios_hash = bios_hash_;
+  h.program_hash = program_hash_;
+  return pack_save_state(h, w.buffer());
+}
+
+void Console::load_state(const std::vector<u8>& blob) {
+  std::vector<u8> payload = unpack_save_state(blob.data(), blob.size(), bios_hash_, program_hash_);
+  // A payload can still fail part-way (a block's section or range check): keep the current
+  // state to put back, so a failed load leaves the console exactly as it was.
+  StateIO backup;
+  do_state(backup);
+  try {
+    StateIO r(payload.data(), payload.size());
+    do_state(r);
+    if (!r.at_end()) r.fail("unexpected bytes after the last section");
+  } catch (...) {
+    StateIO restore(backup.buffer().data(), backup.buffer().size());
+    do_state(restore);
+    throw;
+  }
+}
+
+void Console::save_state_file(const std::string& path, bool compress) {
+  write_file_atomically(path, save_state(compress));
+}
+
+void Console::load_state_file(const std::string& path) {
+  std::vector<u8> blob = read_file(path);
+  try {
+    load_state(blob);
+  } catch (const StateError& e) {
+    throw StateError(path + ": " + e.what());
+  }
+}
+
+}  // namespace psx

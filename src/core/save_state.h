@@ -1,0 +1,34 @@
+// Save-state container: a versioned header naming what the state belongs to (BIOS and program
+// identities), a checksum of the payload, and the payload (the console's do_state), optionally
+// zlib-compressed. Layout, little-endian:
+//   0 "PSXRLSAV"  8 u32 format version  12 u32 flags (bit 0: compressed)
+//   16 u64 BIOS hash (0 = HLE kernel)  24 u64 program hash (EXE or disc)
+//   32 u64 payload size  40 u64 payload FNV-1a  48 u64 stored size  56 stored payload
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/types.h"
+
+namespace psx {
+
+struct SaveStateHeader {
+  static constexpr u32 kFormatVersion = 1;
+  static constexpr size_t kSize = 56;
+  u32 version = kFormatVersion;
+  bool compressed = false;
+  u64 bios_hash = 0;
+  u64 program_hash = 0;
+};
+
+// Wraps a payload in the container.
+std::vector<u8> pack_save_state(const SaveStateHeader& h, const std::vector<u8>& payload);
+// Checks the container against the running console's identities and returns the payload. Throws
+// StateError naming what is wrong (truncated, not a save state, wrong version, other BIOS or
+// program, corrupt).
+std::vector<u8> unpack_save_state(const u8* data, size_t size, u64 bios_hash, u64 program_hash);
+
+// Writes `data` to `path` atomically (temporary file, then rename); throws std::runtime_error.
+void write_file_atomically(const std::string& path, const std::vector<u8>& data);
+
+}  // namespace psx

@@ -1,0 +1,15 @@
+# Runs COMMAND (arguments separated by '|') and checks its exit code (EXPECT_CODE) and that its
+# standard output and error contain EXPECT_OUTPUT. Used by CTest for exit codes and messages.
+string(REPLACE "|" ";" cmd "${COMMAND}")
+execute_process(COMMAND ${cmd} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(all "${out}${err}")
+message("${all}")
+if(NOT code STREQUAL EXPECT_CODE)
+  message(FATAL_ERROR "exit code ${code}, expected ${EXPECT_CODE}")
+endif()
+if(DEFINED EXPECT_OUTPUT)
+  string(FIND "${all}" "${EXPECT_OUTPUT}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "output does not contain: ${EXPECT_OUTPUT}")
+  endif()
+endif()

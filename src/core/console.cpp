@@ -48,6 +48,17 @@ Console::Console()
   // SIO0: a digital pad in controller port 1 by default (programs and BIOSes expect one).
   bus_.map_io(Sio0::kBase, Sio0::kSize, &sio0_);
   sio0_.attach_pad(0, std::make_unique<DigitalPad>());
+
+  bus_.map_io(Dma::kBase, Dma::kSize, &dma_);
+  bus_.map_io(Timers::kBase, Timers::kSize, &timers_);
+  bus_.map_io(Mdec::kBase, Mdec::kSize, &mdec_);
+  dma_.connect(Dma::MdecIn, &mdec_.dma_in());
+  dma_.connect(Dma::MdecOut, &mdec_.dma_out());
+  dma_.connect(Dma::Gpu, &gpu_);
+  dma_.connect(Dma::Cdrom, &cdrom_);
+  dma_.connect(Dma::Spu, &spu_);
+  // The root counters count the GPU's dots and HBlanks and synchronise to its blanking.
+  gpu_.set_video_signals(&timers_);
   cpu_.reset();
 }
 
@@ -184,6 +195,9 @@ void Console::do_state(StateIO& s) {
   hle_.do_state(s);
   cdrom_.do_state(s);
   sio0_.do_state(s);
+  dma_.do_state(s);
+  timers_.do_state(s);
+  mdec_.do_state(s);
   s.pod(hold_frames_);
   gpu_.do_state(s);
   spu_.do_state(s);

@@ -17,12 +17,15 @@
 #include "core/bus.h"
 #include "core/cdrom/cdrom.h"
 #include "core/cpu/cpu.h"
+#include "core/dma.h"
 #include "core/gte/gte.h"
 #include "core/irq.h"
+#include "core/mdec.h"
 #include "core/memory_watch.h"
 #include "core/scheduler.h"
 #include "core/sio/sio0.h"
 #include "core/state.h"
+#include "core/timers.h"
 #include "gpu/gpu.h"
 #include "spu/spu.h"
 
@@ -151,6 +154,9 @@ class Console : private CpuHooks {
   Sio0 sio0_;
   Gpu gpu_;
   Spu spu_;
+  Dma dma_{sched_, irq_, bus_};
+  Timers timers_{sched_, irq_};
+  Mdec mdec_;
 
   Scheduler::Handle limit_event_;
   bool frame_done_ = false;

@@ -1,0 +1,285 @@
+// DMA controller: register interface, channel arbitration and the three sync modes.
+#include "core/dma.h"
+
+#include <algorithm>
+
+#include "core/bus.h"
+#include "core/irq.h"
+
+namespace psx {
+
+namespace {
+// Transfer rates in CPU clocks per 0x100 words (psx-spx "DMA Transfer Rates"; DMA uses DRAM hyper
+// page mode, one clock a word plus a row reload every 16 words). CD-ROM uses the BIOS's default
+// 24-clock setting; PIO moves no data here but still takes its documented time.
+constexpr std::array<u32, Dma::kChannels> kClocksPer256Words = {0x110, 0x110, 0x110, 0x1800,
+                                                                 0x420, 0x1400, 0x110};
+// Words one service pass may move before the controller lets the scheduler dispatch other events;
+// it keeps a guest's endless linked list or 0xFFFF x 0xFFFF block transfer from stalling the host.
+constexpr u32 kSliceWords = 0x10000;
+// How often a channel waiting for its device's DMA request looks again.
+constexpr Cycles kRequestPollCycles = 64;
+constexpr u32 kAddressMask = 0x00FFFFFC;  // updated addresses are word aligned (psx-spx)
+
+constexpr u32 count_or_max(u32 v) { return v == 0 ? 0x10000 : v; }  // 0 means 0x10000
+}  // namespace
+
+Dma::Dma(Scheduler& sched, InterruptController& irq, Bus& bus) : sched_(sched), irq_(irq), bus_(bus) {
+  event_ = sched_.add_event("dma", [this](Cycles) { service(); });
+  channels_[Otc].chcr = kChcrBackward;  // D6_CHCR bit 1 always reads 1
+}
+
+void Dma::connect(u32 channel, DmaPort* port) {
+  if (channel < Pio) ports_[channel] = port;
+}
+
+u32 Dma::io_read(u32 offset, u32 width) {
+  u32 reg = offset & ~3u;
+  u32 shift = (offset & 3) * 8;
+  u32 v = 0;
+  if (reg < 0x70) {
+    const Channel& c = channels_[reg >> 4];
+    switch (reg & 0xC) {
+      case 0x0: v = c.madr; break;
+      case 0x4: v = c.bcr; break;
+      case 0x8: v = c.chcr; break;
+      default: v = 0; break;
+    }
+  } else {
+    switch (reg) {
+      case 0x70: v = dpcr_; break;
+      case 0x74: v = dicr_; break;
+      case 0x78: v = 0x7FFAC68B; break;  // undocumented read-only values (psx-spx)
+      default: v = 0x00FFFFF7; break;
+    }
+  }
+  return v >> shift;
+}
+
+void Dma::io_write(u32 offset, u32 value, u32 width) {
+  u32 reg = offset & ~3u;
+  u32 shift = (offset & 3) * 8;
+  u32 lane = (width == 4 ? 0xFFFFFFFFu : (1u << (width * 8)) - 1) << shift;
+  u32 v = (value << shift) & lane;
+  if (reg < 0x70) {
+    u32 ch = reg >> 4, r = reg & 0xC;
+    Channel& c = channels_[ch];
+    u32 old = r == 0 ? c.madr : r == 4 ? c.bcr : c.chcr;
+    write_channel(ch, r, (old & ~lane) | v);
+    return;
+  }
+  if (reg == 0x70) {
+    dpcr_ = (dpcr_ & ~lane) | v;
+    service();
+  } else if (reg == 0x74) {
+    // A narrow write acknowledges only the flags inside the bytes it wrote.
+    u32 merged = (dicr_ & ~lane & 0x00FF803F) | v;
+    write_dicr((merged & ~0x7F000000u) | (v & 0x7F000000u));
+  }
+}
+
+void Dma::write_channel(u32 ch, u32 reg, u32 value) {
+  Channel& c = channels_[ch];
+  switch (reg) {
+    case 0x0: c.madr = value & 0x00FFFFFF; return;
+    case 0x4: c.bcr = value; return;
+    case 0x8: break;
+    default: return;
+  }
+  bool was_busy = c.chcr & kChcrBusy;
+  // D6_CHCR: only bits 24, 28 and 30 are writable; bit 1 (step backward) always reads 1.
+  c.chcr = ch == Otc ? (value & 0x51000000) | kChcrBackward : value & 0x71770703;
+  if (!(c.chcr & kChcrBusy)) c.chopping_started = false;  // the CPU stopped the channel
+  if (!was_busy && (c.chcr & kChcrBusy)) c.resume_at = 0;
+  service();
+}
+
+void Dma::write_dicr(u32 value) {
+  u32 ack = value & 0x7F000000;
+  dicr_ = (dicr_ & 0xFF000000 & ~ack) | (value & 0x00FF803F);
+  update_master_flag();
+}
+
+void Dma::update_master_flag() {
+  bool before = dicr_ >> 31;
+  u32 enabled_flags = (dicr_ >> 16) & (dicr_ >> 24) & 0x7F;
+  bool after = (dicr_ & (1u << 15)) || ((dicr_ & (1u << 23)) && enabled_flags);
+  dicr_ = (dicr_ & 0x7FFFFFFF) | (after ? 0x80000000u : 0);
+  if (after && !before) irq_.raise(Irq::Dma);
+}
+
+bool Dma::device_request(u32 ch) const {
+  if (ch == Otc) return true;  // OTC writes RAM only: nothing to wait for
+  return ports_[ch] && ports_[ch]->dma_request();
+}
+
+bool Dma::may_run(u32 ch) const {
+  const Channel& c = channels_[ch];
+  if (!(c.chcr & kChcrBusy) || !enabled(ch) || sched_.now() < c.resume_at) return false;
+  if (c.chopping_started) return true;
+  // Start/Trigger starts sync mode 0, and forces one block of the others without a request.
+  return (c.chcr & kChcrTrigger) || device_request(ch);
+}
+
+int Dma::pick_channel() const {
+  // Lowest DPCR priority value wins; on a tie the higher channel number wins (psx-spx).
+  int best = -1;
+  for (u32 ch = 0; ch < kChannels; ++ch)
+    if (may_run(ch) && (best < 0 || priority(ch) <= priority(static_cast<u32>(best)))) best = static_cast<int>(ch);
+  return best;
+}
+
+void Dma::service() {
+  u32 budget = kSliceWords;
+  int ch;
+  while (budget > 0 && (ch = pick_channel()) >= 0) {
+    u32 c = static_cast<u32>(ch);
+    u32 moved;
+    if (c == Otc) moved = run_otc(c);
+    else if (channels_[c].sync_mode() == 1) moved = run_block(c);
+    else if (channels_[c].sync_mode() == 2) moved = run_list(c);
+    else moved = run_burst(c);  // mode 0, and reserved mode 3 treated alike
+    budget -= std::min(moved, budget);
+  }
+  Cycles next = Scheduler::kNever;
+  // A slice that used its whole budget continues one cycle later, so the scheduler's dispatch
+  // loop returns and other events (frame end, run limits) still get their turn.
+  if (budget == 0 && pick_channel() >= 0) next = sched_.now() + 1;
+  for (u32 c = 0; c < kChannels; ++c) {
+    const Channel& chan = channels_[c];
+    if (!(chan.chcr & kChcrBusy) || !enabled(c)) continue;
+    if (sched_.now() < chan.resume_at) next = std::min(next, chan.resume_at);
+    else if (!may_run(c)) next = std::min(next, sched_.now() + kRequestPollCycles);
+  }
+  if (next == Scheduler::kNever) sched_.cancel(event_);
+  else sched_.schedule_at(event_, next);
+}
+
+u32 Dma::run_burst(u32 ch) {
+  Channel& c = channels_[ch];
+  c.chcr &= ~kChcrTrigger;
+  bool backward = c.chcr & kChcrBackward;
+  u32 remaining = count_or_max(c.bcr & 0xFFFF);
+  if (!(c.chcr & kChcrChopping)) {
+    // Sync mode 0 leaves MADR and BCR at their start values (psx-spx).
+    if (c.chcr & kChcrFromRam) to_device(ch, c.madr, remaining, backward);
+    else from_device(ch, c.madr, remaining, backward);
+    charge(ch, remaining);
+    finish(ch);
+    return remaining;
+  }
+  // Chopping: a window of 1<<N words, then the CPU runs for 1<<M clocks; MADR and BC advance.
+  c.chopping_started = true;
+  u32 n = std::min(remaining, 1u << ((c.chcr >> 16) & 7));
+  if (c.chcr & kChcrFromRam) to_device(ch, c.madr, n, backward);
+  else from_device(ch, c.madr, n, backward);
+  c.madr = (backward ? c.madr - 4 * n : c.madr + 4 * n) & kAddressMask;
+  c.bcr = (c.bcr & 0xFFFF0000) | ((remaining - n) & 0xFFFF);
+  charge(ch, n);
+  c.resume_at = sched_.now() + (Cycles{1} << ((c.chcr >> 20) & 7));
+  if (remaining == n) finish(ch);
+  return n;
+}
+
+u32 Dma::run_block(u32 ch) {
+  Channel& c = channels_[ch];
+  c.chcr &= ~kChcrTrigger;
+  bool backward = c.chcr & kChcrBackward;
+  u32 size = count_or_max(c.bcr & 0xFFFF);
+  u32 blocks = count_or_max(c.bcr >> 16);
+  if (c.chcr & kChcrFromRam) to_device(ch, c.madr, size, backward);
+  else from_device(ch, c.madr, size, backward);
+  // Sync mode 1 advances MADR and counts BA down to zero (psx-spx).
+  c.madr = (backward ? c.madr - 4 * size : c.madr + 4 * size) & kAddressMask;
+  c.bcr = (c.bcr & 0xFFFF) | (((blocks - 1) & 0xFFFF) << 16);
+  charge(ch, size);
+  if (blocks == 1) finish(ch);
+  return size;
+}
+
+u32 Dma::run_list(u32 ch) {
+  Channel& c = channels_[ch];
+  c.chcr &= ~kChcrTrigger;
+  // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the device.
+  u32 addr = c.madr & kAddressMask;
+  u32 header = 0;
+  bus_.dma_read_ram(addr, &header, 1);
+  u32 count = header >> 24;
+  if (count) to_device(ch, addr + 4, count, false);
+  charge(ch, count + 1);
+  c.madr = header & 0x00FFFFFF;
+  if (c.madr & 0x00800000) finish(ch);  // end marker 0x00FFFFFF (hardware tests bit 23)
+  return count + 1;
+}
+
+u32 Dma::run_otc(u32 ch) {
+  Channel& c = channels_[ch];
+  c.chcr &= ~kChcrTrigger;
+  // Reverse clear: each entry points at the one 4 bytes below it; the lowest ends the list.
+  u32 n = count_or_max(c.bcr & 0xFFFF);
+  u32 top = c.madr & kAddressMask;
+  words_.resize(n);
+  for (u32 i = 0; i < n; ++i) {  // words_[0] is the lowest address
+    u32 addr = top - 4 * (n - 1 - i);
+    words_[i] = i == 0 ? kListEnd : (addr - 4) & 0x00FFFFFF;
+  }
+  bus_.dma_write_ram(top - 4 * (n - 1), words_.data(), n);
+  charge(ch, n);
+  finish(ch);
+  return n;
+}
+
+void Dma::finish(u32 ch) {
+  Channel& c = channels_[ch];
+  c.chcr &= ~(kChcrBusy | kChcrTrigger);
+  c.chopping_started = false;
+  // A channel's flag is set only while its interrupt is enabled in bits 16-22 (psx-spx).
+  if ((dicr_ >> (16 + ch)) & 1) dicr_ |= 1u << (24 + ch);
+  update_master_flag();
+}
+
+void Dma::to_device(u32 ch, u32 addr, u32 count, bool backward) {
+  words_.resize(count);
+  if (!backward) {
+    bus_.dma_read_ram(addr, words_.data(), count);
+  } else {
+    bus_.dma_read_ram(addr - 4 * (count - 1), words_.data(), count);
+    std::reverse(words_.begin(), words_.end());
+  }
+  if (ch < Pio && ports_[ch]) ports_[ch]->dma_write(words_.data(), count);
+}
+
+void Dma::from_device(u32 ch, u32 addr, u32 count, bool backward) {
+  words_.resize(count);
+  // With no device on the channel the bus floats high.
+  if (ch < Pio && ports_[ch]) ports_[ch]->dma_read(words_.data(), count);
+  else std::fill(words_.begin(), words_.end(), 0xFFFFFFFF);
+  if (!backward) {
+    bus_.dma_write_ram(addr, words_.data(), count);
+  } else {
+    std::reverse(words_.begin(), words_.end());
+    bus_.dma_write_ram(addr - 4 * (count - 1), words_.data(), count);
+  }
+}
+
+void Dma::charge(u32 ch, u32 words) {
+  u64 total = charge_frac_ + u64{words} * kClocksPer256Words[ch];
+  sched_.advance(total / 256);
+  charge_frac_ = static_cast<u32>(total % 256);
+}
+
+void Dma::do_state(StateIO& s) {
+  s.section("DMA ", 1);
+  for (Channel& c : channels_) {
+    s.pod(c.madr);
+    s.pod(c.bcr);
+    s.pod(c.chcr);
+    s.boolean(c.chopping_started);
+    s.pod(c.resume_at);
+  }
+  s.pod(dpcr_);
+  s.pod(dicr_);
+  s.pod(charge_frac_);
+}
+
+}  // namespace psx

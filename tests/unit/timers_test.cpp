@@ -1,0 +1,269 @@
+// Root counter tests. Expected counts come from psx-spx "Timers" and the clock ratios: the video
+// clock is 11/7 of the CPU clock and a dot lasts 10 video clocks in 256-pixel mode; a MODE or COUNT
+// write holds the counter for one extra clock, and a reset at COMP holds 0 for two clocks.
+#include <gtest/gtest.h>
+
+#include "core/irq.h"
+#include "core/scheduler.h"
+#include "core/timers.h"
+
+namespace psx {
+namespace {
+
+constexpr u32 kCount = 0, kMode = 4, kTarget = 8;
+constexpr u32 reg(u32 timer, u32 r) { return timer * 0x10 + r; }
+
+class TimersTest : public ::testing::Test {
+ protected:
+  Scheduler sched;
+  InterruptController irq;
+  Timers t{sched, irq};
+
+  void SetUp() override { irq.write(4, 0x7FF); }
+  // Runs the timeline to absolute cycle `when`, dispatching events on their cycle.
+  void at(Cycles when) {
+    while (sched.now() < when) {
+      Cycles next = std::min(when, sched.next_deadline());
+      if (next > sched.now()) sched.advance(next - sched.now());
+      sched.run_due_events();
+    }
+    sched.run_due_events();
+  }
+  u32 count(u32 i) { return t.io_read(reg(i, kCount), 2); }
+  u32 mode(u32 i) { return t.io_read(reg(i, kMode), 2); }
+  void set_mode(u32 i, u32 v) { t.io_write(reg(i, kMode), v, 2); }
+  bool irq_line(u32 i) { return irq.stat() & (1u << (4 + i)); }
+  void ack() { irq.write(0, 0); }
+};
+
+TEST_F(TimersTest, SysclockCountsFromModeWrite) {
+  set_mode(2, 0);
+  // psx-spx: after a MODE write the counter stays 0 for 2 clocks, then counts one per clock.
+  EXPECT_EQ(count(2), 0u);
+  at(1);
+  EXPECT_EQ(count(2), 0u);
+  at(2);
+  EXPECT_EQ(count(2), 1u);
+  at(1000);
+  EXPECT_EQ(count(2), 999u);
+}
+
+TEST_F(TimersTest, ZretSequenceMatchesPsxSpxExample) {
+  t.io_write(reg(0, kTarget), 1, 2);
+  set_mode(0, Timers::kZret);
+  // psx-spx "Reset and Wrap", COMP = 1 with ZRET: 0, 0, 1, 0, 0, 1.
+  const u32 expect[] = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  for (u32 c = 0; c < 9; ++c) {
+    at(c);
+    EXPECT_EQ(count(0), expect[c]) << "cycle " << c;
+  }
+}
+
+TEST_F(TimersTest, ZretLongIntervalWithoutIrq) {
+  t.io_write(reg(1, kTarget), 9, 2);
+  set_mode(1, Timers::kZret);
+  // Value(t) = t-1 up to COMP at t=10; after that a period of COMP+2 = 11 starting at t=11 with
+  // values 0,0,1..9. t=1000: (1000-11) mod 11 = 10 -> 9.
+  at(1000);
+  EXPECT_EQ(count(1), 9u);
+  EXPECT_NE(mode(1) & Timers::kEquf, 0u);
+  EXPECT_EQ(mode(1) & Timers::kOvff, 0u);  // never reached 0xFFFF
+}
+
+TEST_F(TimersTest, TargetIrqRepeatPulseOnExactCycle) {
+  t.io_write(reg(0, kTarget), 50, 2);
+  set_mode(0, Timers::kZret | Timers::kCmp | Timers::kRept);
+  // COMP reached at t = 50 + 1 (hold) = 51, then every 52 clocks.
+  at(50);
+  EXPECT_FALSE(irq_line(0));
+  at(51);
+  EXPECT_TRUE(irq_line(0));
+  EXPECT_NE(mode(0) & Timers::kIntf, 0u);  // pulse: INTF reads back 1
+  ack();
+  at(102);
+  EXPECT_FALSE(irq_line(0));
+  at(103);
+  EXPECT_TRUE(irq_line(0));
+}
+
+TEST_F(TimersTest, ToggleModeRaisesEverySecondEvent) {
+  t.io_write(reg(1, kTarget), 50, 2);
+  set_mode(1, Timers::kZret | Timers::kCmp | Timers::kRept | Timers::kLevl);
+  EXPECT_NE(mode(1) & Timers::kIntf, 0u);  // set by the MODE write
+  at(51);
+  EXPECT_TRUE(irq_line(1));
+  EXPECT_EQ(mode(1) & Timers::kIntf, 0u);
+  ack();
+  at(103);
+  EXPECT_FALSE(irq_line(1));  // INTF went 0 -> 1: no IRQ
+  EXPECT_NE(mode(1) & Timers::kIntf, 0u);
+  at(155);
+  EXPECT_TRUE(irq_line(1));
+}
+
+TEST_F(TimersTest, OneShotFiresOnceUntilModeWrite) {
+  t.io_write(reg(2, kTarget), 50, 2);
+  set_mode(2, Timers::kZret | Timers::kCmp);
+  at(51);
+  EXPECT_TRUE(irq_line(2));
+  ack();
+  at(500);
+  EXPECT_FALSE(irq_line(2));
+  EXPECT_NE(mode(2) & Timers::kEquf, 0u);  // the counter keeps counting and reaching COMP
+}
+
+TEST_F(TimersTest, ReachedFlagsClearOnRead) {
+  t.io_write(reg(0, kTarget), 5, 2);
+  set_mode(0, 0);
+  at(6);
+  u32 m = mode(0);
+  EXPECT_NE(m & Timers::kEquf, 0u);
+  EXPECT_EQ(mode(0) & Timers::kEquf, 0u);
+}
+
+TEST_F(TimersTest, OverflowIrqAndCountAboveTarget) {
+  set_mode(0, Timers::kOvfl | Timers::kRept);
+  t.io_write(reg(0, kCount), 0xFFF0, 2);
+  // COUNT write holds one clock: 0xFFFF is reached 1 + 15 clocks later.
+  at(15);
+  EXPECT_FALSE(irq_line(0));
+  at(16);
+  EXPECT_TRUE(irq_line(0));
+  EXPECT_NE(mode(0) & Timers::kOvff, 0u);
+  at(17);
+  EXPECT_EQ(count(0), 0u);  // the wrap holds 0 for only one clock
+  at(18);
+  EXPECT_EQ(count(0), 1u);
+}
+
+TEST_F(TimersTest, CountAboveTargetRunsThroughWrapFirst) {
+  t.io_write(reg(1, kTarget), 10, 2);
+  set_mode(1, Timers::kZret | Timers::kCmp | Timers::kRept);
+  t.io_write(reg(1, kCount), 20, 2);
+  // 1 held clock + (0xFFFF - 20) to 0xFFFF + 1 to wrap + 10 to COMP.
+  Cycles reach = 1 + (0xFFFF - 20) + 1 + 10;
+  at(reach - 1);
+  EXPECT_FALSE(irq_line(1));
+  at(reach);
+  EXPECT_TRUE(irq_line(1));
+}
+
+TEST_F(TimersTest, Timer2DividesBy8) {
+  set_mode(2, Timers::kPscl);
+  // Ticks at t = 8, 16, ...; the first is held.
+  at(807);
+  EXPECT_EQ(count(2), 99u);
+  at(808);
+  EXPECT_EQ(count(2), 100u);
+}
+
+TEST_F(TimersTest, Timer0Dotclock) {
+  set_mode(0, Timers::kExtc);
+  // 256-pixel mode: a dot per 10 video clocks = 70/11 CPU clocks. 7000 clocks = 1100 dots.
+  at(7000);
+  EXPECT_EQ(count(0), 1099u);
+  // Dot k falls on cycle ceil(70k/11): dot 1102 at 7013 (1101 at 7007).
+  at(7012);
+  EXPECT_EQ(count(0), 1100u);
+  at(7013);
+  EXPECT_EQ(count(0), 1101u);
+}
+
+TEST_F(TimersTest, Timer0DotclockFollowsDivider) {
+  t.dot_divider_changed(8);  // 320-pixel mode
+  set_mode(0, Timers::kExtc);
+  at(5600);  // 5600 * 11 / 56 = 1100 dots
+  EXPECT_EQ(count(0), 1099u);
+}
+
+TEST_F(TimersTest, Timer1CountsHblanks) {
+  set_mode(1, Timers::kExtc);
+  for (int i = 0; i < 5; ++i) {
+    at(sched.now() + 100);
+    t.hblank_changed(true);
+    at(sched.now() + 20);
+    t.hblank_changed(false);
+  }
+  EXPECT_EQ(count(1), 4u);  // 5 HBlanks, the first held
+}
+
+TEST_F(TimersTest, SyncMode0PausesDuringHblank) {
+  set_mode(0, Timers::kGatf | (0 << 1));
+  at(100);
+  t.hblank_changed(true);
+  at(150);
+  t.hblank_changed(false);
+  at(250);
+  EXPECT_EQ(count(0), 199u);  // 100 + 100 counted clocks, the first held
+}
+
+TEST_F(TimersTest, SyncMode1ResetsAtHblank) {
+  set_mode(0, Timers::kGatf | (1 << 1));
+  at(100);
+  t.hblank_changed(true);
+  at(150);
+  EXPECT_EQ(count(0), 50u);
+}
+
+TEST_F(TimersTest, SyncMode2CountsOnlyInsideHblank) {
+  set_mode(0, Timers::kGatf | (2 << 1));
+  at(100);
+  EXPECT_EQ(count(0), 0u);
+  t.hblank_changed(true);
+  at(130);
+  t.hblank_changed(false);
+  at(200);
+  EXPECT_EQ(count(0), 30u);
+}
+
+TEST_F(TimersTest, SyncMode3WaitsForFirstBlank) {
+  set_mode(1, Timers::kGatf | (3 << 1));
+  at(100);
+  EXPECT_EQ(count(1), 0u);
+  t.vblank_changed(true);
+  at(110);
+  t.vblank_changed(false);
+  at(200);
+  EXPECT_EQ(count(1), 99u);  // free from t=100, first clock held
+}
+
+TEST_F(TimersTest, Timer1SyncMode0PausesDuringVblank) {
+  set_mode(1, Timers::kGatf);
+  at(100);
+  t.vblank_changed(true);
+  at(300);
+  t.vblank_changed(false);
+  at(400);
+  EXPECT_EQ(count(1), 199u);
+}
+
+TEST_F(TimersTest, Timer2SyncModes) {
+  set_mode(2, Timers::kGatf | (0 << 1));  // stop
+  at(100);
+  EXPECT_EQ(count(2), 0u);
+  set_mode(2, Timers::kGatf | (1 << 1));  // free run
+  at(200);
+  EXPECT_EQ(count(2), 99u);
+}
+
+TEST_F(TimersTest, SaveStateRoundTripMidCount) {
+  t.io_write(reg(0, kTarget), 300, 2);
+  set_mode(0, Timers::kZret | Timers::kCmp | Timers::kRept | Timers::kExtc);
+  at(500);
+  StateIO out;
+  t.do_state(out);
+  Scheduler sched2;
+  InterruptController irq2;
+  Timers t2{sched2, irq2};
+  sched2.advance(500);
+  StateIO in(out.buffer().data(), out.buffer().size());
+  t2.do_state(in);
+  EXPECT_TRUE(in.at_end());
+  sched.advance(2500);
+  sched2.advance(2500);
+  EXPECT_EQ(t2.io_read(0, 2), t.io_read(0, 2));
+  EXPECT_EQ(t2.io_read(4, 2), t.io_read(4, 2));
+}
+
+}  // namespace
+}  // namespace psx

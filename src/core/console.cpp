@@ -99,7 +99,27 @@ void Console::boot_exe_image(const std::vector<u8>& file, const std::string& nam
   side_load(exe);
 }
 
-void Console::insert_disc(const std::string& path) { cdrom_.insert_disc(disc::Disc::open(path)); }
+namespace {
+// A disc's identity for save-state headers without reading the whole image: its table of
+// contents and the system area's volume descriptors and first directory sectors (16-31), which
+// hold the volume name and creation date.
+u64 disc_identity(disc::Disc& d) {
+  u64 h = kFnvOffset;
+  for (const disc::Track& t : d.tracks()) {
+    u32 toc[3] = {t.index1, t.end, static_cast<u32>(t.type)};
+    h = fnv1a(toc, sizeof toc, h);
+  }
+  disc::RawSector sector;
+  for (u32 lba = 16; lba < 32; ++lba)
+    if (d.read_sector(lba + disc::kLeadInSectors, sector)) h = fnv1a(sector.data(), sector.size(), h);
+  return h;
+}
+}  // namespace
+
+void Console::insert_disc(const std::string& path) {
+  cdrom_.insert_disc(disc::Disc::open(path));
+  program_hash_ = disc_identity(*cdrom_.disc());
+}
 
 void Console::boot_disc() {
   if (!cdrom_.disc()) throw InputError("no disc inserted to boot from");
@@ -109,7 +129,6 @@ void Console::boot_disc() {
   }
   disc::BootConfig config;
   PsxExe exe = disc::load_boot_exe(*cdrom_.disc(), config);
-  program_hash_ = fnv1a(config.exe.data(), config.exe.size());
   hle_mode_ = true;
   hle_.install();
   cpu_.set_hooks(this, 0x80000080);

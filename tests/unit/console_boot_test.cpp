@@ -46,3 +46,27 @@ TEST(ConsoleBoot, CdbootRomBootsAMkdiscDisc) {
 
 }  // namespace
 }  // namespace psx
+
+namespace psx {
+namespace {
+
+// Save states name the disc they belong to (its TOC and volume descriptors), also when a BIOS
+// boots it: a state from one disc is refused by a console holding another.
+TEST(ConsoleBoot, SaveStatesBelongToTheirDisc) {
+  Console a, b;
+  a.insert_disc(kRoms + "cdrom_test.cue");
+  b.insert_disc(kRoms + "cdboot_test.cue");
+  std::vector<u8> state = a.save_state();
+  try {
+    b.load_state(state);
+    ADD_FAILURE() << "a state from another disc was accepted";
+  } catch (const StateError& e) {
+    EXPECT_NE(std::string(e.what()).find("different disc or EXE"), std::string::npos) << e.what();
+  }
+  Console c;
+  c.insert_disc(kRoms + "cdrom_test.cue");
+  EXPECT_NO_THROW(c.load_state(state));
+}
+
+}  // namespace
+}  // namespace psx

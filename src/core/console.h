@@ -99,10 +99,25 @@ class Console : private CpuHooks {
 
   // Save states (save_state.h): the whole console. Loading checks the header against this
   // console's BIOS and program; on any error it throws StateError and the console is unchanged.
+  // A successful load drops audio samples not yet taken (they belong to the abandoned timeline).
   std::vector<u8> save_state(bool compress = false);
   void load_state(const std::vector<u8>& blob);
   void save_state_file(const std::string& path, bool compress = true);
   void load_state_file(const std::string& path);
+
+  // Video and audio for the host, without per-pixel copies. The frame is the displayed area as
+  // RGB888 at its real size (e.g. 320x240), refreshed at each VBlank; the VRAM view is the GPU's
+  // 1024x512 16-bit memory. take_audio() hands over the 44.1 kHz stereo samples produced since
+  // the last call by swapping buffers.
+  struct Frame {
+    const u8* rgb;
+    u32 width;
+    u32 height;
+  };
+  Frame frame() const { return {gpu_.display_rgb(), gpu_.display_width(), gpu_.display_height()}; }
+  const u16* vram() const { return gpu_.vram(); }
+  static constexpr u32 kVramWidth = 1024, kVramHeight = 512;
+  void take_audio(std::vector<StereoSample>& out) { spu_.take_samples(out); }
 
   // Text the program prints (debug ports and BIOS putchar); diagnostic messages.
   std::function<void(char)> on_tty;

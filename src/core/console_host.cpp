@@ -74,6 +74,9 @@ void Console::load_state(const std::vector<u8>& blob) {
     do_state(restore);
     throw;
   }
+  // Samples produced before the load belong to the abandoned timeline.
+  std::vector<StereoSample> stale;
+  spu_.take_samples(stale);
 }
 
 void Console::save_state_file(const std::string& path, bool compress) {

@@ -14,19 +14,37 @@ namespace psx {
 namespace {
 
 const std::string kProgram = PSXRL_BUILD_DIR "/bench/cpu_loop.exe";
+// The built-in game: GTE, GPU by DMA, SPU, pad and timers all in use.
+const std::string kGame = PSXRL_BUILD_DIR "/games/tumble/tumble.exe";
 
+// RAM, scratchpad, VRAM, the displayed frame, the cycle count, and the audio produced since the
+// last call (taken from the console).
 u64 console_hash(Console& c) {
   u64 h = fnv1a(c.ram().data(), c.ram().size());
   h = fnv1a(c.scratchpad().data(), c.scratchpad().size(), h);
+  h = fnv1a(c.vram(), Console::kVramWidth * Console::kVramHeight * 2, h);
+  Console::Frame f = c.frame();
+  h = fnv1a(f.rgb, size_t(f.width) * f.height * 3, h);
+  std::vector<StereoSample> audio;
+  c.take_audio(audio);
+  h = fnv1a(audio.data(), audio.size() * sizeof(StereoSample), h);
   u64 cyc = c.cycles();
   return fnv1a(&cyc, sizeof cyc, h);
 }
 
-std::vector<u64> frame_hashes(int frames) {
+// Presses that drive the game from the title into play: the same for every run.
+void scripted_input(Console& c, int frame) {
+  if (frame == 20) c.press_for(1, pad_button::kStart, 3);
+  if (frame == 40) c.press_for(1, pad_button::kCross, 3);
+  if (frame >= 60 && frame % 25 == 0) c.press_for(1, frame % 50 ? pad_button::kUp : pad_button::kRight, 4);
+}
+
+std::vector<u64> frame_hashes(const std::string& exe, int frames) {
   Console c;
-  c.boot_exe(kProgram);
+  c.boot_exe(exe);
   std::vector<u64> out;
   for (int f = 0; f < frames; ++f) {
+    scripted_input(c, f);
     c.run_frame();
     out.push_back(console_hash(c));
   }
@@ -34,38 +52,53 @@ std::vector<u64> frame_hashes(int frames) {
 }
 
 TEST(Determinism, SameProgramSameHashesEveryFrame) {
-  auto a = frame_hashes(30), b = frame_hashes(30);
-  EXPECT_EQ(a, b);
-  EXPECT_NE(a.front(), a.back());  // the program does change memory
+  for (const std::string& exe : {kProgram, kGame}) {
+    SCOPED_TRACE(exe);
+    auto a = frame_hashes(exe, 150), b = frame_hashes(exe, 150);
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a[100], a[149]);  // the program does change state
+  }
 }
 
-TEST(SaveState, RoundTripGivesTheSameFuture) {
-  // Frame numbers chosen by a fixed LCG so the test is repeatable.
-  u32 seed = 12345;
-  for (int trial = 0; trial < 6; ++trial) {
-    seed = seed * 1103515245 + 12345;
-    int f = 1 + int((seed >> 16) % 40), n = 1 + int((seed >> 8) % 10);
-    SCOPED_TRACE("save at frame " + std::to_string(f) + ", run " + std::to_string(n));
+// "Save at frame f, run n more frames (with the same inputs)" equals "load the state made at f
+// into a fresh console, run n frames", hash for hash, frame for frame.
+void round_trips(const std::string& exe, u32 seed, int trials, int max_f) {
+  for (int trial = 0; trial < trials; ++trial) {
+    seed = seed * 1103515245 + 12345;  // frame numbers from a fixed LCG: repeatable
+    int f = 1 + int((seed >> 16) % u32(max_f)), n = 1 + int((seed >> 8) % 30);
+    SCOPED_TRACE(exe + ": save at frame " + std::to_string(f) + ", run " + std::to_string(n));
     Console a;
-    a.boot_exe(kProgram);
-    a.run_frames(f);
+    a.boot_exe(exe);
+    for (int i = 0; i < f; ++i) {
+      scripted_input(a, i);
+      a.run_frame();
+    }
+    console_hash(a);  // takes the audio made so far
     std::vector<u8> blob = a.save_state(trial % 2 == 0);
-    a.run_frames(n);
     Console b;
-    b.boot_exe(kProgram);
+    b.boot_exe(exe);
     b.load_state(blob);
-    b.run_frames(n);
-    EXPECT_EQ(console_hash(a), console_hash(b));
+    for (int i = f; i < f + n; ++i) {
+      scripted_input(a, i);
+      scripted_input(b, i);
+      a.run_frame();
+      b.run_frame();
+      ASSERT_EQ(console_hash(a), console_hash(b)) << "frame " << i;
+    }
     EXPECT_EQ(a.frames(), b.frames());
     EXPECT_EQ(a.instructions(), b.instructions());
   }
 }
 
+TEST(SaveState, RoundTripGivesTheSameFuture) { round_trips(kProgram, 12345, 4, 40); }
+
+TEST(SaveState, RoundTripOnTheBuiltInGame) { round_trips(kGame, 777, 6, 300); }
+
 TEST(Isolation, EightThreadsMatchOneAlone) {
-  auto alone = frame_hashes(20);
+  auto alone = frame_hashes(kGame, 90);
   std::vector<std::vector<u64>> results(8);
   std::vector<std::thread> threads;
-  for (int i = 0; i < 8; ++i) threads.emplace_back([&results, i] { results[i] = frame_hashes(20); });
+  for (int i = 0; i < 8; ++i) threads.emplace_back([&results, i] { results[i] = frame_hashes(kGame, 90); });
   for (auto& t : threads) t.join();
   for (const auto& r : results) EXPECT_EQ(r, alone);
 }
@@ -77,6 +110,7 @@ class BadState : public ::testing::Test {
     c.run_frames(3);
     good = c.save_state();
     c.run_frames(2);
+    console_hash(c);  // takes the audio made so far, so the next hashes see none
     before = console_hash(c);
   }
   std::string load_error(const std::vector<u8>& blob) {

@@ -139,6 +139,7 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
 }
 
 u32 Bus::io_read(u32 p, u32 width) {
+  catch_up();
   u32 shift = (p & 3) * 8;
   if (p < kIoBase + 0x24) return memctrl_[(p - kIoBase) / 4] >> shift;
   if ((p & ~3u) == 0x1F801060) return ram_size_ >> shift;
@@ -155,6 +156,7 @@ u32 Bus::io_read(u32 p, u32 width) {
 }
 
 void Bus::io_write(u32 p, u32 v, u32 width) {
+  catch_up();
   if (p < kIoBase + 0x24) {
     memctrl_[(p - kIoBase) / 4] = v;
     return;

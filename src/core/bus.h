@@ -111,6 +111,11 @@ class Bus {
   void expansion2_write(u32 p, u32 v, u32 width);
   void report_unmapped(u32 vaddr, const char* what);
   void watched_store(u8* mem, u32 phys, u32 v, u32 width);
+  // Device events fall due between instructions; an I/O access in the middle of an instruction
+  // (after its wait states) first runs the ones already due, so the device answers as of "now".
+  void catch_up() {
+    if (sched_.now() >= sched_.next_deadline()) sched_.run_due_events();
+  }
 
   Scheduler& sched_;
   InterruptController& irq_;

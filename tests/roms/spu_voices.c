@@ -1,29 +1,13 @@
 /* SPU test program: uploads ADPCM samples to sound RAM by manual FIFO writes (psx-spx "SPU RAM
    Manual Write"), plays them on two voices, and checks ENDX (End+Mute and End+Repeat blocks),
    ENVX after End+Mute, the RAM IRQ when a voice reads the IRQ address, its acknowledge, and key
-   on clearing ENDX. The DMA upload path is not exercised yet (no DMA controller on main). */
+   on clearing ENDX. spu_dma.c does the same with DMA channel 4 uploads. */
 #include <stdint.h>
 
 #include "psx/test.h"
+#include "spu_regs.h"
 
-#define R16(a) (*(volatile uint16_t *)(a))
-#define R32(a) (*(volatile uint32_t *)(a))
-#define VOICE(v, r) R16(0xBF801C00 + (v) * 16 + (r))
-#define MVOLL R16(0xBF801D80)
-#define MVOLR R16(0xBF801D82)
-#define KON0 R16(0xBF801D88)
-#define KON1 R16(0xBF801D8A)
-#define ENDX0 R16(0xBF801D9C)
-#define IRQA R16(0xBF801DA4)
-#define TSA R16(0xBF801DA6)
-#define FIFO R16(0xBF801DA8)
-#define SPUCNT R16(0xBF801DAA)
-#define RAMCTRL R16(0xBF801DAC)
-#define SPUSTAT R16(0xBF801DAE)
-#define I_STAT R32(0xBF801070)
-#define I_MASK R32(0xBF801074)
-
-#define CNT_ON 0xC000 /* SPU enable, unmute */
+#define I_STAT (*(volatile uint32_t *)0xBF801070)
 
 /* Sample A: three blocks, the last End+Mute. Sample B: two blocks, LoopStart then End+Repeat.
    Shift 0 filter 0 with nibbles 7/9: a loud square-ish wave (psx-spx "Waveform Examples"). */
@@ -37,16 +21,10 @@ static void make_blocks(uint8_t *b, int blocks, uint8_t first_flags, uint8_t las
   b[(blocks - 1) * 16 + 1] |= last_flags;
 }
 
-static int wait_mode(uint16_t mode) {
-  for (int i = 0; i < 100000; ++i)
-    if ((SPUSTAT & 0x3F) == mode) return 1;
-  return 0;
-}
-
 /* Manual write in runs of up to 32 halfwords (the FIFO size). */
 static void upload_manual(uint32_t addr, const uint8_t *data, int bytes) {
   SPUCNT = CNT_ON;
-  CHECK_EQ("stop mode applied", wait_mode(0), 1);
+  CHECK_EQ("stop mode applied", spu_wait_mode(0), 1);
   TSA = (uint16_t)(addr / 8);
   for (int pos = 0; pos < bytes;) {
     int n = 0;
@@ -55,17 +33,8 @@ static void upload_manual(uint32_t addr, const uint8_t *data, int bytes) {
     for (int i = 0; i < 100000 && (SPUSTAT & 0x400); ++i) {
     }
     SPUCNT = CNT_ON;
-    wait_mode(0);
+    spu_wait_mode(0);
   }
-}
-
-static void setup_voice(int v, uint32_t addr) {
-  VOICE(v, 0x0) = 0x3FFF;
-  VOICE(v, 0x2) = 0x3FFF;
-  VOICE(v, 0x4) = 0x1000; /* 44.1 kHz: one ADPCM sample per output sample */
-  VOICE(v, 0x6) = (uint16_t)(addr / 8);
-  VOICE(v, 0x8) = 0x00FF; /* fast attack, sustain level 15 */
-  VOICE(v, 0xA) = 0x1FC0; /* sustain never steps */
 }
 
 static int wait_endx(uint16_t mask) {
@@ -84,8 +53,8 @@ int main(void) {
   upload_manual(0x1000, sample_a, sizeof sample_a);
   upload_manual(0x2000, sample_b, sizeof sample_b);
 
-  setup_voice(0, 0x1000);
-  setup_voice(1, 0x2000);
+  spu_setup_voice(0, 0x1000);
+  spu_setup_voice(1, 0x2000);
   IRQA = 0x2010 / 8; /* second block of sample B */
   I_STAT = ~(1u << 9);
   SPUCNT = CNT_ON | 0x40;

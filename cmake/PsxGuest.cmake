@@ -50,11 +50,13 @@ function(psx_add_exe target)
   add_custom_target(${target} ALL DEPENDS ${exe})
 endfunction()
 
-# psx_add_rom_image(<target> SOURCES <files...> LINKER_SCRIPT <ld>) builds a 512 KiB raw ROM
-# image ${CMAKE_CURRENT_BINARY_DIR}/<target>.bin (code linked at 0xBFC00000, padded with zeros).
+# psx_add_rom_image(<target> SOURCES <files...> LINKER_SCRIPT <ld> [DEPENDS <headers...>]) builds
+# a 512 KiB raw ROM image ${CMAKE_CURRENT_BINARY_DIR}/<target>.bin (code linked at 0xBFC00000,
+# padded with zeros). The linker script places .data/.bss; the ROM's start-up code copies .data
+# from its load address in the ROM to RAM and clears .bss (e.g. tests/roms/cdboot/).
 find_program(PSX_OBJCOPY mipsel-linux-gnu-objcopy REQUIRED)
 function(psx_add_rom_image target)
-  cmake_parse_arguments(ARG "" "LINKER_SCRIPT" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "LINKER_SCRIPT" "SOURCES;DEPENDS" ${ARGN})
   set(elf ${CMAKE_CURRENT_BINARY_DIR}/${target}.elf)
   set(bin ${CMAKE_CURRENT_BINARY_DIR}/${target}.bin)
   add_custom_command(OUTPUT ${bin}
@@ -62,7 +64,7 @@ function(psx_add_rom_image target)
             -Wl,-T,${ARG_LINKER_SCRIPT} ${ARG_SOURCES} -o ${elf}
     COMMAND ${PSX_OBJCOPY} -O binary ${elf} ${bin}
     COMMAND truncate -s 524288 ${bin}
-    DEPENDS ${ARG_SOURCES} ${ARG_LINKER_SCRIPT}
+    DEPENDS ${ARG_SOURCES} ${ARG_LINKER_SCRIPT} ${ARG_DEPENDS}
     COMMENT "PSX ROM ${target}.bin" VERBATIM)
   add_custom_target(${target} ALL DEPENDS ${bin})
 endfunction()

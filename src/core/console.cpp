@@ -77,6 +77,8 @@ void Console::load_bios_image(const std::vector<u8>& image, const std::string& n
 
 void Console::boot_bios() {
   hle_mode_ = false;
+  // An EXE from an earlier boot_exe() must not be side-loaded into this boot (e.g. a disc's).
+  pending_exe_.reset();
   cpu_.reset();
   cpu_.set_hooks(this, kShellEntry);
 }

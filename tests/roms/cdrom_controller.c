@@ -1,17 +1,18 @@
 /* Drives the CD-ROM controller directly by polling its registers (psx-spx "CDROM Controller I/O
    Ports"): Getstat, GetID and ReadTOC answers and their interrupt order, Setloc + ReadN of the
-   ISO 9660 descriptors and of a data file with known contents at single and double speed.
+   ISO 9660 descriptors and of a data file with known contents at single and double speed, and the
+   same data taken from the data FIFO by DMA channel 3 (psx-spx "DMA Channels": CDROM, sync mode 0).
    The disc is built by mkdisc (tests/roms/cdrom.cmake): DATA.BIN is the first file, at logical
    block 21 (20 = root directory), holding the letters 'A' + (i * 7 + 3) % 26. */
 #include <stdint.h>
 
+#include "dma_regs.h"
 #include "psx/test.h"
 
 #define CD_INDEX (*(volatile uint8_t *)0xBF801800)
 #define CD_REG1 (*(volatile uint8_t *)0xBF801801)
 #define CD_REG2 (*(volatile uint8_t *)0xBF801802)
 #define CD_REG3 (*(volatile uint8_t *)0xBF801803)
-#define I_STAT (*(volatile uint32_t *)0xBF801070)
 
 static uint8_t resp[16];
 static int resp_len;
@@ -52,6 +53,55 @@ static void read_sector(uint8_t *buf, int n) {
 }
 
 static uint8_t sector[2048];
+static uint32_t dma_buf[512];
+
+static int letters_wrong(const uint8_t *p, int from, int n) {
+  int bad = 0;
+  for (int i = 0; i < n; ++i)
+    if (p[i] != (uint8_t)('A' + ((from + i) * 7 + 3) % 26)) ++bad;
+  return bad;
+}
+
+/* DMA3 to RAM, sync mode 0 (CHCR bit 28 starts it at once), `words` words into dst. */
+static void dma3_read(uint32_t *dst, uint32_t words) {
+  D_MADR(3) = PHYS(dst);
+  D_BCR(3) = words;
+  D_CHCR(3) = 0x11000000;
+}
+
+/* DATA.BIN's two sectors through DMA3: the first in one 512-word transfer, the second in two
+   256-word transfers that continue in the same FIFO. */
+static void test_dma3(void) {
+  DPCR |= 0x00008000; /* channel 3 enable */
+  static const uint8_t data_loc[3] = {0x00, 0x02, 0x21};
+  send(0x02, data_loc, 3);
+  wait_int();
+  send(0x06, 0, 0);
+  CHECK_EQ("DMA ReadN INT", wait_int(), 3);
+  CHECK_EQ("DMA sector 0 INT", wait_int(), 1);
+  CD_INDEX = 0;
+  CD_REG3 = 0x80;
+  CHECK_EQ("data FIFO full (DRQSTS)", CD_INDEX & 0x40, 0x40);
+  dma3_read(dma_buf, 512);
+  CHECK_EQ("DMA sector 0 done", dma_wait(3), 1);
+  CHECK_EQ("CHCR after", D_CHCR(3), 0x00000000);
+  CHECK_EQ("data FIFO empty after 512 words", CD_INDEX & 0x40, 0);
+  CHECK_EQ("DMA sector 0 bytes wrong", letters_wrong((const uint8_t *)dma_buf, 0, 2048), 0);
+
+  CHECK_EQ("DMA sector 1 INT", wait_int(), 1);
+  CD_INDEX = 0;
+  CD_REG3 = 0x80;
+  dma3_read(dma_buf, 256);
+  CHECK_EQ("DMA first half done", dma_wait(3), 1);
+  CHECK_EQ("data FIFO half full", CD_INDEX & 0x40, 0x40);
+  dma3_read(dma_buf + 256, 256);
+  CHECK_EQ("DMA second half done", dma_wait(3), 1);
+  CHECK_EQ("DMA sector 1 bytes wrong", letters_wrong((const uint8_t *)dma_buf, 2048, 2048), 0);
+  CD_REG3 = 0x00;
+  send(0x09, 0, 0);
+  wait_int_skipping_data();
+  wait_int();
+}
 
 int main(void) {
   send(0x01, 0, 0);
@@ -110,13 +160,14 @@ int main(void) {
   for (int s = 0; s < 2; ++s) {
     CHECK_EQ("data sector INT", wait_int(), 1);
     read_sector(sector, 2048);
-    for (int i = 0; i < 2048; ++i)
-      if (sector[i] != (uint8_t)('A' + ((s * 2048 + i) * 7 + 3) % 26)) ++bad;
+    bad += letters_wrong(sector, s * 2048, 2048);
   }
   CHECK_EQ("DATA.BIN bytes wrong", bad, 0);
   send(0x09, 0, 0);
   wait_int_skipping_data();
   wait_int();
+
+  test_dma3();
 
   /* An unknown command: INT5 with stat | error and 0x40. */
   send(0x1F, 0, 0);

@@ -1,0 +1,34 @@
+# The cdboot boot ROM (tests/roms/cdboot/): boots discs made by mkdisc by reading them through the
+# CD-ROM controller itself, as a BIOS does. Needs cdrom.cmake's DATA.BIN (CDROM_DATA) and discs.
+set(CDBOOT_DIR ${CMAKE_CURRENT_SOURCE_DIR}/cdboot)
+psx_add_rom_image(cdboot_rom
+  SOURCES ${CDBOOT_DIR}/rom_start.S ${CDBOOT_DIR}/rom_main.c ${CDBOOT_DIR}/cd.c ${PSX_GUEST_DIR}/runtime.c
+  LINKER_SCRIPT ${CDBOOT_DIR}/rom.ld
+  DEPENDS ${CDBOOT_DIR}/cd.h)
+set(CDBOOT_ROM ${CMAKE_CURRENT_BINARY_DIR}/cdboot_rom.bin)
+
+# A disc with a test program that checks what the ROM left it and reads its own data file.
+psx_add_exe(cdboot_disc_check SOURCES ${CDBOOT_DIR}/disc_check.c ${CDBOOT_DIR}/cd.c INCLUDES ${CDBOOT_DIR})
+add_custom_command(OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.bin
+  COMMAND mkdisc -o ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue --exe ${CMAKE_CURRENT_BINARY_DIR}/cdboot_disc_check.exe
+          --exe-name BOOT.EXE --cnf ${CMAKE_CURRENT_SOURCE_DIR}/cdrom_boot.cnf ${CDROM_DATA}=DATA.BIN
+  DEPENDS mkdisc cdboot_disc_check ${CMAKE_CURRENT_BINARY_DIR}/cdboot_disc_check.exe
+          ${CMAKE_CURRENT_SOURCE_DIR}/cdrom_boot.cnf ${CDROM_DATA} VERBATIM)
+add_custom_target(cdboot_test_disc ALL DEPENDS ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue)
+add_test(NAME rom.cdboot_disc_check
+  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0
+          "-DEXPECT_OUTPUT=cdboot: psxrl disc boot ROM\ncdboot: SYSTEM.CNF BOOT=\\BOOT.EXE"
+          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue|--frames|600|--expect-exit
+          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+
+# The disc the HLE fast boot test uses boots through the ROM as well.
+add_test(NAME rom.cdboot_hle_disc
+  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0 "-DEXPECT_OUTPUT=booted from disc"
+          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${CMAKE_CURRENT_BINARY_DIR}/cdrom_boot.cue|--frames|600|--expect-exit
+          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+
+# A disc without SYSTEM.CNF or PSX.EXE: the ROM reports it and stops with code 3.
+add_test(NAME rom.cdboot_no_exe
+  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=3 "-DEXPECT_OUTPUT=cdboot: PSX.EXE"
+          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue|--frames|600|--expect-exit
+          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)

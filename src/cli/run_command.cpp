@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/cli.h"
+#include "cli/input_script.h"
 #include "core/console.h"
 #include "core/input_error.h"
 #include "core/sio/dualshock.h"
@@ -21,6 +22,7 @@ const char* kRunHelp =
     "usage: psxrl run --exe FILE | --disc FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
     "                 [--pad1 TYPE] [--pad2 TYPE] [--memcard1 FILE] [--memcard2 FILE]\n"
     "                 [--screenshot FILE] [--vram FILE] [--wav FILE]\n"
+    "                 [--input FILE] [--screenshot-at FRAME FILE]...\n"
     "\n"
     "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
     "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
@@ -40,6 +42,12 @@ const char* kRunHelp =
     "  --screenshot FILE  write the displayed picture as PNG at the end of the run\n"
     "  --vram FILE      write all of VRAM (1024x512) as PNG at the end of the run\n"
     "  --wav FILE       write the whole run's audio (stereo 16-bit, 44.1 kHz) to FILE\n"
+    "  --input FILE     press port 1's buttons from a script: one line per press,\n"
+    "                   FRAME BUTTONS [HOLD_FRAMES], frames counted from 0, BUTTONS joined\n"
+    "                   by '+' from up down left right cross circle square triangle l1 l2\n"
+    "                   r1 r2 start select l3 r3, HOLD_FRAMES default 1, '#' comments\n"
+    "  --screenshot-at FRAME FILE  write the displayed picture as PNG when frame FRAME\n"
+    "                   (counted from 0) ends; repeatable; needs --frames above FRAME\n"
     "\n"
     "exit codes:\n"
     "  the program's own exit code (written to 0x1F802082; values above 255 exit as 255)\n"
@@ -70,6 +78,27 @@ bool parse_pad(const std::string& s, std::unique_ptr<psx::Pad>& out) {
   return true;
 }
 
+struct ScreenshotAt {
+  unsigned long long frame;
+  std::string path;
+};
+
+// Runs `frames` frames one at a time, pressing the script's buttons on port 1 before the frame
+// each is due in and writing the screenshots due when a frame ends. False (with `error`) when a
+// screenshot cannot be written.
+bool run_scripted(psx::Console& console, unsigned long long frames, const std::vector<InputPress>& presses,
+                  const std::vector<ScreenshotAt>& shots, std::string& error) {
+  size_t next_press = 0;
+  for (unsigned long long f = 0; f < frames && !console.stopped(); ++f) {
+    for (; next_press < presses.size() && presses[next_press].frame == f; ++next_press)
+      console.press_for(1, presses[next_press].buttons, presses[next_press].hold);
+    console.run_frame();
+    for (const ScreenshotAt& shot : shots)
+      if (shot.frame == f && !console.gpu().write_display_png(shot.path, error)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
@@ -78,6 +107,8 @@ int run_command(const std::vector<std::string>& args) {
   bool expect_exit = false, quiet = false;
   std::unique_ptr<psx::Pad> pads[2] = {std::make_unique<psx::DigitalPad>(), nullptr};
   std::string memcards[2];
+  std::string input_path;
+  std::vector<ScreenshotAt> shots;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](std::string& out) {
@@ -105,6 +136,13 @@ int run_command(const std::vector<std::string>& args) {
       if (!value(vram_png)) return usage("--vram needs a file");
     } else if (a == "--wav") {
       if (!value(wav)) return usage("--wav needs a file");
+    } else if (a == "--input") {
+      if (!value(input_path)) return usage("--input needs a file");
+    } else if (a == "--screenshot-at") {
+      ScreenshotAt shot;
+      if (!value(v) || !parse_count(v, shot.frame) || !value(shot.path))
+        return usage("--screenshot-at needs a frame number and a file");
+      shots.push_back(shot);
     } else if (a == "--expect-exit") {
       expect_exit = true;
     } else if (a == "--quiet") {
@@ -119,6 +157,13 @@ int run_command(const std::vector<std::string>& args) {
     }
   }
   if (exe.empty() && disc.empty()) return usage("--exe is required (or --disc to boot a disc)");
+  const bool scripted = !input_path.empty() || !shots.empty();
+  if (scripted && cycles) return usage("--input and --screenshot-at count frames: use --frames, not --cycles");
+  for (const ScreenshotAt& shot : shots)
+    if (shot.frame >= frames)
+      return usage("--screenshot-at " + std::to_string(shot.frame) + " is never reached: --frames " +
+                   std::to_string(frames) + " runs frames 0 to " + std::to_string(frames - 1));
+  std::vector<InputPress> presses;
 
   psx::Console console;
   console.on_tty = [](char c) { std::fputc(c, stdout); };
@@ -126,6 +171,7 @@ int run_command(const std::vector<std::string>& args) {
     if (!quiet) std::fprintf(stderr, "psxrl: %s\n", m.c_str());
   };
   try {
+    if (!input_path.empty()) presses = read_input_script(input_path);
     if (!bios.empty()) console.load_bios(bios);
     if (!disc.empty()) console.insert_disc(disc);
     if (!exe.empty()) console.boot_exe(exe);
@@ -144,10 +190,15 @@ int run_command(const std::vector<std::string>& args) {
   }
 
   if (!wav.empty()) console.spu().set_output_limit(SIZE_MAX);
-  if (cycles) console.run_cycles(cycles);
-  else console.run_frames(frames);
-  std::fflush(stdout);
   std::string png_error;
+  if (cycles) console.run_cycles(cycles);
+  else if (!scripted) console.run_frames(frames);
+  else if (!run_scripted(console, frames, presses, shots, png_error)) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "psxrl run: %s\n", png_error.c_str());
+    return kBadInput;
+  }
+  std::fflush(stdout);
   if ((!screenshot.empty() && !console.gpu().write_display_png(screenshot, png_error)) ||
       (!vram_png.empty() && !console.gpu().write_vram_png(vram_png, png_error))) {
     std::fprintf(stderr, "psxrl run: %s\n", png_error.c_str());

@@ -119,6 +119,23 @@ TEST(TumbleScreens, TitleLevelSelectAndStart) {
   EXPECT_EQ(p.g.pub.level, p.g.pub.level_count);
 }
 
+TEST(TumbleScreens, LevelStartedByCrossWaitsForItsRelease) {
+  // README: a level started from a menu takes no move until every button is up, so holding the
+  // confirming Cross (JUMP in play) or pressing Up with it does nothing until the pad is let go.
+  Player p;
+  p.frame(PAD_START);
+  p.frame(0);
+  p.frame(PAD_CROSS);
+  ASSERT_EQ(p.g.pub.state, (uint32_t)STATE_PLAYING);
+  p.frames(5, PAD_CROSS);
+  EXPECT_EQ(p.g.pub.move, (uint32_t)MOVE_NONE);
+  p.frame(PAD_UP);
+  EXPECT_EQ(p.g.pub.move, (uint32_t)MOVE_NONE);
+  p.frame(0);
+  p.frame(PAD_UP);
+  EXPECT_EQ(p.g.pub.move, (uint32_t)MOVE_FORWARD);
+}
+
 TEST(TumbleScreens, RequestVariableStartsALevelFromAnyScreen) {
   Player p;
   p.g.pub.request_level = 7;

@@ -29,6 +29,12 @@ static void enter(Game *g, uint32_t state) {
   g->pub.events |= TUMBLE_EV_MENU;
 }
 
+/* Starts a level chosen with the pad: the button that chose it must be let go before it moves. */
+static void start_by_pad(Game *g, uint32_t number) {
+  game_start_level(g, number);
+  g->wait_release = 1;
+}
+
 static void level_select(Game *g, uint32_t pressed) {
   TumbleContract *p = &g->pub;
   uint32_t n = p->level_count;
@@ -39,7 +45,7 @@ static void level_select(Game *g, uint32_t pressed) {
     p->menu_level = (p->menu_level + n - 2) % n + 1;
     p->events |= TUMBLE_EV_MENU;
   } else if (pressed & (PAD_START | PAD_CROSS)) {
-    game_start_level(g, p->menu_level);
+    start_by_pad(g, p->menu_level);
   } else if (pressed & PAD_TRIANGLE) {
     enter(g, STATE_TITLE);
   }
@@ -48,8 +54,14 @@ static void level_select(Game *g, uint32_t pressed) {
 static void after_success(Game *g, uint32_t pressed) {
   TumbleContract *p = &g->pub;
   if (p->state_timer < FRAMES_SUCCESS_SCREEN && !(p->state_timer >= 30 && (pressed & PAD_START))) return;
-  if (p->level < p->level_count) game_start_level(g, p->level + 1);
-  else enter(g, STATE_GAME_OVER);
+  if (p->level >= p->level_count) {
+    enter(g, STATE_GAME_OVER);
+  } else if (p->state_timer < FRAMES_SUCCESS_SCREEN) {
+    start_by_pad(g, p->level + 1); /* Start pressed */
+  } else {
+    game_start_level(g, p->level + 1);
+    g->wait_release = 0;
+  }
 }
 
 void game_frame(Game *g, uint32_t buttons) {
@@ -64,6 +76,7 @@ void game_frame(Game *g, uint32_t buttons) {
     p->request_level = 0;
     if (level <= p->level_count) {
       game_start_level(g, level);
+      g->wait_release = 0;
       return;
     }
   }
@@ -75,7 +88,8 @@ void game_frame(Game *g, uint32_t buttons) {
     case STATE_LEVEL_SELECT: level_select(g, pressed); break;
     case STATE_PLAYING:
       game_play_frame(g);
-      if (p->move == MOVE_NONE) game_begin_move(g, move_from_buttons(buttons));
+      if (!buttons) g->wait_release = 0;
+      if (p->move == MOVE_NONE && !g->wait_release) game_begin_move(g, move_from_buttons(buttons));
       break;
     case STATE_SPIKED:
     case STATE_FALLEN:

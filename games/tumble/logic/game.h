@@ -40,6 +40,8 @@ typedef struct Game {
   int32_t to_x, to_y;      /* tile it lands on */
   uint32_t move_facing;    /* facing when the current move started */
   uint32_t pad_previous;   /* buttons held last frame, for press edges */
+  uint32_t wait_release;   /* 1: a level started by a button press takes no move until every
+                              button is up (the confirming Cross is not a jump) */
   uint32_t rumble_frames;  /* frames of rumble still wanted (crumble warnings, deaths) */
 } Game;
 

@@ -10,7 +10,7 @@
 #define OT_LEN 512
 #define PRIM_WORDS 24576
 
-/* VRAM layout: font (4bpp, 128x32 texels = 32 halfwords wide) at (640,0), its CLUT at (640,64),
+/* VRAM layout: font (4bpp, 128x64 texels = 32 halfwords wide) at (640,0), its CLUT at (640,64),
    the tile texture (15-bit, 32x32) at (704,0). */
 #define FONT_VRAM_X 640
 #define FONT_CLUT_Y 64

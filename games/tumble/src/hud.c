@@ -1,7 +1,7 @@
 /* Font texture upload, text drawing and the in-game HUD (see hud.h). */
 #include "hud.h"
 
-extern const uint16_t tumble_font_texture[32 * 32];
+extern const uint16_t tumble_font_texture[32 * 64];
 
 #define TEXT_NEUTRAL 0x808080 /* texture blending colour that keeps texels as they are */
 
@@ -9,7 +9,7 @@ void hud_init(void) {
   /* 4bpp palette: 0 transparent (0000h is never drawn), 1 white glyph, 2 opaque black shadow
      (8000h: black with the mask bit, which the GPU draws). */
   uint16_t clut[16] = {0x0000, 0x7FFF, 0x8000};
-  gpu_upload(FONT_VRAM_X, 0, 32, 32, tumble_font_texture);
+  gpu_upload(FONT_VRAM_X, 0, 32, 64, tumble_font_texture);
   gpu_upload(FONT_VRAM_X, FONT_CLUT_Y, 16, 1, clut);
 }
 
@@ -32,7 +32,7 @@ void hud_text(Gpu *gpu, int x, int y, const char *s, uint32_t colour) {
     if (!p) return;
     p[0] = 0x74000000 | colour;  /* GP0(74h) 8x8 textured sprite, texture blended */
     p[1] = gpu_xy(x, y);
-    p[2] = clut << 16 | (uint32_t)(g / 16 * 8) << 8 | (uint32_t)(g % 16 * 8);
+    p[2] = clut << 16 | (uint32_t)(g / 16 * 16) << 8 | (uint32_t)(g % 16 * 8);
   }
   /* Linked after the sprites, so drawn before them: sprites take their page from GP0(E1h). */
   font_page(gpu);
@@ -44,7 +44,7 @@ void hud_text_big(Gpu *gpu, int x, int y, const char *s, int scale, uint32_t col
   for (; *s; ++s, x += size) {
     int g = glyph(*s);
     if (!g) continue;
-    uint32_t u = (uint32_t)(g % 16 * 8), v = (uint32_t)(g / 16 * 8);
+    uint32_t u = (uint32_t)(g % 16 * 8), v = (uint32_t)(g / 16 * 16);
     uint32_t *p = gpu_prim(gpu, 0, 9);
     if (!p) return;
     p[0] = 0x2C000000 | colour;  /* GP0(2Ch) textured quad, texture blended */

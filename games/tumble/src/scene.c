@@ -179,7 +179,8 @@ void scene_draw(Gpu *gpu, const Game *g) {
       draw_tile(gpu, g, x, y);
       if (g->tile[y][x] == TILE_SPIKES) draw_spikes(gpu, x, y);
       if (g->item[y][x] != ITEM_NONE) draw_item(gpu, g, x, y);
-      if (g->tile[y][x] == TILE_EXIT && p->keys_held >= p->keys_needed) {
+      /* The open exit's beacon; gone once the ball stands on it, so it does not cover the ball. */
+      if (g->tile[y][x] == TILE_EXIT && p->keys_held >= p->keys_needed && p->state != STATE_SUCCESS) {
         Vert at = {x * TILE + TILE / 2, 120, y * TILE + TILE / 2};
         billboard_diamond(gpu, at, 30, 90, gpu_rgb(200, 255, 200), gpu_rgb(0, 160, 40), 1);
       }

@@ -1,14 +1,19 @@
-/* Build-time font generator: turns the built-in bitmap font below (5x7 glyphs in 8x8 cells, ASCII
-   32..95) into a 4-bit-per-pixel PlayStation texture, 128x32 texels (16 glyphs a row, 4 rows),
-   stored as VRAM halfwords (4 texels each, leftmost texel in the low nibble). Texel value 1 is the
-   glyph, 2 its drop shadow one texel down and right, 0 transparent (the CLUT maps 0 to 0000h,
-   which the GPU does not draw). Usage: fontgen OUT.c (written to a temporary file, then renamed). */
+/* Build-time font generator: turns the built-in bitmap font below (5x7 glyphs, ASCII 32..95) into a
+   4-bit-per-pixel PlayStation texture, 128x64 texels: 16 glyphs a row, 4 rows, each glyph in the
+   top 8x8 of an 8x16 cell. The empty lower half is there because a magnified textured quad
+   samples up to one texel past its far edge (the GPU's attribute interpolation starts half a texel
+   in), so big text would show the top of the glyph below; the blank column 0 of each cell
+   serves the same purpose at the right edge. The texture is stored as VRAM halfwords (4 texels
+   each, leftmost texel in the low nibble). Texel value 1 is the glyph, 2 its drop shadow one texel
+   down and right, 0 transparent (the CLUT maps 0 to 0000h, which the GPU does not draw).
+   Usage: fontgen OUT.c (written to a temporary file, then renamed). */
 #include <stdio.h>
 #include <string.h>
 
 #define GLYPHS 64
 #define TEX_W 128
-#define TEX_H 32
+#define TEX_H 64
+#define CELL_H 16
 
 /* One glyph = 7 rows of 5 columns; '#' is ink. Characters without art are blank. */
 static const struct { char ch; const char *rows; } font[] = {
@@ -41,7 +46,7 @@ static const struct { char ch; const char *rows; } font[] = {
 static unsigned char texel[TEX_H][TEX_W];
 
 static void draw_glyph(int index, const char *rows, int value, int dx, int dy) {
-  int cx = (index % 16) * 8 + 1 + dx, cy = (index / 16) * 8 + dy;
+  int cx = (index % 16) * 8 + 1 + dx, cy = (index / 16) * CELL_H + dy;
   for (int y = 0; y < 7; ++y)
     for (int x = 0; x < 5; ++x)
       if (rows[y * 5 + x] == '#' && texel[cy + y][cx + x] != 1) texel[cy + y][cx + x] = (unsigned char)value;

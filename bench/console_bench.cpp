@@ -1,5 +1,6 @@
 // Console API costs: save and load time and state size (raw and compressed), and the frame-time
 // cost of memory watches (none vs ten, placed on the pages the workload writes).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -44,9 +45,13 @@ int main() {
     std::printf("console_bench: save state %s: %zu bytes, save %.3f ms, load %.3f ms\n",
                 compress ? "compressed" : "raw", blob.size(), save * 1000, load * 1000);
   }
-  std::printf("console_bench: memory watch cost\n");
-  double base = frame_ms(0, 300);
-  double ten = frame_ms(10, 300);
+  // The machine may be shared: alternate the two set-ups and keep each one's best run.
+  std::printf("console_bench: memory watch cost (best of 3 alternating runs)\n");
+  double base = 1e9, ten = 1e9;
+  for (int round = 0; round < 3; ++round) {
+    base = std::min(base, frame_ms(0, 300));
+    ten = std::min(ten, frame_ms(10, 300));
+  }
   std::printf("console_bench: ten watches cost %+.1f%% frame time\n", (ten / base - 1) * 100);
   return 0;
 }

@@ -50,6 +50,19 @@ TEST(TumbleBoot, ExeAndDiscGiveIdenticalRam) {
   EXPECT_EQ(hash(user(exe)), hash(user(disc)));
 }
 
+TEST(TumbleBoot, DiscThroughTheProjectBootRomGivesIdenticalRam) {
+  // No HLE at all: the project's disc boot ROM reads SYSTEM.CNF and TUMBLE.EXE through the
+  // emulated CD-ROM drive, as a BIOS would.
+  TumbleConsole exe(Boot::Exe), rom(Boot::Disc, PSXRL_BUILD_DIR "/tests/roms/cdboot_rom.bin");
+  play_a_little(exe);
+  play_a_little(rom);
+  // Everything from the load address up to the stack's last 4 KiB: the ROM's own last calls run
+  // on the game's stack (SP is set before the jump) and leave words below the game's deepest
+  // frame that the game never reads, as a BIOS's Exec() does too.
+  auto user = [](TumbleConsole& t) { return t.console.ram().subspan(0x10000, 0x1FF000 - 0x10000); };
+  EXPECT_EQ(hash(user(exe)), hash(user(rom)));
+}
+
 TEST(TumbleBoot, DemoScriptPlaysLevel1FromTheTitleToTheExit) {
   // The README's main command runs this script with `psxrl run --input`; the same presses here.
   std::vector<psxrl::cli::InputPress> presses =

@@ -71,14 +71,15 @@ int cd_init(void) {
 
 static uint8_t to_bcd(uint32_t v) { return (uint8_t)((v / 10) << 4 | (v % 10)); }
 
-/* Pause: sectors that arrive before its first response are read past. */
+/* Pause: sectors (INT1) and the end of the disc (INT4, DataEnd, when the file read last ends
+   where the disc does) that arrive before its first response are read past. */
 static int cd_pause(void) {
   cd_send(0x09, 0, 0);
   int type;
   do {
     type = cd_wait();
     cd_ack();
-  } while (type == 1);
+  } while (type == 1 || type == 4);
   if (type != 3) return type == 0 ? CD_TIMEOUT : CD_UNEXPECTED;
   return cd_expect(2);
 }

@@ -9,6 +9,7 @@
 
 #include "cli/cli.h"
 #include "cli/input_script.h"
+#include "cli/pacer.h"
 #include "core/console.h"
 #include "core/input_error.h"
 #include "core/sio/dualshock.h"
@@ -35,6 +36,7 @@ const char* kRunHelp =
     "  --cycles N       stop after N CPU cycles (instead of --frames)\n"
     "  --expect-exit    reaching the limit is a failure (exit 3): the program must exit itself\n"
     "  --quiet          no summary or diagnostics on standard error\n"
+    "  --realtime       run no faster than the console (59.94 frames per second), to watch\n"
     "  --pad1 TYPE      controller in port 1: digital (default), dualshock or none\n"
     "  --pad2 TYPE      controller in port 2: none (default), digital or dualshock\n"
     "  --memcard1 FILE  memory card in slot 1 (raw 128 KiB image; created on the first write)\n"
@@ -84,15 +86,16 @@ struct ScreenshotAt {
 };
 
 // Runs `frames` frames one at a time, pressing the script's buttons on port 1 before the frame
-// each is due in and writing the screenshots due when a frame ends. False (with `error`) when a
-// screenshot cannot be written.
+// each is due in and writing the screenshots due when a frame ends, paced to real time when a
+// pacer is given. False (with `error`) when a screenshot cannot be written.
 bool run_scripted(psx::Console& console, unsigned long long frames, const std::vector<InputPress>& presses,
-                  const std::vector<ScreenshotAt>& shots, std::string& error) {
+                  const std::vector<ScreenshotAt>& shots, Pacer* pacer, std::string& error) {
   size_t next_press = 0;
   for (unsigned long long f = 0; f < frames && !console.stopped(); ++f) {
     for (; next_press < presses.size() && presses[next_press].frame == f; ++next_press)
       console.press_for(1, presses[next_press].buttons, presses[next_press].hold);
     console.run_frame();
+    if (pacer) pacer->wait_frame();
     for (const ScreenshotAt& shot : shots)
       if (shot.frame == f && !console.gpu().write_display_png(shot.path, error)) return false;
   }
@@ -104,7 +107,7 @@ bool run_scripted(psx::Console& console, unsigned long long frames, const std::v
 int run_command(const std::vector<std::string>& args) {
   std::string exe, bios, disc, screenshot, vram_png, wav;
   unsigned long long frames = 3600, cycles = 0;
-  bool expect_exit = false, quiet = false;
+  bool expect_exit = false, quiet = false, realtime = false;
   std::unique_ptr<psx::Pad> pads[2] = {std::make_unique<psx::DigitalPad>(), nullptr};
   std::string memcards[2];
   std::string input_path;
@@ -147,6 +150,8 @@ int run_command(const std::vector<std::string>& args) {
       expect_exit = true;
     } else if (a == "--quiet") {
       quiet = true;
+    } else if (a == "--realtime") {
+      realtime = true;
     } else if (a == "--pad1" || a == "--pad2") {
       if (!value(v) || !parse_pad(v, pads[a[5] - '1']))
         return usage(a + " needs digital, dualshock or none");
@@ -157,8 +162,8 @@ int run_command(const std::vector<std::string>& args) {
     }
   }
   if (exe.empty() && disc.empty()) return usage("--exe is required (or --disc to boot a disc)");
-  const bool scripted = !input_path.empty() || !shots.empty();
-  if (scripted && cycles) return usage("--input and --screenshot-at count frames: use --frames, not --cycles");
+  const bool scripted = !input_path.empty() || !shots.empty() || realtime;
+  if (scripted && cycles) return usage("--input, --screenshot-at and --realtime count frames: use --frames, not --cycles");
   for (const ScreenshotAt& shot : shots)
     if (shot.frame >= frames)
       return usage("--screenshot-at " + std::to_string(shot.frame) + " is never reached: --frames " +
@@ -191,9 +196,12 @@ int run_command(const std::vector<std::string>& args) {
 
   if (!wav.empty()) console.spu().set_output_limit(SIZE_MAX);
   std::string png_error;
-  if (cycles) console.run_cycles(cycles);
-  else if (!scripted) console.run_frames(frames);
-  else if (!run_scripted(console, frames, presses, shots, png_error)) {
+  Pacer pacer(60000.0 / 1001.0);  // NTSC frame rate
+  if (cycles) {
+    console.run_cycles(cycles);
+  } else if (!scripted) {
+    console.run_frames(frames);
+  } else if (!run_scripted(console, frames, presses, shots, realtime ? &pacer : nullptr, png_error)) {
     std::fflush(stdout);
     std::fprintf(stderr, "psxrl run: %s\n", png_error.c_str());
     return kBadInput;

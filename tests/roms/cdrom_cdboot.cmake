@@ -4,7 +4,7 @@ set(CDBOOT_DIR ${CMAKE_CURRENT_SOURCE_DIR}/cdboot)
 psx_add_rom_image(cdboot_rom
   SOURCES ${CDBOOT_DIR}/rom_start.S ${CDBOOT_DIR}/rom_main.c ${CDBOOT_DIR}/cd.c ${PSX_GUEST_DIR}/runtime.c
   LINKER_SCRIPT ${CDBOOT_DIR}/rom.ld
-  DEPENDS ${CDBOOT_DIR}/cd.h)
+  DEPENDS ${CDBOOT_DIR}/cd.h ${CMAKE_CURRENT_SOURCE_DIR}/rom_init.inc)
 set(CDBOOT_ROM ${CMAKE_CURRENT_BINARY_DIR}/cdboot_rom.bin)
 
 # A disc with a test program that checks what the ROM left it and reads its own data file.

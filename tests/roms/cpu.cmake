@@ -7,7 +7,8 @@ psx_add_rom_test(cpu_alu SOURCES cpu_alu.c)
 
 # The project's boot ROM exercises the BIOS boot + side-load path without Sony's BIOS.
 psx_add_rom_image(bootrom SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bootrom.S
-                  LINKER_SCRIPT ${CMAKE_CURRENT_SOURCE_DIR}/bootrom.ld)
+                  LINKER_SCRIPT ${CMAKE_CURRENT_SOURCE_DIR}/bootrom.ld
+                  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/rom_init.inc)
 add_test(NAME rom.bootrom_sideload
   COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0 "-DEXPECT_OUTPUT=psxrl boot ROM\nhello from the PlayStation"
           -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CMAKE_CURRENT_BINARY_DIR}/bootrom.bin|--exe|${CMAKE_CURRENT_BINARY_DIR}/hello.exe|--frames|60|--expect-exit

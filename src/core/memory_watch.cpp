@@ -34,14 +34,14 @@ void MemoryWatches::watch(const std::string& key, u32 address, u32 length, bool 
   w.fresh_only = fresh_only;
   w.flow_limit_frames = flow_limit_frames;
   watches_.push_back(std::move(w));
-  rebuild_pages();
+  rebuild_blocks();
 }
 
 void MemoryWatches::unwatch(const std::string& key) {
   for (size_t i = 0; i < watches_.size(); ++i)
     if (watches_[i].key == key) {
       watches_.erase(watches_.begin() + static_cast<long>(i));
-      rebuild_pages();
+      rebuild_blocks();
       return;
     }
   throw std::invalid_argument("no memory watch named '" + key + "'");
@@ -53,11 +53,11 @@ MemoryWatches::Watch& MemoryWatches::find(const std::string& key) {
   throw std::invalid_argument("no memory watch named '" + key + "'");
 }
 
-void MemoryWatches::rebuild_pages() {
-  ram_pages_.fill(0);
+void MemoryWatches::rebuild_blocks() {
+  ram_blocks_.fill(0);
   for (const Watch& w : watches_)
     if (w.begin < Bus::kRamSize)
-      for (u32 page = w.begin >> 12; page <= (w.end - 1) >> 12; ++page) ram_pages_[page] = 1;
+      for (u32 block = w.begin >> 5; block <= (w.end - 1) >> 5; ++block) ram_blocks_[block >> 6] |= u64(1) << (block & 63);
 }
 
 void MemoryWatches::on_write(u32 phys, u32 width, u32 old_value, u32 new_value, u64 frame, Cycles cycle) {

@@ -39,8 +39,11 @@ class MemoryWatches {
   void wake(const std::string& key) { find(key).asleep = false; }
   bool empty() const { return watches_.empty(); }
 
-  // Bus side: is this physical RAM offset on a watched 4 KiB page? (cheap pre-check)
-  bool ram_page_watched(u32 ram_offset) const { return ram_pages_[ram_offset >> 12] != 0; }
+  // Bus side: is this physical RAM offset in a 32-byte block that a watch touches? (a cheap
+  // pre-check; aligned stores never straddle two blocks)
+  bool ram_block_watched(u32 ram_offset) const {
+    return (ram_blocks_[ram_offset >> 11] >> ((ram_offset >> 5) & 63)) & 1;
+  }
   void on_write(u32 phys, u32 width, u32 old_value, u32 new_value, u64 frame, Cycles cycle);
   // Console side, at each frame boundary: delivers coalesced events whose window has ended.
   void on_frame(u64 frame, Cycles cycle);
@@ -60,11 +63,11 @@ class MemoryWatches {
     WatchEvent coalesced{};
   };
   Watch& find(const std::string& key);
-  void rebuild_pages();
+  void rebuild_blocks();
 
   std::vector<Watch> watches_;
   std::vector<WatchEvent> events_;
-  std::array<u8, 512> ram_pages_{};  // 2 MiB / 4 KiB
+  std::array<u64, 1024> ram_blocks_{};  // one bit per 32 bytes of the 2 MiB
 };
 
 }  // namespace psx

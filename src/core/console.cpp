@@ -43,6 +43,7 @@ Console::Console()
   hle_.on_tty = bus_.on_tty;
   hle_.on_log = bus_.on_log;
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
+  hle_.pad_at = [this](int port) -> SioDevice* { return sio0_.pad(port); };
   bus_.map_io(Cdrom::kBase, Cdrom::kMapSize, &cdrom_);
   cdrom_.on_log = bus_.on_log;
   // SIO0: a digital pad in controller port 1 by default (programs and BIOSes expect one).

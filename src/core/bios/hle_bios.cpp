@@ -1,4 +1,5 @@
-// HLE kernel: vector installation, BIOS call dispatch, printf and exception handling.
+// HLE kernel: vector and stub installation, BIOS call dispatch over the A0h/B0h/C0h tables, TTY
+// output calls, system information, and guest memory helpers.
 #include "core/bios/hle_bios.h"
 
 #include <cstdio>
@@ -9,20 +10,56 @@ namespace psx {
 
 namespace {
 constexpr u32 kA0 = 0xA0, kB0 = 0xB0, kC0 = 0xC0, kExceptionVector = 0x80;
-constexpr u32 kJrRa = 0x03E00008;
-enum Reg : u32 { kV0 = 2, kA0r = 4, kA1 = 5, kA2 = 6, kA3 = 7, kT1 = 9, kSp = 29, kFp = 30, kRa = 31 };
+constexpr u32 kJrRa = 0x03E00008, kSyscall = 0x0000000C;
+constexpr u32 kV0 = 2, kA0r = 4, kA1 = 5, kA2 = 6, kA3 = 7, kT1 = 9, kSp = 29, kRa = 31;
+constexpr u32 j(u32 target) { return 0x08000000 | ((target >> 2) & 0x03FFFFFF); }
+constexpr u32 li_t1(u32 v) { return 0x24090000 | v; }  // ADDIU t1, zero, v
 }  // namespace
 
 void HleBios::install() {
   // Each vector: the marker, then "jr ra; nop" so a disabled hook still returns to the caller.
   for (u32 v : {kA0, kB0, kC0, kExceptionVector}) {
-    Bus::store_le32(bus_.ram() + v, kMarker);
-    Bus::store_le32(bus_.ram() + v + 4, kJrRa);
-    Bus::store_le32(bus_.ram() + v + 8, 0);
+    poke32(v, kMarker);
+    poke32(v + 4, kJrRa);
+    poke32(v + 8, 0);
   }
+  const u32 stubs[] = {kSyscall, 0, j(kA0), 0, j(kB0), 0, j(kB0), li_t1(0x17)};
+  for (u32 i = 0; i < 8; ++i) poke32(kReturnStub + 4 * i, stubs[i]);
+  // ResetEntryInt's exit buffer: ra = ReturnFromException, sp = the exception stack, rest zero.
+  for (u32 i = 0; i < 12; ++i) poke32(kDefaultExit + 4 * i, 0);
+  poke32(kDefaultExit, kRfeStub);
+  poke32(kDefaultExit + 4, kExceptionStack);
+  const char version[] = "psxrl HLE kernel";
+  for (u32 i = 0; i < sizeof version; ++i) poke8(kVersionString + i, static_cast<u8>(version[i]));
+
+  // The chains as the BIOS sets them up at boot: the root counter handlers in chain 1 (VBlank
+  // first), DefInt in chain 3; the pad handler waits for StartPad.
+  chains_ = {};
+  for (u32 id = 0; id < kNativeCount; ++id) {
+    u32 e = kKernelElems + 16 * id;
+    poke32(e, 0), poke32(e + 4, 0), poke32(e + 8, kNativeFuncs + 4 * id), poke32(e + 12, 0);
+  }
+  for (u32 id : {kRcnt0, kRcnt1, kRcnt2, kRcntVblank}) enqueue(1, kKernelElems + 16 * id);
+  enqueue(3, kKernelElems + 16 * kDefInt);
+
   // Post-boot state: kernel mode, COP2 enabled, hardware interrupts unmasked in SR, I_MASK 0.
   cpu_.cop0().sr = Cop0::kCU2 | Cop0::kIP2 | Cop0::kIEc;
-  custom_exit_ = 0;
+  exit_buf_ = kDefaultExit;
+  dispatching_ = return_now_ = false;
+  resume_.clear();
+  callbacks_.clear();
+  events_ = {};
+  clear_rcnt_ = {1, 1, 1, 1};
+  clear_pad_ = 1;
+  pad_buf_ = {};
+  pad_started_ = false;
+  heap_ = {};
+  kernel_heap_ = {kKernelHeap, kKernelHeap};
+  poke32(kKernelHeap, (kKernelHeapEnd - kKernelHeap - 4));
+  kernel_heap_.end = kKernelHeapEnd;
+  rand_seed_ = 0x24040001;
+  strtok_next_ = 0;
+  conf_ = {kMaxEvents, 4, 0x801FFF00};
 }
 
 bool HleBios::handle(u32 pc) {
@@ -31,7 +68,7 @@ bool HleBios::handle(u32 pc) {
   switch (p) {
     case kA0: call_a0(cpu_.reg(kT1) & 0xFF); break;
     case kB0: call_b0(cpu_.reg(kT1) & 0xFF); break;
-    case kC0: unsupported("C0h", cpu_.reg(kT1) & 0xFF); break;
+    case kC0: call_c0(cpu_.reg(kT1) & 0xFF); break;
     case kExceptionVector: exception(); break;
     default: return false;
   }
@@ -53,95 +90,94 @@ void HleBios::unsupported(const char* table, u32 fn) {
 }
 
 void HleBios::call_a0(u32 fn) {
-  switch (fn) {
-    case 0x1B: return_to_caller(static_cast<u32>(read_string(cpu_.reg(kA0r)).size())); break;  // strlen
-    case 0x2A: {  // memcpy(dst, src, len)
-      u32 d = cpu_.reg(kA0r), s = cpu_.reg(kA1), n = cpu_.reg(kA2);
-      for (u32 i = 0; i < n; ++i) poke8(d + i, peek8(s + i));
-      return_to_caller(d);
-      break;
-    }
-    case 0x2B: {  // memset(dst, value, len)
-      u32 d = cpu_.reg(kA0r), n = cpu_.reg(kA2);
-      for (u32 i = 0; i < n; ++i) poke8(d + i, static_cast<u8>(cpu_.reg(kA1)));
-      return_to_caller(d);
-      break;
-    }
-    case 0x3C: print(std::string(1, static_cast<char>(cpu_.reg(kA0r)))); return_to_caller(cpu_.reg(kA0r)); break;
-    case 0x3E: print(read_string(cpu_.reg(kA0r)) + "\n"); return_to_caller(1); break;  // puts
-    case 0x3F: {                                                                       // printf
-      std::string s = format(cpu_.reg(kA0r));
-      print(s);
-      return_to_caller(static_cast<u32>(s.size()));
-      break;
-    }
-    case 0x44: return_to_caller(0); break;  // FlushCache: the emulated caches are always coherent
-    default: unsupported("A0h", fn); break;
-  }
+  if (string_call(fn) || memory_fill_call(fn) || memory_call(kA0, fn) || tty_call(kA0, fn) ||
+      system_call(kA0, fn))
+    return;
+  unsupported("A0h", fn);
 }
 
 void HleBios::call_b0(u32 fn) {
+  if (event_call(fn) || interrupt_call(kB0, fn) || memory_call(kB0, fn) || tty_call(kB0, fn) ||
+      system_call(kB0, fn))
+    return;
+  unsupported("B0h", fn);
+}
+
+void HleBios::call_c0(u32 fn) {
+  if (interrupt_call(kC0, fn)) return;
+  unsupported("C0h", fn);
+}
+
+// putchar/puts/printf and the file calls on the TTY (fd 0 and 1 are the console, "tty:").
+bool HleBios::tty_call(u32 table, u32 fn) {
+  const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1), a2 = cpu_.reg(kA2);
+  auto write_fd = [&](u32 fd, u32 src, u32 len) {
+    if (fd > 1) return 0xFFFFFFFFu;
+    std::string s;
+    for (u32 i = 0; i < len; ++i) s += static_cast<char>(peek8(src + i));
+    print(s);
+    return len;
+  };
+  auto putc_fd = [&](u32 c, u32 fd) {
+    if (fd <= 1) print(std::string(1, static_cast<char>(c)));
+    return fd <= 1 ? c : 0xFFFFFFFFu;
+  };
+  if (table == kA0) {
+    switch (fn) {
+      case 0x03: return_to_caller(write_fd(a0, a1, a2)); return true;
+      case 0x09: return_to_caller(putc_fd(a0, a1)); return true;
+      case 0x3C: return_to_caller(putc_fd(a0, 1)); return true;
+      case 0x3E: print(read_string(a0) + "\n"); return_to_caller(1); return true;
+      case 0x3F: {
+        std::string s = format(a0);
+        print(s);
+        return_to_caller(static_cast<u32>(s.size()));
+        return true;
+      }
+      default: return false;
+    }
+  }
   switch (fn) {
-    case 0x17:  // ReturnFromException: resume the interrupted program with its registers
-      for (u32 r = 1; r < 32; ++r) cpu_.set_reg(r, saved_regs_[r]);
-      cpu_.set_hi(saved_hi_);
-      cpu_.set_lo(saved_lo_);
-      cpu_.cop0().sr = (cpu_.cop0().sr & ~0xFu) | ((cpu_.cop0().sr >> 2) & 0xF);
-      cpu_.set_pc(cpu_.cop0().epc);
-      break;
-    case 0x18: custom_exit_ = 0; return_to_caller(0); break;                 // SetDefaultExitFromException
-    case 0x19: custom_exit_ = cpu_.reg(kA0r); return_to_caller(0); break;   // SetCustomExitFromException
-    case 0x3D: print(std::string(1, static_cast<char>(cpu_.reg(kA0r)))); return_to_caller(cpu_.reg(kA0r)); break;
-    case 0x3F: print(read_string(cpu_.reg(kA0r)) + "\n"); return_to_caller(1); break;
-    default: unsupported("B0h", fn); break;
+    case 0x35: return_to_caller(write_fd(a0, a1, a2)); return true;
+    case 0x3B: return_to_caller(putc_fd(a0, a1)); return true;
+    case 0x3D: return_to_caller(putc_fd(a0, 1)); return true;
+    case 0x3F: print(read_string(a0) + "\n"); return_to_caller(1); return true;
+    default: return false;
   }
 }
 
-void HleBios::exception() {
-  Cop0& c = cpu_.cop0();
-  u32 code = (c.cause >> 2) & 0x1F;
-  auto rfe = [&] { c.sr = (c.sr & ~0xFu) | ((c.sr >> 2) & 0xF); };
-  if (code == static_cast<u32>(Exception::Syscall)) {
-    // The saved IEp (SR bit 2) is what RFE restores, so the critical section calls edit it.
-    u32 fn = cpu_.reg(kA0r);
-    if (fn == 1) {
-      cpu_.set_reg(kV0, (c.sr & 0x404) == 0x404 ? 1 : 0);
-      c.sr &= ~0x404u;
-    } else if (fn == 2) {
-      c.sr |= 0x404;
+// Cache, GPU helpers, configuration and the calls that have nothing to do without a BIOS CD
+// driver (psx-spx "BIOS GPU Functions", "BIOS Misc Functions").
+bool HleBios::system_call(u32 table, u32 fn) {
+  if (table != kA0) return false;
+  const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1), a2 = cpu_.reg(kA2);
+  constexpr u32 kGp0 = 0xBF801810, kGp1 = 0xBF801814;
+  switch (fn) {
+    case 0x44: return_to_caller(0); return true;  // FlushCache: the emulated caches are coherent
+    case 0x48: io_write(kGp1, a0, 4); return_to_caller(cpu_.reg(kV0)); return true;
+    case 0x49: io_write(kGp0, a0, 4); return_to_caller(0); return true;
+    case 0x4A:
+      for (u32 i = 0; i < a1; ++i) io_write(kGp0, peek32(a0 + 4 * i), 4);
+      return_to_caller(0);
+      return true;
+    case 0x4D: return_to_caller(io_read(kGp1, 4)); return true;
+    case 0x4E: return_to_caller(0); return true;  // gpu_sync: commands complete at once here
+    // No BIOS CD-ROM handlers and no TTY device driver exist to remove or add.
+    case 0x72:
+    case 0x99:
+    case 0xA3: return_to_caller(0); return true;
+    case 0x9C: conf_ = {a0, a1, a2}; return_to_caller(0); return true;  // SetConf
+    case 0x9D:                                                          // GetConf
+      poke32(a0, conf_[0]), poke32(a1, conf_[1]), poke32(a2, conf_[2]);
+      return_to_caller(0);
+      return true;
+    case 0xB4: {  // GetSystemInfo: 0 = kernel date (BCD), 2 = version string, 5 = RAM in KiB
+      u32 v = a0 == 0 ? 0x19951204u : a0 == 2 ? kVersionString : a0 == 5 ? 2048u : 0u;
+      return_to_caller(v);
+      return true;
     }
-    rfe();
-    cpu_.set_pc(c.epc + 4);
-    return;
+    default: return false;
   }
-  if (code == static_cast<u32>(Exception::Interrupt)) {
-    if (custom_exit_) {
-      // Like the BIOS: save the program's registers, then longjmp into its handler through the
-      // buffer it registered (ra, sp, fp, s0-s7, gp) with v0 = 1.
-      for (u32 r = 0; r < 32; ++r) saved_regs_[r] = cpu_.reg(r);
-      saved_hi_ = cpu_.hi();
-      saved_lo_ = cpu_.lo();
-      u32 b = custom_exit_;
-      u32 ra = peek32(b);
-      cpu_.set_reg(kSp, peek32(b + 4));
-      cpu_.set_reg(kFp, peek32(b + 8));
-      for (u32 i = 0; i < 8; ++i) cpu_.set_reg(16 + i, peek32(b + 12 + 4 * i));
-      cpu_.set_reg(28, peek32(b + 44));
-      cpu_.set_reg(kV0, 1);
-      cpu_.set_pc(ra);
-      return;
-    }
-    if (warned_.insert(0x100).second && on_log)
-      on_log("HLE kernel: interrupt with no handler registered; returning to the program");
-    rfe();
-    cpu_.set_pc(c.epc);
-    return;
-  }
-  char msg[128];
-  std::snprintf(msg, sizeof msg, "unhandled CPU exception %u (Cause 0x%08X) at EPC 0x%08X, BadVaddr 0x%08X", code,
-                c.cause, c.epc, c.badvaddr);
-  if (on_fatal) on_fatal(msg);
-  cpu_.stop();
 }
 
 u8 HleBios::peek8(u32 addr) const {
@@ -156,6 +192,22 @@ u32 HleBios::peek32(u32 addr) const {
 void HleBios::poke8(u32 addr, u8 v) {
   u32 p = Bus::physical(addr);
   if (p < 0x00800000) bus_.ram()[p & (Bus::kRamSize - 1)] = v;
+}
+
+void HleBios::poke32(u32 addr, u32 v) {
+  for (u32 i = 0; i < 4; ++i) poke8(addr + i, static_cast<u8>(v >> (8 * i)));
+}
+
+u32 HleBios::io_read(u32 addr, u32 width) {
+  u32 v = 0;
+  if (width == 4) bus_.read32(addr, v);
+  else bus_.read16(addr, v);
+  return v;
+}
+
+void HleBios::io_write(u32 addr, u32 v, u32 width) {
+  if (width == 4) bus_.write32(addr, v);
+  else bus_.write16(addr, v);
 }
 
 std::string HleBios::read_string(u32 addr) const {
@@ -177,9 +229,19 @@ void HleBios::print(const std::string& s) {
 }
 
 void HleBios::do_state(StateIO& s) {
-  s.section("HLEK", 1);
+  s.section("HLEK", 2);
   s.pod(saved_regs_);
-  s.pod(saved_hi_), s.pod(saved_lo_), s.pod(custom_exit_);
+  s.pod(saved_hi_), s.pod(saved_lo_), s.pod(saved_sr_), s.pod(saved_epc_);
+  s.pod(exit_buf_), s.pod(chains_);
+  s.boolean(dispatching_), s.boolean(return_now_);
+  s.pod(chain_prio_), s.pod(chain_elem_);
+  s.vec(resume_, 256);
+  s.vec(callbacks_, 256);
+  s.pod(events_);
+  s.pod(clear_rcnt_), s.pod(clear_pad_), s.pod(pad_buf_);
+  s.boolean(pad_started_);
+  s.pod(heap_), s.pod(kernel_heap_);
+  s.pod(rand_seed_), s.pod(strtok_next_), s.pod(conf_);
 }
 
 }  // namespace psx

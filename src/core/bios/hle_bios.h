@@ -1,17 +1,46 @@
 // HLE kernel: runs PlayStation programs without a Sony BIOS. It puts the hardware in its post-boot
-// state, owns the exception vector, and services the BIOS calls simple programs make through the
-// A0h/B0h/C0h vectors. Supported calls (everything else stops the console with a clear message):
-//   A0h:1Bh strlen  A0h:2Ah memcpy  A0h:2Bh memset  A0h:3Ch putchar  A0h:3Eh puts  A0h:3Fh printf
-//   A0h:44h FlushCache
-//   B0h:17h ReturnFromException  B0h:18h SetDefaultExitFromException
-//   B0h:19h SetCustomExitFromException  B0h:3Dh putchar  B0h:3Fh puts
-//   SYSCALL a0=0 NoFunction, a0=1 EnterCriticalSection, a0=2 ExitCriticalSection
+// state, owns the exception vector, and services the BIOS calls programs make through the
+// A0h/B0h/C0h vectors and SYSCALL (psx-spx "Kernel (BIOS)"). Every call not listed here stops the
+// console with a message naming it. Supported calls:
+//   A0h:03h write (fd 0/1 = TTY)  09h putc (fd 0/1)  0Ch strtol  0Dh strtoul  0Eh abs  0Fh labs
+//       10h atoi  11h atol  13h setjmp  14h longjmp  15h strcat  16h strncat  17h strcmp
+//       18h strncmp  19h strcpy  1Ah strncpy  1Bh strlen  1Ch index  1Dh rindex  1Eh strchr
+//       1Fh strrchr  20h strpbrk  21h strspn  22h strcspn  23h strtok  24h strstr  25h toupper
+//       26h tolower  27h bcopy  28h bzero  29h bcmp  2Ah memcpy  2Bh memset  2Ch memmove
+//       2Dh memcmp  2Eh memchr  2Fh rand  30h srand  33h malloc  34h free  37h calloc
+//       38h realloc  39h InitHeap  3Ch putchar  3Eh puts  3Fh printf  44h FlushCache
+//       48h SendGP1Command  49h GPU_cw  4Ah GPU_cwp  4Dh GetGPUStatus  4Eh gpu_sync
+//       72h _96_remove  99h AddDummyTty  9Ch SetConf  9Dh GetConf  A3h DequeueCdIntr
+//       B4h GetSystemInfo
+//   B0h:00h alloc_kernel_memory  01h free_kernel_memory  02h SetRCnt  03h GetRCnt  04h StartRCnt
+//       05h StopRCnt  06h ResetRCnt  07h DeliverEvent  08h OpenEvent  09h CloseEvent
+//       0Ah WaitEvent  0Bh TestEvent  0Ch EnableEvent  0Dh DisableEvent  12h InitPad
+//       13h StartPad  14h StopPad  17h ReturnFromException  18h ResetEntryInt (SetDefaultExit-
+//       FromException)  19h HookEntryInt (SetCustomExitFromException)  20h UnDeliverEvent
+//       35h write  3Bh putc  3Dh putchar  3Fh puts  5Bh ChangeClearPad
+//   C0h:02h SysEnqIntRP  03h SysDeqIntRP  0Ah ChangeClearRCnt
+//   SYSCALL a0=0 NoFunction, 1 EnterCriticalSection, 2 ExitCriticalSection
+// Not supported (they stop the console): the BIOS CD-ROM and memory-card file system (open/read
+// on "cdrom:"/"bu00:", _96_init, _bu_init, _card_*), threads (OpenTh/ChangeTh, SYSCALL 3),
+// Exec/LoadExec/_boot, GetB0Table/GetC0Table (programs that patch kernel code), getchar/gets
+// (no TTY input), qsort/bsearch/lsearch (callbacks into comparison functions), and atof.
+//
+// Interrupts are handled as the BIOS does (psx-spx "BIOS Interrupt/Exception Handling"): the
+// registers go to the current thread's save area, then the four priority chains are walked
+// (elements {next, func2, func1, pad}; func2(v0) runs when func1 returns non-zero), then the
+// exit buffer set by HookEntryInt is longjmp'd to (by default it calls ReturnFromException).
+// The kernel's own chain elements run natively: the root counter handlers (chain 1: VBlank,
+// timer 2, 1, 0: deliver F200000xh/0002h, and when ChangeClearRCnt is on acknowledge and return),
+// the pad handler (chain 2, after StartPad: reads both pads into the InitPad buffers at VBlank)
+// and DefInt (chain 3: delivers F000000xh/1000h for each pending IRQ). Program functions are
+// called with ra pointing at a kernel stub that executes SYSCALL, which hands control back.
 // With a real BIOS the console keeps only the putchar hooks (to print) and the shell-entry hook.
 #pragma once
 #include <array>
 #include <functional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "core/cpu/cpu.h"
 #include "core/state.h"
@@ -20,12 +49,13 @@
 namespace psx {
 
 class Bus;
+class SioDevice;
 
 class HleBios {
  public:
   HleBios(Cpu& cpu, Bus& bus) : cpu_(cpu), bus_(bus) {}
 
-  // Writes the kernel's vectors into RAM and sets SR/I_MASK as the BIOS leaves them at boot.
+  // Writes the kernel's vectors and stubs into RAM and sets SR/I_MASK as the BIOS leaves them.
   void install();
   // Handles the CPU reaching a hooked vector. Returns false when the vector holds program code
   // (the program replaced the kernel's handler), so the CPU should just run it.
@@ -34,6 +64,8 @@ class HleBios {
   std::function<void(char)> on_tty;
   std::function<void(const std::string&)> on_log;
   std::function<void(const std::string&)> on_fatal;
+  // The controller in port 0/1 for the kernel's pad handler (nullptr when none is plugged).
+  std::function<SioDevice*(int port)> pad_at;
 
   void do_state(StateIO& s);
 
@@ -41,27 +73,111 @@ class HleBios {
   static constexpr u32 kMarker = 0x3C00484C;
 
  private:
+  // Kernel RAM layout (the first 64 KiB belong to the kernel, psx-spx "BIOS Memory Map").
+  static constexpr u32 kReturnStub = 0x80000500;   // SYSCALL: a called program function returned
+  static constexpr u32 kRetryA0 = 0x80000508;      // re-enters A0h with the same t1 (busy waits)
+  static constexpr u32 kRetryB0 = 0x80000510;
+  static constexpr u32 kRfeStub = 0x80000518;      // calls B0h:17h ReturnFromException
+  static constexpr u32 kNativeFuncs = 0x80000540;  // pseudo addresses of the native handlers
+  static constexpr u32 kKernelElems = 0x80000580;  // the kernel's chain elements, 16 bytes each
+  static constexpr u32 kDefaultExit = 0x80000600;  // ResetEntryInt's jmp_buf
+  static constexpr u32 kVersionString = 0x80000640;
+  static constexpr u32 kKernelHeap = 0x8000A000, kKernelHeapEnd = 0x8000E000;
+  static constexpr u32 kExceptionStack = 0x8000EFF0;
+  static constexpr u32 kMaxEvents = 16;  // SYSTEM.CNF default "EVENT = 10" (hex)
+  enum Native : u32 { kRcntVblank, kRcnt2, kRcnt1, kRcnt0, kPad, kDefInt, kNativeCount };
+
+  // A BIOS event control block (psx-spx "BIOS Event Functions").
+  struct Event {
+    u32 cls = 0, spec = 0, mode = 0, func = 0;
+    u32 status = 0;  // 0 free, 1000h disabled, 2000h enabled/busy, 4000h enabled/ready
+  };
+  // What to do when a program function called by the kernel returns.
+  struct Resume {
+    enum Kind : u32 { kChainFunc1, kDispatch, kCaller } kind;
+    u32 value;  // kChainFunc1: its func2; kCaller: the caller's ra
+    u32 in_dispatch;
+  };
+  struct Heap {
+    u32 start = 0, end = 0;
+  };
+
+  // Dispatch (hle_bios.cpp).
   void call_a0(u32 fn);
   void call_b0(u32 fn);
-  void exception();
+  void call_c0(u32 fn);
   void return_to_caller(u32 v0);
   void unsupported(const char* table, u32 fn);
+  bool tty_call(u32 table, u32 fn);
+  bool system_call(u32 table, u32 fn);
+
+  // Exceptions and interrupts (hle_interrupts.cpp).
+  void exception();
+  void syscall();
+  void save_thread_registers();
+  void return_from_exception();
+  void dispatch_next();
+  bool run_native(u32 id);
+  bool rcnt_handler(u32 counter);
+  bool pad_handler();
+  void read_pad(int port, u32 buf);
+  void call_guest(u32 func, u32 a0, Resume r);
+  void guest_returned();
+  void enqueue(u32 prio, u32 elem);
+  void dequeue(u32 prio, u32 elem);
+  bool interrupt_call(u32 table, u32 fn);
+
+  // Events (hle_events.cpp).
+  bool event_call(u32 fn);
+  void deliver_event(u32 cls, u32 spec);
+  Event* event_at(u32 handle);
+
+  // Memory allocation (hle_memory.cpp).
+  bool memory_call(u32 table, u32 fn);
+  u32 heap_alloc(Heap& h, u32 size);
+  void heap_free(Heap& h, u32 ptr);
+  u32 heap_realloc(Heap& h, u32 ptr, u32 size);
+
+  // String, memory and number functions of table A0h (hle_string.cpp).
+  bool string_call(u32 fn);
+  bool memory_fill_call(u32 fn);
+  u32 str_to_long(u32 src, u32 end_ptr, u32 base);
+  s32 compare(u32 a, u32 b, u32 n, bool stop_at_nul) const;
+
+  // printf formatting (hle_printf.cpp).
+  std::string format(u32 fmt_addr) const;
 
   u8 peek8(u32 addr) const;
   u32 peek32(u32 addr) const;
   void poke8(u32 addr, u8 v);
+  void poke32(u32 addr, u32 v);
+  u32 io_read(u32 addr, u32 width);
+  void io_write(u32 addr, u32 v, u32 width);
   std::string read_string(u32 addr) const;
   u32 arg(u32 i) const;
-  std::string format(u32 fmt_addr) const;
   void print(const std::string& s);
 
   Cpu& cpu_;
   Bus& bus_;
-  // Registers saved when an interrupt is handed to the program's custom exit
-  // (SetCustomExitFromException); ReturnFromException restores them.
+  // The current thread's register save area (the BIOS keeps it in the TCB).
   std::array<u32, 32> saved_regs_{};
-  u32 saved_hi_ = 0, saved_lo_ = 0;
-  u32 custom_exit_ = 0;
+  u32 saved_hi_ = 0, saved_lo_ = 0, saved_sr_ = 0, saved_epc_ = 0;
+  u32 exit_buf_ = kDefaultExit;
+  std::array<u32, 4> chains_{};
+  bool dispatching_ = false;
+  bool return_now_ = false;
+  u32 chain_prio_ = 0, chain_elem_ = 0;
+  std::vector<Resume> resume_;
+  std::vector<u32> callbacks_;
+  std::array<Event, kMaxEvents> events_{};
+  std::array<u32, 4> clear_rcnt_{1, 1, 1, 1};
+  u32 clear_pad_ = 1;
+  std::array<u32, 2> pad_buf_{};
+  bool pad_started_ = false;
+  Heap heap_, kernel_heap_;
+  u32 rand_seed_ = 0x24040001;
+  u32 strtok_next_ = 0;
+  std::array<u32, 3> conf_{};  // SetConf: EvCB count, TCB count, stack top
   std::set<u32> warned_;
 };
 

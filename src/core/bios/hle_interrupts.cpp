@@ -1,0 +1,330 @@
+// HLE kernel: the exception handler as the BIOS runs it (psx-spx "BIOS Interrupt/Exception
+// Handling"): register save area, the four priority chains of interrupt handlers, the exit
+// buffer (HookEntryInt/ResetEntryInt), ReturnFromException, critical sections, the kernel's own
+// root counter / pad / DefInt handlers, the BIOS timer functions and calls into program code.
+#include <cstdio>
+
+#include "core/bios/hle_bios.h"
+#include "core/bus.h"
+#include "core/sio/sio_device.h"
+
+namespace psx {
+
+namespace {
+constexpr u32 kV0 = 2, kA0r = 4, kA1 = 5, kSp = 29, kFp = 30, kRa = 31, kGp = 28;
+constexpr u32 kIStat = 0xBF801070, kIMask = 0xBF801074;
+constexpr u32 kB0 = 0xB0, kC0 = 0xC0;
+// RFE: pop the KU/IE stack (previous -> current, old -> previous).
+inline u32 rfe(u32 sr) { return (sr & ~0xFu) | ((sr >> 2) & 0xF); }
+}  // namespace
+
+void HleBios::exception() {
+  Cop0& c = cpu_.cop0();
+  u32 code = (c.cause >> 2) & 0x1F;
+  if (code == static_cast<u32>(Exception::Syscall)) {
+    syscall();
+    return;
+  }
+  if (code == static_cast<u32>(Exception::Interrupt)) {
+    save_thread_registers();
+    // The hardware executes a GTE command at the interrupted address before taking the
+    // interrupt, so the BIOS resumes after it (psx-spx "COP0 - Interrupt Handling").
+    u32 instr = peek32(saved_epc_);
+    if (!(c.cause & Cop0::kBD) && (instr >> 25) == 0x25) saved_epc_ += 4;
+    dispatching_ = true;
+    return_now_ = false;
+    chain_prio_ = 0;
+    chain_elem_ = chains_[0];
+    dispatch_next();
+    return;
+  }
+  char msg[128];
+  std::snprintf(msg, sizeof msg, "unhandled CPU exception %u (Cause 0x%08X) at EPC 0x%08X, BadVaddr 0x%08X", code,
+                c.cause, c.epc, c.badvaddr);
+  if (on_fatal) on_fatal(msg);
+  cpu_.stop();
+}
+
+void HleBios::syscall() {
+  Cop0& c = cpu_.cop0();
+  if (c.epc == kReturnStub) {  // a program function called by the kernel returned
+    c.sr = rfe(c.sr);
+    guest_returned();
+    return;
+  }
+  // The saved IEp/IMp (SR bits 2 and 10) are what RFE restores, so the critical section calls
+  // edit them (psx-spx "SYS(01h) EnterCriticalSection").
+  u32 fn = cpu_.reg(kA0r);
+  if (fn == 1) {
+    cpu_.set_reg(kV0, (c.sr & 0x404) == 0x404 ? 1 : 0);
+    c.sr &= ~0x404u;
+  } else if (fn == 2) {
+    c.sr |= 0x404;
+  } else if (fn != 0) {
+    char msg[96];
+    std::snprintf(msg, sizeof msg, "HLE kernel: SYSCALL a0=%02Xh (threads and custom syscalls) is not supported", fn);
+    if (on_fatal) on_fatal(msg);
+    cpu_.stop();
+    return;
+  }
+  c.sr = rfe(c.sr);
+  cpu_.set_pc(c.epc + 4);
+}
+
+void HleBios::save_thread_registers() {
+  for (u32 r = 0; r < 32; ++r) saved_regs_[r] = cpu_.reg(r);
+  saved_hi_ = cpu_.hi();
+  saved_lo_ = cpu_.lo();
+  saved_sr_ = cpu_.cop0().sr;
+  saved_epc_ = cpu_.cop0().epc;
+}
+
+// B0h:17h: restores R1-R31 (except k0), HI, LO and SR from the save area, then RFE + jump.
+void HleBios::return_from_exception() {
+  for (u32 r = 1; r < 32; ++r)
+    if (r != 26) cpu_.set_reg(r, saved_regs_[r]);
+  cpu_.set_hi(saved_hi_);
+  cpu_.set_lo(saved_lo_);
+  cpu_.cop0().sr = rfe(saved_sr_);
+  // Kernel calls still pending for this exception are abandoned with it.
+  while (!resume_.empty() && resume_.back().in_dispatch) resume_.pop_back();
+  if (dispatching_) callbacks_.clear();
+  dispatching_ = false;
+  cpu_.set_pc(saved_epc_);
+}
+
+// Walks the chains from where it stopped; returns whenever a program function has been called.
+void HleBios::dispatch_next() {
+  for (;;) {
+    if (!callbacks_.empty()) {
+      u32 f = callbacks_.front();
+      callbacks_.erase(callbacks_.begin());
+      call_guest(f, 0, {Resume::kDispatch, 0, 1});
+      return;
+    }
+    if (return_now_) {
+      return_from_exception();
+      return;
+    }
+    if (!chain_elem_) {
+      if (++chain_prio_ == 4) break;
+      chain_elem_ = chains_[chain_prio_];
+      continue;
+    }
+    u32 elem = chain_elem_;
+    chain_elem_ = peek32(elem);
+    u32 func2 = peek32(elem + 4), func1 = peek32(elem + 8);
+    if (func1 >= kNativeFuncs && func1 < kNativeFuncs + 4 * kNativeCount) {
+      return_now_ = run_native((func1 - kNativeFuncs) / 4);
+      continue;
+    }
+    if (func1) {
+      call_guest(func1, 0, {Resume::kChainFunc1, func2, 1});
+      return;
+    }
+  }
+  // All chains done: longjmp through the exit buffer with v0 = 1 (ra, sp, fp, s0-s7, gp).
+  dispatching_ = false;
+  u32 b = exit_buf_;
+  cpu_.set_reg(kSp, peek32(b + 4));
+  cpu_.set_reg(kFp, peek32(b + 8));
+  for (u32 i = 0; i < 8; ++i) cpu_.set_reg(16 + i, peek32(b + 12 + 4 * i));
+  cpu_.set_reg(kGp, peek32(b + 44));
+  cpu_.set_reg(kV0, 1);
+  cpu_.set_pc(peek32(b));
+}
+
+void HleBios::call_guest(u32 func, u32 a0, Resume r) {
+  resume_.push_back(r);
+  cpu_.set_reg(kA0r, a0);
+  cpu_.set_reg(kRa, kReturnStub);
+  // Interrupt handlers run on the kernel's exception stack, like the BIOS's.
+  if (r.in_dispatch) cpu_.set_reg(kSp, kExceptionStack);
+  cpu_.set_pc(func);
+}
+
+void HleBios::guest_returned() {
+  if (resume_.empty()) {
+    if (on_fatal) on_fatal("HLE kernel: the return stub ran with no kernel call pending");
+    cpu_.stop();
+    return;
+  }
+  Resume r = resume_.back();
+  resume_.pop_back();
+  u32 v0 = cpu_.reg(kV0);
+  switch (r.kind) {
+    case Resume::kChainFunc1:
+      if (v0 && r.value) {
+        call_guest(r.value, v0, {Resume::kDispatch, 0, 1});
+        return;
+      }
+      dispatch_next();
+      return;
+    case Resume::kDispatch: dispatch_next(); return;
+    case Resume::kCaller:
+      if (!callbacks_.empty()) {
+        u32 f = callbacks_.front();
+        callbacks_.erase(callbacks_.begin());
+        call_guest(f, 0, r);
+        return;
+      }
+      cpu_.set_reg(kRa, r.value);
+      cpu_.set_pc(r.value);
+      return;
+  }
+}
+
+bool HleBios::run_native(u32 id) {
+  switch (id) {
+    case kRcntVblank: return rcnt_handler(3);
+    case kRcnt2: return rcnt_handler(2);
+    case kRcnt1: return rcnt_handler(1);
+    case kRcnt0: return rcnt_handler(0);
+    case kPad: return pad_handler();
+    default: {  // DefInt: an event per pending IRQ; IRQ6 uses timer 1's class (psx-spx)
+      static constexpr u32 kClass[11] = {1, 2, 3, 4, 5, 6, 6, 8, 0xB, 9, 0xA};
+      u32 pending = io_read(kIStat, 4) & io_read(kIMask, 4);
+      for (u32 i = 0; i < 11; ++i)
+        if (pending & (1u << i)) deliver_event(0xF0000000 | kClass[i], 0x1000);
+      return false;
+    }
+  }
+}
+
+// Root counter t (3 = VBlank): deliver F200000th/0002h; with ChangeClearRCnt on, acknowledge
+// the IRQ and leave the exception at once.
+bool HleBios::rcnt_handler(u32 t) {
+  u32 bit = t == 3 ? 1u : 1u << (4 + t);
+  if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & bit)) return false;
+  deliver_event(0xF2000000 | t, 0x0002);
+  if (!clear_rcnt_[t]) return false;
+  io_write(kIStat, ~bit & 0xFFFF, 4);
+  return true;
+}
+
+// PadCardIrq: at VBlank, both pads are read into the InitPad buffers (status, ID, data).
+bool HleBios::pad_handler() {
+  if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & 1)) return false;
+  for (int port = 0; port < 2; ++port)
+    if (pad_buf_[port]) read_pad(port, pad_buf_[port]);
+  if (!clear_pad_) return false;
+  io_write(kIStat, 0xFFFE, 4);
+  return true;
+}
+
+// One "read" command (01h 42h 00h...) straight to the controller (psx-spx "Controllers -
+// Communication Sequence"); the buffer holds up to 22h bytes.
+void HleBios::read_pad(int port, u32 buf) {
+  SioDevice* dev = pad_at ? pad_at(port) : nullptr;
+  if (!dev) {
+    poke8(buf, 0xFF);
+    return;
+  }
+  dev->deselect();
+  SioDevice::Reply r = dev->transfer(0x01);
+  if (!r.ack) {
+    dev->deselect();
+    poke8(buf, 0xFF);
+    return;
+  }
+  SioDevice::Reply id = dev->transfer(0x42);
+  SioDevice::Reply idhi = dev->transfer(0x00);
+  poke8(buf, idhi.data == 0x5A ? 0x00 : 0xFF);
+  poke8(buf + 1, id.data);
+  r = idhi;
+  for (u32 i = 2; i < 0x22 && r.ack; ++i) {
+    r = dev->transfer(0x00);
+    poke8(buf + i, r.data);
+  }
+  dev->deselect();
+}
+
+void HleBios::enqueue(u32 prio, u32 elem) {
+  prio &= 3;
+  poke32(elem, chains_[prio]);
+  chains_[prio] = elem;
+}
+
+void HleBios::dequeue(u32 prio, u32 elem) {
+  prio &= 3;
+  if (chains_[prio] == elem) {
+    chains_[prio] = peek32(elem);
+    return;
+  }
+  for (u32 e = chains_[prio], n = 0; e && n < 256; e = peek32(e), ++n)
+    if (peek32(e) == elem) {
+      poke32(e, peek32(elem));
+      return;
+    }
+}
+
+bool HleBios::interrupt_call(u32 table, u32 fn) {
+  const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1);
+  if (table == kC0) {
+    switch (fn) {
+      case 0x02: enqueue(a0, a1); return_to_caller(0); return true;  // SysEnqIntRP
+      case 0x03: dequeue(a0, a1); return_to_caller(0); return true;  // SysDeqIntRP
+      case 0x0A: {                                                   // ChangeClearRCnt
+        u32 old = clear_rcnt_[a0 & 3];
+        clear_rcnt_[a0 & 3] = a1 ? 1 : 0;
+        return_to_caller(old);
+        return true;
+      }
+      default: return false;
+    }
+  }
+  const u32 t = a0, base = 0xBF801100 + 16 * a0;
+  switch (fn) {
+    case 0x02: {  // SetRCnt (init_timer): mode from the flags, psx-spx "BIOS Timer Functions"
+      if (t > 2) {
+        return_to_caller(0);
+        return true;
+      }
+      u32 mode = (cpu_.reg(6) & 0x10) ? 0x49 : 0x48;
+      if (!(cpu_.reg(6) & 1)) mode |= 0x100;
+      if (cpu_.reg(6) & 0x1000) mode |= 0x10;
+      io_write(base + 4, 0, 2);
+      io_write(base + 8, a1, 2);
+      io_write(base + 4, mode, 2);
+      return_to_caller(1);
+      return true;
+    }
+    case 0x03: return_to_caller(t <= 2 ? io_read(base, 2) : 0); return true;  // GetRCnt
+    case 0x04:                                                                 // StartRCnt
+      io_write(kIMask, io_read(kIMask, 4) | (t == 3 ? 1u : 1u << (4 + (t & 3))), 4);
+      return_to_caller(t <= 2 ? 1 : 0);
+      return true;
+    case 0x05:  // StopRCnt
+      io_write(kIMask, io_read(kIMask, 4) & ~(t == 3 ? 1u : 1u << (4 + (t & 3))), 4);
+      return_to_caller(1);
+      return true;
+    case 0x06:  // ResetRCnt
+      if (t <= 2) io_write(base, 0, 2);
+      return_to_caller(t <= 2 ? 1 : 0);
+      return true;
+    case 0x12:  // InitPad(buf1, siz1, buf2, siz2): remember and zero-fill the buffers
+      pad_buf_ = {a0, cpu_.reg(6)};
+      for (u32 i = 0; i < a1 && i < 0x22; ++i) poke8(a0 + i, 0);
+      for (u32 i = 0; i < cpu_.reg(7) && i < 0x22; ++i) poke8(cpu_.reg(6) + i, 0);
+      return_to_caller(2);
+      return true;
+    case 0x13:  // StartPad: enqueue the pad handler, VBlank IRQ on
+      if (!pad_started_) enqueue(2, kKernelElems + 16 * kPad);
+      pad_started_ = true;
+      io_write(kIMask, io_read(kIMask, 4) | 1, 4);
+      return_to_caller(1);
+      return true;
+    case 0x14:  // StopPad
+      if (pad_started_) dequeue(2, kKernelElems + 16 * kPad);
+      pad_started_ = false;
+      return_to_caller(1);
+      return true;
+    case 0x17: return_from_exception(); return true;
+    case 0x18: exit_buf_ = kDefaultExit; return_to_caller(kDefaultExit); return true;  // ResetEntryInt
+    case 0x19: exit_buf_ = a0; return_to_caller(0); return true;                     // HookEntryInt
+    case 0x5B: clear_pad_ = a0 ? 1 : 0; return_to_caller(0); return true;            // ChangeClearPad
+    default: return false;
+  }
+}
+
+}  // namespace psx

@@ -191,10 +191,12 @@ bool HleBios::run_native(u32 id) {
   }
 }
 
-// Root counter t (3 = VBlank): deliver F200000th/0002h; with ChangeClearRCnt on, acknowledge
-// the IRQ and leave the exception at once.
+// Root counter t: deliver F200000th/0002h; with ChangeClearRCnt on, acknowledge the IRQ and
+// leave the exception at once. The BIOS computes the IRQ bit as 1 << (4 + t) for all four, so
+// "root counter 3" tests IRQ7 rather than VBlank (this is what lets the pad handler in chain 2
+// see VBlank; the open-source OpenBIOS reimplementation does the same).
 bool HleBios::rcnt_handler(u32 t) {
-  u32 bit = t == 3 ? 1u : 1u << (4 + t);
+  u32 bit = 1u << (4 + t);
   if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & bit)) return false;
   deliver_event(0xF2000000 | t, 0x0002);
   if (!clear_rcnt_[t]) return false;

@@ -1,3 +1,4 @@
 # HLE kernel test programs: BIOS calls through the A0h/B0h/C0h vectors and SYSCALL.
 psx_add_rom_test(bios_string SOURCES bios_string.c bios_calls.S)
 psx_add_rom_test(bios_heap SOURCES bios_heap.c bios_calls.S)
+psx_add_rom_test(bios_interrupts SOURCES bios_interrupts.c bios_calls.S)

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/irq.h"
+#include "core/memory_control.h"
 
 namespace psx {
 
@@ -15,6 +16,10 @@ constexpr u32 kExp2Base = 0x1F802000, kIoEnd = 0x1F803000;
 constexpr u32 kExp3Base = 0x1FA00000, kExp3End = 0x1FC00000;
 constexpr u32 kBiosBase = 0x1FC00000;
 constexpr u32 kCacheControl = 0xFFFE0130;
+constexpr u32 kCdromBase = 0x1F801800, kCdromEnd = 0x1F801810;
+// The SPU timings apply to the SPU's 0x1F801C00 block and the unknown one after it (psx-spx).
+constexpr u32 kSpuBase = 0x1F801C00, kSpuEnd = 0x1F802000;
+constexpr u32 kComDelay = 8;
 
 u32 load_width(const u8* p, u32 width) {
   switch (width) {
@@ -38,6 +43,20 @@ Bus::Bus(Scheduler& sched, InterruptController& irq)
   // Power-on values of memory control 1 as the BIOS leaves them (psx-spx "Memory Control").
   memctrl_ = {0x1F000000, 0x1F802000, 0x0013243F, 0x00003022, 0x0013243F,
               0x200931E1, 0x00020843, 0x00070777, 0x00031125};
+  update_read_cycles();
+}
+
+void Bus::update_read_cycles() {
+  for (u32 r = kExp1Delay; r <= kExp2Delay; ++r)
+    for (u32 w : {1u, 2u, 4u})
+      read_cycles_[r - kExp1Delay][w >> 1] = memory_read_cycles(memctrl_[r], memctrl_[kComDelay], w) - 1;
+}
+
+Cycles Bus::io_read_cycles(u32 p, u32 width) const {
+  if (p >= kExp2Base) return read_cycles(kExp2Delay, width);
+  if (p >= kSpuBase && p < kSpuEnd) return read_cycles(kSpuDelay, width);
+  if (p >= kCdromBase && p < kCdromEnd) return read_cycles(kCdromDelay, width);
+  return kIoRead;
 }
 
 void Bus::map_io(u32 phys_base, u32 size, IoDevice* dev) {
@@ -62,7 +81,8 @@ void Bus::report_unmapped(u32 vaddr, const char* what) {
 bool Bus::fetch_slow(u32 vaddr, u32 p, u32& word) {
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
     word = load_le32(&bios_[p - kBiosBase]);
-    if (vaddr >= 0xA0000000) sched_.advance(kBiosRead);
+    // An uncached fetch is a 32-bit read over the ROM's bus (cached: see fetch()).
+    if (vaddr >= 0xA0000000) sched_.advance(read_cycles(kBiosDelay, 4));
     return true;
   }
   // The scratchpad is data cache: it cannot be executed. Nor can I/O or expansion space.
@@ -82,16 +102,17 @@ bool Bus::read(u32 vaddr, u32& v, u32 width) {
     return true;
   }
   if (p >= kIoBase && p < kIoEnd) {
-    sched_.advance(kIoRead);
+    sched_.advance(io_read_cycles(p, width));
     v = io_read(p, width);
     return true;
   }
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
     v = load_width(&bios_[p - kBiosBase], width);
-    sched_.advance(kBiosRead);
+    sched_.advance(read_cycles(kBiosDelay, width));
     return true;
   }
   if ((p >= kExp1Base && p < kExp1End) || (p >= kExp3Base && p < kExp3End)) {
+    sched_.advance(read_cycles(p < kExp1End ? kExp1Delay : kExp3Delay, width));
     v = width == 4 ? 0xFFFFFFFF : (1u << (width * 8)) - 1;  // open expansion bus reads all ones
     return true;
   }
@@ -159,6 +180,7 @@ void Bus::io_write(u32 p, u32 v, u32 width) {
   catch_up();
   if (p < kIoBase + 0x24) {
     memctrl_[(p - kIoBase) / 4] = v;
+    update_read_cycles();
     return;
   }
   if ((p & ~3u) == 0x1F801060) {
@@ -216,6 +238,7 @@ void Bus::do_state(StateIO& s) {
   s.pod(memctrl_);
   s.pod(ram_size_);
   s.pod(cache_control_);
+  update_read_cycles();  // derived from memctrl_
 }
 
 }  // namespace psx

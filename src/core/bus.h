@@ -41,7 +41,8 @@ class Bus {
     u32 p = physical(vaddr);
     if (p < 0x00800000) {
       word = load_le32(&ram_[p & (kRamSize - 1)]);
-      // KSEG0/KUSEG code runs from the instruction cache; KSEG1 code is fetched uncached.
+      // KSEG0/KUSEG code runs from the instruction cache (not modelled: a hit every time); KSEG1
+      // code is fetched uncached.
       if (vaddr >= 0xA0000000) sched_.advance(kRamFetchUncached);
       return true;
     }
@@ -95,15 +96,25 @@ class Bus {
     p[3] = u8(v >> 24);
   }
 
-  // Access times in CPU cycles beyond the instruction's own cycle (psx-spx "Memory Control";
-  // the BIOS ROM figure follows the default delay/size setting 0x0013243F of 0x1F801010).
+  // Read times in CPU cycles beyond the instruction's own cycle. RAM, scratchpad and the on-chip
+  // I/O ports have fixed times (JaCzekanski's ps1-tests cpu/access-time, hardware log: a load
+  // costs 5 cycles from RAM, 3 from DMA/IRQ/timer/pad/GPU/MDEC registers, 1 from the scratchpad).
+  // The BIOS ROM, expansion regions, SPU and CD-ROM take the times their Memory Control
+  // Delay/Size registers select (see read_cycles()). Stores go through the CPU's write queue and
+  // take no extra time (psx-spx "CPU Load/Store Opcodes"; the queue filling up is not modelled).
   static constexpr Cycles kRamFetchUncached = 4;
   static constexpr Cycles kRamRead = 4;
-  static constexpr Cycles kBiosRead = 20;
   static constexpr Cycles kIoRead = 2;
+
+  // Memory Control 1 registers with a Delay/Size layout, indexed as memctrl_ is.
+  enum DelayRegion : u32 { kExp1Delay = 2, kExp3Delay, kBiosDelay, kSpuDelay, kCdromDelay, kExp2Delay };
+  // Extra cycles of a `width`-byte read from a Delay/Size region under the current settings.
+  Cycles read_cycles(DelayRegion r, u32 width) const { return read_cycles_[r - kExp1Delay][width >> 1]; }
 
  private:
   bool fetch_slow(u32 vaddr, u32 p, u32& word);
+  void update_read_cycles();
+  Cycles io_read_cycles(u32 p, u32 width) const;
   bool read(u32 vaddr, u32& v, u32 width);
   bool write(u32 vaddr, u32 v, u32 width);
   u32 io_read(u32 p, u32 width);
@@ -128,6 +139,9 @@ class Bus {
   std::array<u32, 9> memctrl_{};
   u32 ram_size_ = 0x00000B88;
   u32 cache_control_ = 0;
+  // read_cycles() for each Delay/Size region and width 1, 2, 4 (index width >> 1), derived from
+  // memctrl_ whenever it changes.
+  std::array<std::array<Cycles, 3>, 6> read_cycles_{};
 
   static constexpr u32 kIoBase = 0x1F801000;
   static constexpr u32 kIoSlots = 0x2000 / 16;

@@ -10,8 +10,8 @@ namespace psx {
 
 namespace {
 // Transfer rates in CPU clocks per 0x100 words (psx-spx "DMA Transfer Rates"; DMA uses DRAM hyper
-// page mode, one clock a word plus a row reload every 16 words). CD-ROM uses the BIOS's default
-// 24-clock setting; PIO moves no data here but still takes its documented time.
+// page mode, one clock a word plus a row reload every 16 words). PIO moves no data here but still
+// takes its documented time. The CD-ROM entry is not used: see charge().
 constexpr std::array<u32, Dma::kChannels> kClocksPer256Words = {0x110, 0x110, 0x110, 0x1800,
                                                                  0x420, 0x1400, 0x110};
 // Words one service pass may move before the controller lets the scheduler dispatch other events;
@@ -263,7 +263,11 @@ void Dma::from_device(u32 ch, u32 addr, u32 count, bool backward) {
 }
 
 void Dma::charge(u32 ch, u32 words) {
-  u64 total = charge_frac_ + u64{words} * kClocksPer256Words[ch];
+  // psx-spx lists CD-ROM DMA at 24 clocks a word with the BIOS's CDROM Delay/Size setting and 40
+  // with the games' one: exactly a 32-bit CPU read under 0x00020843 (25 cycles) and 0x00020943
+  // (41) less the CPU's issue cycle, so the rate follows the register.
+  u64 per256 = ch == Cdrom ? 256 * bus_.read_cycles(Bus::kCdromDelay, 4) : kClocksPer256Words[ch];
+  u64 total = charge_frac_ + u64{words} * per256;
   sched_.advance(total / 256);
   charge_frac_ = static_cast<u32>(total % 256);
 }

@@ -33,9 +33,10 @@ class VideoSignals {
   virtual ~VideoSignals() = default;
   virtual void hblank_changed(bool active) = 0;
   virtual void vblank_changed(bool active) = 0;
-  // GPU video clock cycles per dot for the current horizontal resolution (10, 8, 7, 5 or 4); the
-  // video clock runs at 11/7 of the CPU clock.
-  virtual void dot_divider_changed(u32 video_cycles_per_dot) = 0;
+  // The dot clock is the GPU video clock (psx-spx "GPU Timings": 53.693175 MHz NTSC, 53.203425 MHz
+  // PAL) divided by the video clock cycles per dot of the horizontal resolution (10, 8, 7, 5 or 4).
+  // Timer 0 counts it, so it must use the same clock as the GPU's scanlines.
+  virtual void dot_clock_changed(u64 video_hz, u32 video_cycles_per_dot) = 0;
 };
 
 }  // namespace psx

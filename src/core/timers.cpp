@@ -10,10 +10,9 @@ namespace psx {
 
 namespace {
 constexpr u64 kNoIrq = ~u64{0};
-// The GPU video clock runs at 11/7 of the CPU clock; a dot lasts `divider` video clocks. Dot
-// phases are kept in units of 1/(7*divider) dots per CPU cycle * 11, i.e. each CPU cycle adds 11
-// and a dot costs 7 * divider.
-constexpr u64 kVideoClockNum = 11, kVideoClockDen = 7;
+// A dot lasts `divider` cycles of the GPU video clock. Timer 0's dot phase is kept in units of
+// 1/(kCpuClockHz * divider) dots: each CPU cycle adds video_hz units and a dot costs
+// kCpuClockHz * divider (at most 338,688,000, so the phase fits in 32 bits).
 constexpr Irq kTimerIrq[3] = {Irq::Timer0, Irq::Timer1, Irq::Timer2};
 }  // namespace
 
@@ -49,8 +48,8 @@ u64 Timers::source_ticks(u32 i, Cycles elapsed) {
   Counter& c = counters_[i];
   // The dot clock and the /8 prescaler run freely whatever the counter selects.
   if (i == 0) {
-    u64 unit = kVideoClockDen * dot_divider_;
-    u64 total = c.phase + kVideoClockNum * elapsed;
+    u64 unit = u64{kCpuClockHz} * dot_divider_;
+    u64 total = c.phase + video_hz_ * elapsed;
     c.phase = static_cast<u32>(total % unit);
     return (c.mode & kExtc) ? total / unit : elapsed;
   }
@@ -65,8 +64,8 @@ u64 Timers::source_ticks(u32 i, Cycles elapsed) {
 Cycles Timers::cycles_for_ticks(u32 i, u64 ticks) const {
   const Counter& c = counters_[i];
   if (i == 0 && (c.mode & kExtc)) {
-    u64 need = ticks * kVideoClockDen * dot_divider_ - c.phase;
-    return (need + kVideoClockNum - 1) / kVideoClockNum;
+    u64 need = ticks * kCpuClockHz * dot_divider_ - c.phase;
+    return (need + video_hz_ - 1) / video_hz_;
   }
   if (i == 2 && (c.mode & kPscl)) return ticks * 8 - c.phase;
   return ticks;
@@ -204,12 +203,14 @@ void Timers::vblank_changed(bool active) {
   reschedule();
 }
 
-void Timers::dot_divider_changed(u32 video_cycles_per_dot) {
-  if (video_cycles_per_dot == 0 || video_cycles_per_dot == dot_divider_) return;
+void Timers::dot_clock_changed(u64 video_hz, u32 video_cycles_per_dot) {
+  if (video_hz == 0 || video_cycles_per_dot == 0) return;
+  if (video_hz == video_hz_ && video_cycles_per_dot == dot_divider_) return;
   catch_up();
-  // Keep the fraction of the current dot that has elapsed.
+  // Keep the fraction of the current dot that has elapsed (the phase unit scales with the divider).
   Counter& c = counters_[0];
   c.phase = static_cast<u32>(u64{c.phase} * video_cycles_per_dot / dot_divider_);
+  video_hz_ = video_hz;
   dot_divider_ = video_cycles_per_dot;
   reschedule();
 }
@@ -258,7 +259,7 @@ void Timers::io_write(u32 offset, u32 value, u32 width) {
 }
 
 void Timers::do_state(StateIO& s) {
-  s.section("TMRS", 1);
+  s.section("TMRS", 2);
   for (Counter& c : counters_) {
     s.pod(c.value);
     s.pod(c.mode);
@@ -271,6 +272,7 @@ void Timers::do_state(StateIO& s) {
   s.pod(synced_at_);
   s.boolean(hblank_);
   s.boolean(vblank_);
+  s.pod(video_hz_);
   s.pod(dot_divider_);
 }
 

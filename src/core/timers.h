@@ -40,7 +40,7 @@ class Timers : public IoDevice, public VideoSignals {
 
   void hblank_changed(bool active) override;
   void vblank_changed(bool active) override;
-  void dot_divider_changed(u32 video_cycles_per_dot) override;
+  void dot_clock_changed(u64 video_hz, u32 video_cycles_per_dot) override;
 
   void do_state(StateIO& s);
 
@@ -82,7 +82,9 @@ class Timers : public IoDevice, public VideoSignals {
   Cycles synced_at_ = 0;
   bool hblank_ = false;
   bool vblank_ = false;
-  u32 dot_divider_ = 10;  // 256-pixel mode after reset
+  // The dot clock: NTSC video clock, 256-pixel mode (10 video cycles per dot) after reset.
+  u64 video_hz_ = 53693175;
+  u32 dot_divider_ = 10;
 };
 
 }  // namespace psx

@@ -12,17 +12,16 @@ VideoTiming::VideoTiming(Scheduler& sched, std::function<void()> vblank_started)
 
 void VideoTiming::set_signals(VideoSignals* signals) {
   signals_ = signals;
-  if (signals_) signals_->dot_divider_changed(dot_divider_);
+  if (signals_) signals_->dot_clock_changed(video_hz(), dot_divider_);
 }
 
 void VideoTiming::set_mode(bool pal, bool interlaced, u32 dot_divider) {
+  bool clock_changed = pal != pal_ || dot_divider != dot_divider_;
   pal_ = pal;
   interlaced_ = interlaced;
   if (!interlaced_) odd_field_ = false;
-  if (dot_divider != dot_divider_) {
-    dot_divider_ = dot_divider;
-    if (signals_) signals_->dot_divider_changed(dot_divider_);
-  }
+  dot_divider_ = dot_divider;
+  if (clock_changed && signals_) signals_->dot_clock_changed(video_hz(), dot_divider_);
 }
 
 u32 VideoTiming::lines_per_frame() const {

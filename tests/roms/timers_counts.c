@@ -15,18 +15,21 @@ static void check_ratio(const char *what, int a, int b, uint32_t num, uint32_t d
   uint32_t a0 = T_COUNT(a);
   uint32_t bv = T_COUNT(b);
   uint32_t a1 = T_COUNT(a);
-  if (!(bv + tol >= a0 * num / den && bv <= a1 * num / den + tol))
-    tty_printf("%s: %u between %u and %u?\n", what, bv, a0 * num / den, a1 * num / den);
-  CHECK_EQ(what, bv + tol >= a0 * num / den && bv <= a1 * num / den + tol, 1);
+  /* 64-bit products: the dot clock ratio's numerator is six digits. */
+  uint32_t lo = (uint32_t)((uint64_t)a0 * num / den), hi = (uint32_t)((uint64_t)a1 * num / den);
+  if (!(bv + tol >= lo && bv <= hi + tol)) tty_printf("%s: %u between %u and %u?\n", what, bv, lo, hi);
+  CHECK_EQ(what, bv + tol >= lo && bv <= hi + tol, 1);
 }
 
 static void test_sources(void) {
-  /* Timer 1 on the system clock is the reference. Timer 0 on the dotclock: 11/7 video clocks
-     per CPU clock, 10 video clocks per dot in the reset 256-pixel mode: 11/70 dots per clock. */
+  /* Timer 1 on the system clock is the reference. Timer 0 on the dotclock: the NTSC video clock
+     (psx-spx "GPU Timings": 53.693175 MHz) over the 33.8688 MHz CPU clock is 715909/451584
+     video clocks per CPU clock; 10 video clocks per dot in the reset 256-pixel mode (psx-spx:
+     3413/10 = 341.3 dots per 3413-cycle line), so 715909/4515840 dots per CPU clock. */
   T_MODE(0) = 0x0100;
   T_MODE(1) = 0x0000;
   spin(2000);
-  check_ratio("dotclock 11/70", 1, 0, 11, 70, 1);
+  check_ratio("dotclock 256", 1, 0, 715909, 4515840, 1);
   /* Timer 2 with the /8 prescaler against timer 1. */
   T_MODE(1) = 0x0000;
   T_MODE(2) = 0x0200;

@@ -101,7 +101,19 @@ TEST(CdromCommands, TestVersionAndFirstResponseTime) {
   auto r = h.wait();
   EXPECT_EQ(r.irq, 3);
   EXPECT_EQ(r.bytes, bytes({0x94, 0x09, 0x19, 0xC0}));
-  EXPECT_EQ(r.at, Cdrom::kFirstResponse);
+  // No disc, motor off: psx-spx "First Response", GetStat (when stopped) average 0005CF4h.
+  EXPECT_EQ(r.at, 0x5CF4u);
+}
+
+TEST(CdromCommands, FirstResponseTimesWithMotorOn) {
+  CdromHarness h;
+  h.cd.insert_disc(data_disc());
+  Cycles t0 = h.sched.now();
+  h.send(0x01);  // GetStat (normal): average 000C4E1h
+  EXPECT_EQ(h.wait().at - t0, 0xC4E1u);
+  t0 = h.sched.now();
+  h.send(0x1E);  // ReadTOC: "similar timing as Init", 0013CCEh
+  EXPECT_EQ(h.wait().at - t0, 0x13CCEu);
 }
 
 TEST(CdromCommands, ErrorResponses) {
@@ -180,7 +192,7 @@ TEST(CdromCommands, InitAndPauseSequences) {
   h.send(0x0A);
   auto a = h.wait();
   EXPECT_EQ(a.irq, 3);
-  EXPECT_EQ(a.at, Cdrom::kFirstResponseInit);
+  EXPECT_EQ(a.at, 0x13CCEu);  // psx-spx: Init's first response, average 0013CCEh
   EXPECT_EQ(h.wait().irq, 2);
   h.send(0x0F);
   EXPECT_EQ(h.wait().bytes[1], 0x20);  // Init sets mode 0x20
@@ -189,10 +201,14 @@ TEST(CdromCommands, InitAndPauseSequences) {
   auto p2 = h.wait();
   EXPECT_EQ(p1.irq, 3);
   EXPECT_EQ(p2.irq, 2);
-  EXPECT_EQ(p2.at - p1.at, Cdrom::kAlreadyIdle);
+  EXPECT_EQ(p2.at - p1.at, 0x1DF2u);  // psx-spx: Pause (when paused) average 0001DF2h
   h.send(0x08);  // Stop: the INT2 status shows the motor off
   EXPECT_EQ(h.wait().irq, 3);
   EXPECT_EQ(h.wait().bytes, bytes({0x00}));
+  h.send(0x08);  // Stop when stopped: INT2 after 0001D7Bh (psx-spx average)
+  auto s1 = h.wait();
+  auto s2 = h.wait();
+  EXPECT_EQ(s2.at - s1.at, 0x1D7Bu);
 }
 
 TEST(CdromCommands, StatusRegisterFifoBits) {

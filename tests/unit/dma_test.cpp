@@ -166,6 +166,18 @@ TEST_F(DmaTest, BurstToDeviceKeepsRegistersAndChargesRate) {
   EXPECT_EQ(sched.now() - t0, 8u * 24);  // CD-ROM: 24 clocks per word (BIOS default)
 }
 
+TEST_F(DmaTest, CdromRateFollowsDelayRegister) {
+  // psx-spx "DMA Transfer Rates": CDROM/GAMES 40 clks/word (2800h per 100h words), with the
+  // CDROM Delay/Size setting 0x00020943 games use.
+  bus.write32(0x1F801018, 0x00020943);
+  w(kDpcr, 0x00008000);
+  w(reg(3, kMadr), 0x400);
+  w(reg(3, kBcr), 0x00010100);
+  Cycles t0 = sched.now();
+  w(reg(3, kChcr), 0x11000001);
+  EXPECT_EQ(sched.now() - t0, 0x2800u);
+}
+
 TEST_F(DmaTest, BurstFromDeviceBackward) {
   w(kDpcr, 0x00008000);
   w(reg(3, kMadr), 0x80C);

@@ -16,9 +16,13 @@ class Signals : public VideoSignals {
  public:
   void hblank_changed(bool active) override { hblanks += active; }
   void vblank_changed(bool active) override { vblanks += active; }
-  void dot_divider_changed(u32 d) override { divider = d; }
+  void dot_clock_changed(u64 hz, u32 d) override {
+    video_hz = hz;
+    divider = d;
+  }
   int hblanks = 0, vblanks = 0;
   u32 divider = 0;
+  u64 video_hz = 0;
 };
 
 // CPU cycle of the k-th VBlank start (k from 0) when frames have `lines` lines of `per_line`
@@ -51,10 +55,14 @@ TEST_F(GpuTest, SignalsCountLinesAndDotDivider) {
   Signals sig;
   gpu.set_video_signals(&sig);
   EXPECT_EQ(sig.divider, 10u);  // 256-wide mode after reset
+  EXPECT_EQ(sig.video_hz, 53693175u);  // the dot clock comes from the NTSC video clock
   gp1(0x08000001);
   EXPECT_EQ(sig.divider, 8u);  // 320
+  gp1(0x08000009);
+  EXPECT_EQ(sig.video_hz, 53203425u);  // PAL video clock
   gp1(0x08000003);
   EXPECT_EQ(sig.divider, 4u);  // 640
+  EXPECT_EQ(sig.video_hz, 53693175u);
   int start_h = 0;
   gpu.on_vblank = [&] {
     if (sig.vblanks == 1) start_h = sig.hblanks;

@@ -1,6 +1,7 @@
-// Root counter tests. Expected counts come from psx-spx "Timers" and the clock ratios: the video
-// clock is 11/7 of the CPU clock and a dot lasts 10 video clocks in 256-pixel mode; a MODE or COUNT
-// write holds the counter for one extra clock, and a reset at COMP holds 0 for two clocks.
+// Root counter tests. Expected counts come from psx-spx "Timers" and "GPU Timings" and the clock
+// ratios: the dot clock is the video clock (NTSC 53.693175 MHz after reset) over the divider, 10
+// video clocks per dot in 256-pixel mode; a MODE or COUNT write holds the counter for one extra
+// clock, and a reset at COMP holds 0 for two clocks.
 #include <gtest/gtest.h>
 
 #include "core/irq.h"
@@ -159,21 +160,37 @@ TEST_F(TimersTest, Timer2DividesBy8) {
 
 TEST_F(TimersTest, Timer0Dotclock) {
   set_mode(0, Timers::kExtc);
-  // 256-pixel mode: a dot per 10 video clocks = 70/11 CPU clocks. 7000 clocks = 1100 dots.
+  // 256-pixel mode: a dot per 10 NTSC video clocks = 338688000/53693175 CPU clocks. 7000 clocks:
+  // floor(7000 * 53693175 / 338688000) = floor(1109.7) = 1109 dots, the first held.
   at(7000);
-  EXPECT_EQ(count(0), 1099u);
-  // Dot k falls on cycle ceil(70k/11): dot 1102 at 7013 (1101 at 7007).
-  at(7012);
-  EXPECT_EQ(count(0), 1100u);
-  at(7013);
-  EXPECT_EQ(count(0), 1101u);
+  EXPECT_EQ(count(0), 1108u);
+  // Dot k falls on cycle ceil(k * 338688000 / 53693175): dot 1110 at 7002.
+  at(7001);
+  EXPECT_EQ(count(0), 1108u);
+  at(7002);
+  EXPECT_EQ(count(0), 1109u);
 }
 
 TEST_F(TimersTest, Timer0DotclockFollowsDivider) {
-  t.dot_divider_changed(8);  // 320-pixel mode
+  t.dot_clock_changed(53693175, 8);  // 320-pixel NTSC
   set_mode(0, Timers::kExtc);
-  at(5600);  // 5600 * 11 / 56 = 1100 dots
-  EXPECT_EQ(count(0), 1099u);
+  // psx-spx: 320pix/NTSC has 3413/8 = 426.625 dots per 3413-cycle line, so 8 lines are 3413
+  // dots; 8 lines are 8 * 3413 * 33868800 / 53693175 = 17222.93 CPU cycles.
+  at(17222);
+  EXPECT_EQ(count(0), 3411u);  // 3412 dots, the first held
+  at(17223);
+  EXPECT_EQ(count(0), 3412u);
+}
+
+TEST_F(TimersTest, Timer0DotclockPal) {
+  t.dot_clock_changed(53203425, 8);  // 320-pixel PAL
+  set_mode(0, Timers::kExtc);
+  // psx-spx: 320pix/PAL has 3406/8 = 425.75 dots per 3406-cycle line: 4 lines are 1703 dots in
+  // 4 * 3406 * 33868800 / 53203425 = 8672.91 CPU cycles.
+  at(8672);
+  EXPECT_EQ(count(0), 1701u);
+  at(8673);
+  EXPECT_EQ(count(0), 1702u);
 }
 
 TEST_F(TimersTest, Timer1CountsHblanks) {

@@ -90,7 +90,7 @@ void Cdrom::io_write(u32 offset, u32 value, u32 width) {
       if (busy_) log("command " + std::to_string(v) + " written while busy; the previous one is dropped");
       command_ = v;
       busy_ = true;
-      sched_.schedule(ev_command_, v == 0x0A ? kFirstResponseInit : kFirstResponse);
+      sched_.schedule(ev_command_, first_response_time(v));
       break;
     case 0x5: case 0x6:  // sound map data out / coding info: the sound map feature is unused
       break;
@@ -115,6 +115,13 @@ void Cdrom::io_write(u32 offset, u32 value, u32 width) {
 
 // Request register: BFRD (bit 7) moves the buffered sector into the data FIFO; clearing it
 // empties the FIFO.
+Cycles Cdrom::first_response_time(u8 command) const {
+  // Init and ReadTOC initialise the drive before answering; the other commands answer at
+  // GetStat's pace, sooner while the motor is off (psx-spx "CDROM - Response Timings").
+  if (command == 0x0A || command == 0x1E) return kFirstResponseInit;
+  return motor_on_ ? kFirstResponse : kFirstResponseStopped;
+}
+
 void Cdrom::write_request(u8 v) {
   if (!(v & 0x80)) {
     data_size_ = data_pos_ = 0;

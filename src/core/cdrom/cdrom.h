@@ -70,25 +70,35 @@ class Cdrom final : public IoDevice, public DmaPort {
 
   std::function<void(const std::string&)> on_log;
 
-  // Timing in CPU cycles (psx-spx "CDROM - Response Timings" averages; the seek model is ours:
-  // a fixed settle time plus a per-sector track-crossing cost, deterministic).
+  // Timing in CPU cycles: psx-spx "CDROM - Response Timings" averages (measured on a PSone).
+  // First responses: GetStat's, which "most other commands" share; Init's, which ReadTOC shares.
   static constexpr Cycles kFirstResponse = 0xC4E1;
+  static constexpr Cycles kFirstResponseStopped = 0x5CF4;  // motor off
   static constexpr Cycles kFirstResponseInit = 0x13CCE;
+  // Second responses.
   static constexpr Cycles kGetIdSecond = 0x4A00;
   static constexpr Cycles kPauseSingle = 0x21181C;
   static constexpr Cycles kPauseDouble = 0x10BD93;
+  static constexpr Cycles kPauseWhenPaused = 0x1DF2;
   static constexpr Cycles kStopSingle = 0xD38ACA;
   static constexpr Cycles kStopDouble = 0x18A6076;
-  static constexpr Cycles kAlreadyIdle = 0x1DF2;
+  static constexpr Cycles kStopWhenStopped = 0x1D7B;
+  // psx-spx: the seek, spin-up and ReadTOC second-response times are unknown ("probably quite
+  // complicated"). These are the project's deterministic estimates: a fixed settle time plus a
+  // per-sector track-crossing cost, a quarter-second spin-up, half a second to read the TOC, and
+  // the gap between a queued response's acknowledge and its delivery.
   static constexpr Cycles kReadTocTime = kCpuClockHz / 2;
   static constexpr Cycles kMotorSpinUp = kCpuClockHz / 4;
   static constexpr Cycles kSeekSettle = 24000;
   static constexpr Cycles kSeekPerSector = 30;
   static constexpr Cycles kAckToNextIrq = 1500;
+  // INT1 rate: SystemClock * 930h / 4 / 44100 Hz = 451584 cycles per sector at single speed, half
+  // at double speed (psx-spx "INT1 Rate"), i.e. 75 and 150 sectors per second.
   static Cycles sector_period(bool double_speed) { return kCpuClockHz / (double_speed ? 150 : 75); }
   static Cycles seek_time(u32 from, u32 to) { return kSeekSettle + (from > to ? from - to : to - from) * kSeekPerSector; }
 
  private:
+  Cycles first_response_time(u8 command) const;
   enum class Drive : u8 { Idle, Seeking, Reading, Playing };
   enum class AfterSeek : u8 { None, Read, Play, SeekDone };
   // Second responses that depend on the drive's state when they arrive.

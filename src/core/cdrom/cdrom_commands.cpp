@@ -100,14 +100,14 @@ void Cdrom::execute(u8 cmd) {
       schedule_second(Second::MotorOn, kMotorSpinUp);
       break;
     case 0x08: {  // Stop
-      Cycles t = !motor_on_ ? kAlreadyIdle : (mode_ & kModeDoubleSpeed) ? kStopDouble : kStopSingle;
+      Cycles t = !motor_on_ ? kStopWhenStopped : (mode_ & kModeDoubleSpeed) ? kStopDouble : kStopSingle;
       stop_drive();
       deliver(make(3, {stat()}));
       schedule_second(Second::Stop, t);
       break;
     }
     case 0x09: {  // Pause: the first response still shows the read/play bits
-      Cycles t = drive_ == Drive::Idle ? kAlreadyIdle : (mode_ & kModeDoubleSpeed) ? kPauseDouble : kPauseSingle;
+      Cycles t = drive_ == Drive::Idle ? kPauseWhenPaused : (mode_ & kModeDoubleSpeed) ? kPauseDouble : kPauseSingle;
       deliver(make(3, {stat()}));
       stop_drive();
       schedule_second(Second::Pause, t);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "core/disc/iso_builder.h"
 
 namespace {
@@ -32,18 +33,12 @@ std::vector<psx::u8> read_file(const std::string& path) {
   return data;
 }
 
-void write_atomically(const std::string& path, const void* data, size_t size) {
-  std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw DiscError(tmp + ": cannot create");
-    f.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-    f.close();
-    if (!f) throw DiscError(tmp + ": write failed");
+void write_atomically(const std::string& path, const std::vector<psx::u8>& data) {
+  try {
+    psx::write_file_atomically(path, data);
+  } catch (const std::runtime_error& e) {
+    throw DiscError(e.what());
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw DiscError(path + ": cannot rename the temporary file (" + ec.message() + ")");
 }
 
 std::string upper_name(const std::string& path) {
@@ -100,9 +95,9 @@ int run(int argc, char** argv) {
   }
   std::vector<psx::u8> image = psx::disc::build_iso(std::move(files), options);
   std::filesystem::path bin = std::filesystem::path(out).replace_extension(".bin");
-  write_atomically(bin.string(), image.data(), image.size());
+  write_atomically(bin.string(), image);
   std::string cue = psx::disc::single_track_cue(bin.filename().string());
-  write_atomically(out, cue.data(), cue.size());
+  write_atomically(out, {cue.begin(), cue.end()});
   return 0;
 }
 

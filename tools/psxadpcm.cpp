@@ -4,11 +4,11 @@
 // Exit codes: 0 success, 1 usage error, 2 bad input file or unwritable output.
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "spu/adpcm.h"
 #include "spu/wav.h"
 
@@ -20,20 +20,6 @@ int usage() {
                "  --loop              loop the whole sound (or from --loop-start) instead of one-shot\n"
                "  --loop-start SAMPLE sample index where the loop begins (rounded down to a block)\n");
   return 1;
-}
-
-bool write_atomically(const std::string& path, const std::vector<psx::u8>& data) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) return false;
-    f.write(reinterpret_cast<const char*>(data.data()), static_cast<std::streamsize>(data.size()));
-    if (!f.flush()) return false;
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) std::filesystem::remove(tmp, ec);
-  return !ec;
 }
 
 }  // namespace
@@ -73,8 +59,10 @@ int main(int argc, char** argv) {
     mono[i] = static_cast<psx::s16>(sum / wav.channels);
   }
   const std::vector<psx::u8> blocks = psx::spu::encode_adpcm(mono.data(), mono.size(), options);
-  if (!write_atomically(positional[1], blocks)) {
-    std::fprintf(stderr, "psxadpcm: %s: cannot write output\n", positional[1].c_str());
+  try {
+    psx::write_file_atomically(positional[1], blocks);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "psxadpcm: %s\n", e.what());
     return 2;
   }
   std::printf("%s: %zu samples at %u Hz -> %zu blocks (pitch %04Xh)\n", positional[1].c_str(), mono.size(),

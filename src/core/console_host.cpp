@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/atomic_file.h"
 #include "core/console.h"
 #include "core/input_error.h"
 #include "core/save_state.h"

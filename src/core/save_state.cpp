@@ -1,9 +1,8 @@
-// Save-state container: header, checksum, compression and atomic file writing.
+// Save-state container: header, checksum and compression.
 #include "core/save_state.h"
 
 #include <zlib.h>
 
-#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -77,18 +76,6 @@ std::vector<u8> unpack_save_state(const u8* d, size_t size, u64 bios_hash, u64 p
   }
   if (fnv1a(payload.data(), payload.size()) != checksum) fail("corrupt payload (checksum mismatch)");
   return payload;
-}
-
-void write_file_atomically(const std::string& path, const std::vector<u8>& data) {
-  std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw std::runtime_error(path + ": cannot create " + tmp);
-  bool ok = std::fwrite(data.data(), 1, data.size(), f) == data.size();
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": write failed");
-  }
 }
 
 }  // namespace psx

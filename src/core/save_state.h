@@ -5,7 +5,6 @@
 //   16 u64 BIOS hash (0 = HLE kernel)  24 u64 program hash (EXE or disc)
 //   32 u64 payload size  40 u64 payload FNV-1a  48 u64 stored size  56 stored payload
 #pragma once
-#include <string>
 #include <vector>
 
 #include "core/types.h"
@@ -27,8 +26,5 @@ std::vector<u8> pack_save_state(const SaveStateHeader& h, const std::vector<u8>&
 // StateError naming what is wrong (truncated, not a save state, wrong version, other BIOS or
 // program, corrupt).
 std::vector<u8> unpack_save_state(const u8* data, size_t size, u64 bios_hash, u64 program_hash);
-
-// Writes `data` to `path` atomically (temporary file, then rename); throws std::runtime_error.
-void write_file_atomically(const std::string& path, const std::vector<u8>& data);
 
 }  // namespace psx

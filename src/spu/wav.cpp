@@ -1,11 +1,11 @@
 // WAV reading and atomic writing (RIFF "WAVE" with a "fmt " chunk of format 1 and a "data" chunk).
 #include "spu/wav.h"
 
-#include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
+
+#include "core/atomic_file.h"
 
 namespace psx::spu {
 namespace {
@@ -85,21 +85,10 @@ void write_wav(const std::string& path, const StereoSample* samples, size_t coun
     put16(out, static_cast<u16>(samples[i].right));
   }
 
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw WavError(path + ": cannot create temporary file " + tmp);
-    f.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
-    if (!f.flush()) {
-      std::remove(tmp.c_str());
-      throw WavError(path + ": writing " + tmp + " failed");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw WavError(path + ": cannot rename " + tmp + ": " + ec.message());
+  try {
+    write_file_atomically(path, out);
+  } catch (const std::runtime_error& e) {
+    throw WavError(e.what());
   }
 }
 

@@ -8,13 +8,13 @@
 // Without --cnf, a SYSTEM.CNF booting the EXE is generated. Exit codes: 0 ok, 1 usage, 2 bad input.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/atomic_file.h"
 #include "core/disc/iso_builder.h"
+#include "core/input_error.h"
 
 namespace {
 
@@ -26,11 +26,11 @@ struct Usage {
 };
 
 std::vector<psx::u8> read_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw DiscError(path + ": cannot open");
-  std::vector<psx::u8> data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  if (f.bad()) throw DiscError(path + ": read failed");
-  return data;
+  try {
+    return psx::read_file(path);
+  } catch (const psx::InputError& e) {
+    throw DiscError(e.what());
+  }
 }
 
 void write_atomically(const std::string& path, const std::vector<psx::u8>& data) {

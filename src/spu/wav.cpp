@@ -2,10 +2,9 @@
 #include "spu/wav.h"
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 #include "core/atomic_file.h"
+#include "core/input_error.h"
 
 namespace psx::spu {
 namespace {
@@ -27,9 +26,12 @@ void put16(std::vector<u8>& v, u16 x) {
 }  // namespace
 
 WavData read_wav(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw WavError(path + ": cannot open file");
-  std::vector<u8> d((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<u8> d;
+  try {
+    d = read_file(path);
+  } catch (const InputError& e) {
+    throw WavError(e.what());
+  }
   if (d.size() < 12) fail(path, d.size(), "file ends before the 12-byte RIFF header");
   if (std::memcmp(d.data(), "RIFF", 4) != 0) fail(path, 0, "expected 'RIFF'");
   if (std::memcmp(d.data() + 8, "WAVE", 4) != 0) fail(path, 8, "expected 'WAVE'");

@@ -25,7 +25,7 @@ u32 load_width(const u8* p, u32 width) {
   switch (width) {
     case 1: return p[0];
     case 2: return p[0] | p[1] << 8;
-    default: return Bus::load_le32(p);
+    default: return load_le32(p);
   }
 }
 void store_width(u8* p, u32 v, u32 width) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/endian.h"
 #include "core/io_device.h"
 #include "core/memory_watch.h"
 #include "core/scheduler.h"
@@ -87,14 +88,6 @@ class Bus {
   const std::map<u32, u32>& unmapped_accesses() const { return unmapped_; }
 
   void do_state(StateIO& s);
-
-  static u32 load_le32(const u8* p) { return p[0] | p[1] << 8 | p[2] << 16 | static_cast<u32>(p[3]) << 24; }
-  static void store_le32(u8* p, u32 v) {
-    p[0] = u8(v);
-    p[1] = u8(v >> 8);
-    p[2] = u8(v >> 16);
-    p[3] = u8(v >> 24);
-  }
 
   // Read times in CPU cycles beyond the instruction's own cycle. RAM, scratchpad and the on-chip
   // I/O ports have fixed times (JaCzekanski's ps1-tests cpu/access-time, hardware log: a load

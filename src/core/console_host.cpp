@@ -5,6 +5,7 @@
 
 #include "core/atomic_file.h"
 #include "core/console.h"
+#include "core/endian.h"
 #include "core/input_error.h"
 #include "core/save_state.h"
 
@@ -24,16 +25,13 @@ u8* Console::host_pointer(u32 addr, u32 width) const {
 }
 
 u16 Console::read16(u32 addr) const {
-  const u8* p = host_pointer(addr, 2);
-  return u16(p[0] | p[1] << 8);
+  return load_le16(host_pointer(addr, 2));
 }
-u32 Console::read32(u32 addr) const { return Bus::load_le32(host_pointer(addr, 4)); }
+u32 Console::read32(u32 addr) const { return load_le32(host_pointer(addr, 4)); }
 void Console::write16(u32 addr, u16 v) {
-  u8* p = host_pointer(addr, 2);
-  p[0] = u8(v);
-  p[1] = u8(v >> 8);
+  store_le16(host_pointer(addr, 2), v);
 }
-void Console::write32(u32 addr, u32 v) { Bus::store_le32(host_pointer(addr, 4), v); }
+void Console::write32(u32 addr, u32 v) { store_le32(host_pointer(addr, 4), v); }
 
 void Console::dump_ram(const std::string& path) const {
   const u8* r = bus_.ram();

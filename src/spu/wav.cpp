@@ -4,13 +4,12 @@
 #include <cstring>
 
 #include "core/atomic_file.h"
+#include "core/endian.h"
 #include "core/input_error.h"
 
 namespace psx::spu {
 namespace {
 
-u32 le32(const u8* p) { return p[0] | p[1] << 8 | p[2] << 16 | static_cast<u32>(p[3]) << 24; }
-u16 le16(const u8* p) { return static_cast<u16>(p[0] | p[1] << 8); }
 void put32(std::vector<u8>& v, u32 x) {
   for (int i = 0; i < 4; ++i) v.push_back(static_cast<u8>(x >> (8 * i)));
 }
@@ -40,16 +39,16 @@ WavData read_wav(const std::string& path) {
   bool have_fmt = false;
   size_t pos = 12;
   while (pos + 8 <= d.size()) {
-    const u32 size = le32(&d[pos + 4]);
+    const u32 size = load_le32(&d[pos + 4]);
     const size_t body = pos + 8;
     if (size > d.size() - body) fail(path, pos + 4, "chunk size " + std::to_string(size) + " runs past the end of the file");
     if (std::memcmp(&d[pos], "fmt ", 4) == 0) {
       if (size < 16) fail(path, pos + 4, "expected a 'fmt ' chunk of at least 16 bytes");
-      const u16 format = le16(&d[body]);
+      const u16 format = load_le16(&d[body]);
       if (format != 1) fail(path, body, "expected PCM format 1, found " + std::to_string(format));
-      w.channels = le16(&d[body + 2]);
-      w.sample_rate = le32(&d[body + 4]);
-      const u16 bits = le16(&d[body + 14]);
+      w.channels = load_le16(&d[body + 2]);
+      w.sample_rate = load_le32(&d[body + 4]);
+      const u16 bits = load_le16(&d[body + 14]);
       if (w.channels == 0) fail(path, body + 2, "expected at least one channel");
       if (bits != 16) fail(path, body + 14, "expected 16 bits per sample, found " + std::to_string(bits));
       have_fmt = true;
@@ -58,7 +57,7 @@ WavData read_wav(const std::string& path) {
       const size_t frame = 2u * w.channels;
       if (size % frame != 0) fail(path, pos + 4, "data size is not a whole number of sample frames");
       w.samples.resize(size / 2);
-      for (size_t i = 0; i < w.samples.size(); ++i) w.samples[i] = static_cast<s16>(le16(&d[body + 2 * i]));
+      for (size_t i = 0; i < w.samples.size(); ++i) w.samples[i] = static_cast<s16>(load_le16(&d[body + 2 * i]));
       return w;
     }
     pos = body + size + (size & 1);  // chunks are padded to even sizes

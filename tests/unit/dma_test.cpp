@@ -5,6 +5,7 @@
 
 #include "core/bus.h"
 #include "core/dma.h"
+#include "core/endian.h"
 #include "core/irq.h"
 #include "core/scheduler.h"
 
@@ -48,8 +49,8 @@ class DmaTest : public ::testing::Test {
     dma.connect(Dma::Spu, &spu);
     irq.write(4, 0x7FF);  // unmask everything so stat() shows raised lines
   }
-  u32 ram32(u32 addr) { return Bus::load_le32(bus.ram() + addr); }
-  void set_ram32(u32 addr, u32 v) { Bus::store_le32(bus.ram() + addr, v); }
+  u32 ram32(u32 addr) { return psx::load_le32(bus.ram() + addr); }
+  void set_ram32(u32 addr, u32 v) { psx::store_le32(bus.ram() + addr, v); }
   void w(u32 off, u32 v) { dma.io_write(off, v, 4); }
   u32 r(u32 off) { return dma.io_read(off, 4); }
   bool dma_irq() { return irq.stat() & (1u << static_cast<u32>(Irq::Dma)); }

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "core/bios/exe.h"
-#include "core/bus.h"
+#include "core/endian.h"
 #include "core/input_error.h"
 
 namespace psx {
@@ -13,9 +13,9 @@ namespace {
 std::vector<u8> make_exe(u32 pc, u32 text_addr, u32 text_size, u32 file_text_bytes) {
   std::vector<u8> f(0x800 + file_text_bytes, 0);
   std::memcpy(f.data(), "PS-X EXE", 8);
-  Bus::store_le32(&f[0x10], pc);
-  Bus::store_le32(&f[0x18], text_addr);
-  Bus::store_le32(&f[0x1C], text_size);
+  psx::store_le32(&f[0x10], pc);
+  psx::store_le32(&f[0x18], text_addr);
+  psx::store_le32(&f[0x1C], text_size);
   return f;
 }
 

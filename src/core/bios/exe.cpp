@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/bus.h"
+#include "core/endian.h"
 #include "core/input_error.h"
 
 namespace psx {
@@ -21,7 +22,7 @@ PsxExe PsxExe::parse(const std::vector<u8>& f, const std::string& name) {
     throw InputError::at_offset(name, f.size(), "file ends inside the 2048-byte PS-X EXE header");
   if (std::memcmp(f.data(), "PS-X EXE", 8) != 0)
     throw InputError::at_offset(name, 0, "expected the magic \"PS-X EXE\"");
-  auto word = [&](u32 off) { return Bus::load_le32(&f[off]); };
+  auto word = [&](u32 off) { return load_le32(&f[off]); };
   PsxExe exe;
   exe.pc = word(0x10);
   exe.gp = word(0x14);

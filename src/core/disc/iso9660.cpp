@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/endian.h"
+
 namespace psx::disc {
 namespace {
-
-u32 le32(const u8* p) { return p[0] | p[1] << 8 | p[2] << 16 | static_cast<u32>(p[3]) << 24; }
 
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -32,8 +32,8 @@ std::string trim_right(const u8* p, size_t n) {
 // name length at 32, name at 33.
 IsoEntry parse_record(const u8* r) {
   IsoEntry e;
-  e.lba = le32(r + 2);
-  e.size = le32(r + 10);
+  e.lba = load_le32(r + 2);
+  e.size = load_le32(r + 10);
   e.directory = (r[25] & 0x02) != 0;
   e.name = strip_version(std::string(reinterpret_cast<const char*>(r + 33), r[32]));
   return e;

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/endian.h"
+
 namespace psx::disc {
 namespace {
 
@@ -13,13 +15,10 @@ void both16(u8* p, u32 v) {
   p[0] = static_cast<u8>(v), p[1] = static_cast<u8>(v >> 8);
   p[2] = static_cast<u8>(v >> 8), p[3] = static_cast<u8>(v);
 }
-void le32(u8* p, u32 v) {
-  for (int i = 0; i < 4; ++i) p[i] = static_cast<u8>(v >> (8 * i));
-}
 void be32(u8* p, u32 v) {
   for (int i = 0; i < 4; ++i) p[i] = static_cast<u8>(v >> (24 - 8 * i));
 }
-void both32(u8* p, u32 v) { le32(p, v), be32(p + 4, v); }
+void both32(u8* p, u32 v) { store_le32(p, v), be32(p + 4, v); }
 
 void padded(u8* p, const std::string& s, size_t n) {
   std::memset(p, ' ', n);
@@ -110,7 +109,7 @@ std::vector<u8> build_iso(std::vector<IsoFile> files, const IsoOptions& options)
   both16(pvd + 124, 1);
   both16(pvd + 128, kDataSectorSize);
   both32(pvd + 132, 10);  // path table: the root's single 10-byte entry
-  le32(pvd + 140, 18);
+  store_le32(pvd + 140, 18);
   be32(pvd + 148, 19);
   directory_record(pvd + 156, std::string(1, '\0'), kRootLba, root_size, true);
   padded(pvd + 190, "", 128);
@@ -125,7 +124,7 @@ std::vector<u8> build_iso(std::vector<IsoFile> files, const IsoOptions& options)
   std::memcpy(term + 1, "CD001", 5);
   term[6] = 1;
   // Path table entry: name length 1, extent, parent directory number 1, name 00.
-  blocks[18][0] = 1, le32(blocks[18].data() + 2, kRootLba), blocks[18][6] = 1;
+  blocks[18][0] = 1, store_le32(blocks[18].data() + 2, kRootLba), blocks[18][6] = 1;
   blocks[19][0] = 1, be32(blocks[19].data() + 2, kRootLba), blocks[19][7] = 1;
   for (u32 b = 0; b < root_blocks; ++b) blocks[kRootLba + b] = dir_blocks[b];
   for (size_t i = 0; i < files.size(); ++i)

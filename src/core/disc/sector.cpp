@@ -7,6 +7,8 @@
 
 #include <cstring>
 
+#include "core/endian.h"
+
 namespace psx::disc {
 namespace {
 
@@ -59,10 +61,6 @@ void ecc_pass(const u8* src, u32 major_count, u32 minor_count, u32 major_mult, u
 void compute_ecc(u8* raw) {
   ecc_pass(raw + 12, 86, 24, 2, 86, raw + 0x81C);
   ecc_pass(raw + 12, 52, 43, 86, 88, raw + 0x8C8);
-}
-
-void store_le32(u8* p, u32 v) {
-  for (int i = 0; i < 4; ++i) p[i] = static_cast<u8>(v >> (8 * i));
 }
 
 }  // namespace

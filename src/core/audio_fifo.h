@@ -32,7 +32,6 @@ class AudioFifo {
     return s;
   }
   u32 size() const { return count_; }
-  u32 free_space() const { return kCapacity - count_; }
   void clear() { head_ = count_ = 0; }
 
   void do_state(StateIO& s) {

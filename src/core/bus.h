@@ -84,9 +84,6 @@ class Bus {
     frame_ = frame;
   }
 
-  u32 cache_control() const { return cache_control_; }
-  const std::map<u32, u32>& unmapped_accesses() const { return unmapped_; }
-
   void do_state(StateIO& s);
 
   // Read times in CPU cycles beyond the instruction's own cycle. RAM, scratchpad and the on-chip

@@ -36,7 +36,6 @@ class Dma : public IoDevice {
   u32 madr(u32 ch) const { return channels_[ch].madr; }
   u32 bcr(u32 ch) const { return channels_[ch].bcr; }
   u32 chcr(u32 ch) const { return channels_[ch].chcr; }
-  u32 dpcr() const { return dpcr_; }
   u32 dicr() const { return dicr_; }
 
   void do_state(StateIO& s);

@@ -40,9 +40,6 @@ class Scheduler {
   // callback may book new events, including ones due now; those run too.
   void run_due_events();
 
-  // Ends the current CPU run slice early (a device wants the run loop to look at something).
-  void request_break() { next_ = now_; }
-
   void do_state(StateIO& s);
 
  private:

@@ -34,7 +34,6 @@ class VideoTiming {
   void set_mode(bool pal, bool interlaced, u32 dot_divider);
 
   bool in_vblank() const { return vblank_; }
-  bool in_hblank() const { return hblank_; }
   bool odd_field() const { return odd_field_; }
   u32 line() const { return line_; }
   bool pal() const { return pal_; }

@@ -47,7 +47,8 @@ IsoFilesystem::IsoFilesystem(Disc& disc) : disc_(disc) {
   if (pvd[0] != 1 || std::memcmp(pvd + 1, "CD001", 5) != 0)
     throw DiscError(disc.path() + ": logical block 16: no ISO 9660 primary volume descriptor (expected type 1 'CD001')");
   if (pvd[156] < 34)
-    throw DiscError(disc.path() + ": logical block 16: root directory record too short");
+    throw DiscError(disc.path() + ": logical block 16, byte 156: root directory record is " + std::to_string(pvd[156]) +
+                    " bytes, expected at least 34");
   root_ = parse_record(pvd + 156);
   root_.directory = true;
   root_.name.clear();

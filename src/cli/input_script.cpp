@@ -4,8 +4,7 @@
 #include <sstream>
 #include <utility>
 
-#include "core/input_error.h"
-#include "core/sio/pad.h"
+#include "core/console.h"
 
 namespace psxrl::cli {
 

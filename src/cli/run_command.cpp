@@ -11,9 +11,6 @@
 #include "cli/input_script.h"
 #include "cli/pacer.h"
 #include "core/console.h"
-#include "core/input_error.h"
-#include "core/sio/dualshock.h"
-#include "spu/wav.h"
 
 namespace psxrl::cli {
 
@@ -73,10 +70,11 @@ bool parse_count(const std::string& s, unsigned long long& out) {
   return true;
 }
 
-bool parse_pad(const std::string& s, std::unique_ptr<psx::Pad>& out) {
-  if (s == "digital") out = std::make_unique<psx::DigitalPad>();
-  else if (s == "dualshock") out = std::make_unique<psx::DualShock>();
-  else if (s != "none") return false;
+bool parse_pad(const std::string& s, psx::Console::PadType& out) {
+  if (s == "digital") out = psx::Console::PadType::Digital;
+  else if (s == "dualshock") out = psx::Console::PadType::DualShock;
+  else if (s == "none") out = psx::Console::PadType::None;
+  else return false;
   return true;
 }
 
@@ -87,9 +85,9 @@ struct ScreenshotAt {
 
 // Runs `frames` frames one at a time, pressing the script's buttons on port 1 before the frame
 // each is due in and writing the screenshots due when a frame ends, paced to real time when a
-// pacer is given. False (with `error`) when a screenshot cannot be written.
-bool run_scripted(psx::Console& console, unsigned long long frames, const std::vector<InputPress>& presses,
-                  const std::vector<ScreenshotAt>& shots, Pacer* pacer, std::string& error) {
+// pacer is given. A screenshot that cannot be written throws InputError.
+void run_scripted(psx::Console& console, unsigned long long frames, const std::vector<InputPress>& presses,
+                  const std::vector<ScreenshotAt>& shots, Pacer* pacer) {
   size_t next_press = 0;
   for (unsigned long long f = 0; f < frames && !console.stopped(); ++f) {
     for (; next_press < presses.size() && presses[next_press].frame == f; ++next_press)
@@ -97,9 +95,8 @@ bool run_scripted(psx::Console& console, unsigned long long frames, const std::v
     console.run_frame();
     if (pacer) pacer->wait_frame();
     for (const ScreenshotAt& shot : shots)
-      if (shot.frame == f && !console.gpu().write_display_png(shot.path, error)) return false;
+      if (shot.frame == f) console.save_screenshot(shot.path);
   }
-  return true;
 }
 
 }  // namespace
@@ -108,7 +105,7 @@ int run_command(const std::vector<std::string>& args) {
   std::string exe, bios, disc, screenshot, vram_png, wav;
   unsigned long long frames = 3600, cycles = 0;
   bool expect_exit = false, quiet = false, realtime = false;
-  std::unique_ptr<psx::Pad> pads[2] = {std::make_unique<psx::DigitalPad>(), nullptr};
+  psx::Console::PadType pads[2] = {psx::Console::PadType::Digital, psx::Console::PadType::None};
   std::string memcards[2];
   std::string input_path;
   std::vector<ScreenshotAt> shots;
@@ -181,46 +178,33 @@ int run_command(const std::vector<std::string>& args) {
     if (!disc.empty()) console.insert_disc(disc);
     if (!exe.empty()) console.boot_exe(exe);
     else console.boot_disc();
-    for (int port = 0; port < 2; ++port) {
-      console.sio0().attach_pad(port, std::move(pads[port]));
-      if (!memcards[port].empty())
-        console.sio0().attach_memory_card(port, std::make_unique<psx::MemoryCard>(memcards[port]));
+    for (int port = 1; port <= 2; ++port) {
+      console.plug_pad(port, pads[port - 1]);
+      if (!memcards[port - 1].empty()) console.insert_memory_card(port, memcards[port - 1]);
     }
   } catch (const psx::InputError& e) {
     std::fprintf(stderr, "psxrl run: %s\n", e.what());
     return kBadInput;
-  } catch (const psx::MemoryCardError& e) {
-    std::fprintf(stderr, "psxrl run: %s\n", e.what());
-    return kBadInput;
   }
 
-  if (!wav.empty()) console.spu().set_output_limit(SIZE_MAX);
-  std::string png_error;
+  if (!wav.empty()) console.keep_all_audio();
   Pacer pacer(60000.0 / 1001.0);  // NTSC frame rate
-  if (cycles) {
-    console.run_cycles(cycles);
-  } else if (!scripted) {
-    console.run_frames(frames);
-  } else if (!run_scripted(console, frames, presses, shots, realtime ? &pacer : nullptr, png_error)) {
+  try {
+    if (cycles) console.run_cycles(cycles);
+    else if (!scripted) console.run_frames(frames);
+    else run_scripted(console, frames, presses, shots, realtime ? &pacer : nullptr);
     std::fflush(stdout);
-    std::fprintf(stderr, "psxrl run: %s\n", png_error.c_str());
-    return kBadInput;
-  }
-  std::fflush(stdout);
-  if ((!screenshot.empty() && !console.gpu().write_display_png(screenshot, png_error)) ||
-      (!vram_png.empty() && !console.gpu().write_vram_png(vram_png, png_error))) {
-    std::fprintf(stderr, "psxrl run: %s\n", png_error.c_str());
-    return kBadInput;
-  }
-  if (!wav.empty()) {
-    std::vector<psx::StereoSample> audio;
-    console.spu().take_samples(audio);
-    try {
-      psx::spu::write_wav(wav, audio.data(), audio.size());
-    } catch (const psx::spu::WavError& e) {
-      std::fprintf(stderr, "psxrl run: %s\n", e.what());
-      return kBadInput;
+    if (!screenshot.empty()) console.save_screenshot(screenshot);
+    if (!vram_png.empty()) console.save_vram_png(vram_png);
+    if (!wav.empty()) {
+      std::vector<psx::StereoSample> audio;
+      console.take_audio(audio);
+      psx::Console::save_wav(wav, audio);
     }
+  } catch (const psx::InputError& e) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "psxrl run: %s\n", e.what());
+    return kBadInput;
   }
 
   if (!console.fatal_error().empty()) {

@@ -4,6 +4,7 @@
 // threads. It never starts threads itself; every run call returns synchronously.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -19,6 +20,7 @@
 #include "core/cpu/cpu.h"
 #include "core/dma.h"
 #include "core/gte/gte.h"
+#include "core/input_error.h"
 #include "core/irq.h"
 #include "core/mdec.h"
 #include "core/memory_watch.h"
@@ -118,6 +120,14 @@ class Console : private CpuHooks {
   const u16* vram() const { return gpu_.vram(); }
   static constexpr u32 kVramWidth = 1024, kVramHeight = 512;
   void take_audio(std::vector<StereoSample>& out) { spu_.take_samples(out); }
+  // Untaken audio is capped at one minute (the oldest half is dropped) unless the whole run's
+  // audio is to be kept, e.g. for a recording.
+  void keep_all_audio() { spu_.set_output_limit(SIZE_MAX); }
+  // Files for the host: the displayed picture or the whole VRAM as PNG, audio as a 16-bit stereo
+  // 44.1 kHz WAV. Written atomically; a failure throws InputError naming the file.
+  void save_screenshot(const std::string& path) const;
+  void save_vram_png(const std::string& path);
+  static void save_wav(const std::string& path, const std::vector<StereoSample>& samples);
 
   // Text the program prints (debug ports and BIOS putchar); diagnostic messages.
   std::function<void(char)> on_tty;
@@ -135,6 +145,13 @@ class Console : private CpuHooks {
   // Sound: output samples, capture (spu/spu.h); CD audio flows CD-ROM -> cd_audio -> SPU.
   Spu& spu() { return spu_; }
   AudioFifo& cd_audio() { return cdrom_.audio_out(); }
+
+  // Devices in the ports (configuration, not input). A digital pad is in port 1 at power-on.
+  enum class PadType { None, Digital, DualShock };
+  void plug_pad(int port, PadType type);
+  // A 128 KiB memory card image at `path`, created on the first write and saved atomically;
+  // throws InputError for a file of another size or one that cannot be read.
+  void insert_memory_card(int port, const std::string& path);
 
   // Controller input between run calls. Ports are 1 and 2 as labelled on the console; `buttons`
   // are pad_button bits (1 = pressed). Calls for an empty port do nothing.

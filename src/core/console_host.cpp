@@ -8,6 +8,7 @@
 #include "core/endian.h"
 #include "core/input_error.h"
 #include "core/save_state.h"
+#include "spu/wav.h"
 
 namespace psx {
 
@@ -36,6 +37,24 @@ void Console::write32(u32 addr, u32 v) { store_le32(host_pointer(addr, 4), v); }
 void Console::dump_ram(const std::string& path) const {
   const u8* r = bus_.ram();
   write_file_atomically(path, std::vector<u8>(r, r + Bus::kRamSize));
+}
+
+void Console::save_screenshot(const std::string& path) const {
+  std::string error;
+  if (!gpu_.write_display_png(path, error)) throw InputError(error);
+}
+
+void Console::save_vram_png(const std::string& path) {
+  std::string error;
+  if (!gpu_.write_vram_png(path, error)) throw InputError(error);
+}
+
+void Console::save_wav(const std::string& path, const std::vector<StereoSample>& samples) {
+  try {
+    spu::write_wav(path, samples.data(), samples.size());
+  } catch (const spu::WavError& e) {
+    throw InputError(e.what());
+  }
 }
 
 void Console::watch(const std::string& key, u32 addr, u32 length, bool fresh_only, u32 flow_limit_frames) {

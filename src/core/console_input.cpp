@@ -3,12 +3,31 @@
 #include <stdexcept>
 
 #include "core/console.h"
+#include "core/sio/dualshock.h"
 
 namespace psx {
 
 int Console::port_index(int port) {
   if (port != 1 && port != 2) throw std::invalid_argument("controller port must be 1 or 2, not " + std::to_string(port));
   return port - 1;
+}
+
+void Console::plug_pad(int port, PadType type) {
+  int i = port_index(port);
+  std::unique_ptr<Pad> pad;
+  if (type == PadType::Digital) pad = std::make_unique<DigitalPad>();
+  if (type == PadType::DualShock) pad = std::make_unique<DualShock>();
+  sio0_.attach_pad(i, std::move(pad));
+  hold_frames_[i] = {};
+}
+
+void Console::insert_memory_card(int port, const std::string& path) {
+  int i = port_index(port);
+  try {
+    sio0_.attach_memory_card(i, std::make_unique<MemoryCard>(path));
+  } catch (const MemoryCardError& e) {
+    throw InputError(e.what());
+  }
 }
 
 void Console::set_buttons(int port, u16 pressed) {

@@ -48,6 +48,7 @@ Console::Console()
   cdrom_.on_log = bus_.on_log;
   // SIO0: a digital pad in controller port 1 by default (programs and BIOSes expect one).
   bus_.map_io(Sio0::kBase, Sio0::kSize, &sio0_);
+  bus_.map_io(Sio1::kBase, Sio1::kSize, &sio1_);
   sio0_.attach_pad(0, std::make_unique<DigitalPad>());
 
   bus_.map_io(Dma::kBase, Dma::kSize, &dma_);
@@ -217,6 +218,7 @@ void Console::do_state(StateIO& s) {
   hle_.do_state(s);
   cdrom_.do_state(s);
   sio0_.do_state(s);
+  sio1_.do_state(s);
   dma_.do_state(s);
   timers_.do_state(s);
   mdec_.do_state(s);

@@ -26,6 +26,7 @@
 #include "core/memory_watch.h"
 #include "core/scheduler.h"
 #include "core/sio/sio0.h"
+#include "core/sio/sio1.h"
 #include "core/state.h"
 #include "core/timers.h"
 #include "gpu/gpu.h"
@@ -184,6 +185,7 @@ class Console : private CpuHooks {
   HleBios hle_;
   Cdrom cdrom_;
   Sio0 sio0_;
+  Sio1 sio1_{sched_};
   Gpu gpu_;
   Spu spu_;
   Dma dma_{sched_, irq_, bus_};

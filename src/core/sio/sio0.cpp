@@ -98,10 +98,7 @@ u32 Sio0::read_stat() const {
   if (!tx_buffer_full_ && !transferring_) v |= 1u << 2;  // TX ready 2: all sent
   if (ack_low_) v |= 1u << 7;
   if (irq_flag_) v |= 1u << 9;
-  // The 21-bit baud timer reloads with Reload*Factor/2 and counts down at the CPU clock.
-  const Cycles half = baud_half_period();
-  const u32 timer = static_cast<u32>(half - (sched_.now() - baud_reload_at_) % half);
-  return v | (timer & 0x1FFFFF) << 11;
+  return v | sio_baud_timer_bits(baud_, mode_, sched_.now() - baud_reload_at_);
 }
 
 u8 Sio0::pop_rx() {
@@ -110,11 +107,6 @@ u8 Sio0::pop_rx() {
   rx_head_ = (rx_head_ + 1) & 7;
   --rx_count_;
   return b;
-}
-
-Cycles Sio0::baud_half_period() const {
-  static constexpr Cycles kFactor[4] = {1, 1, 16, 64};  // JOY_MODE bits 0-1
-  return std::max<Cycles>(baud_ * kFactor[mode_ & 3] / 2, 1);
 }
 
 void Sio0::write_ctrl(u16 value) {

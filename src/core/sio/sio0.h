@@ -10,6 +10,7 @@
 #include "core/io_device.h"
 #include "core/irq.h"
 #include "core/scheduler.h"
+#include "core/sio/baud_timer.h"
 #include "core/sio/memory_card.h"
 #include "core/sio/pad.h"
 #include "core/state.h"
@@ -78,8 +79,7 @@ class Sio0 final : public IoDevice {
   SioDevice::Reply exchange(u8 command, Cycles& ack_delay);
   void end_selection();
   void raise_irq();
-  Cycles baud_half_period() const;
-  Cycles byte_cycles() const { return 16 * baud_half_period(); }
+  Cycles byte_cycles() const { return 16 * sio_baud_half_period(baud_, mode_); }
 
   Scheduler& sched_;
   InterruptController& irq_;

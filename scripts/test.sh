@@ -1,6 +1,13 @@
 #!/usr/bin/env bash
-# Installs dependencies, builds, and runs every test: GoogleTest units and test programs (CTest).
+# Installs dependencies, builds, and runs every test: GoogleTest units and test programs (CTest),
+# in the release build and again in a sanitizer build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 ctest --test-dir build --output-on-failure -j2
+
+# The same tests again under AddressSanitizer and UndefinedBehaviorSanitizer: guest programs and
+# user files must never make the emulator touch memory it does not own or rely on undefined C++.
+cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSXRL_SANITIZE=ON >/dev/null
+cmake --build build-sanitize
+ASAN_OPTIONS=detect_leaks=0 ctest --test-dir build-sanitize --output-on-failure -j2

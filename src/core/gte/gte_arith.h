@@ -24,7 +24,7 @@ inline s64 Gte::check_mac(s64 v) {
 template <int i>
 inline void Gte::set_ir(s32 v, bool lm) {
   const s32 lo = lm ? 0 : -0x8000;
-  if (u32(v - lo) > u32(0x7FFF - lo)) [[unlikely]] {
+  if (u32(v) - u32(lo) > u32(0x7FFF - lo)) [[unlikely]] {  // unsigned: v - lo may not fit in s32
     v = v < lo ? lo : 0x7FFF;
     r_.flag |= kFlagIr1 >> (i - 1);
   }

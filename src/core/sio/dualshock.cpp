@@ -151,7 +151,8 @@ void DualShock::take_parameter(u8 step, u8 value) {
     case 0x4C:  // variable response B
       if (step == 3) reply_[6] = value == 0x00 ? 0x04 : value == 0x01 ? 0x07 : 0x00;
       break;
-    case 0x4D:
+    case 0x4D:  // mapping bytes follow the command and the 00h (TAP) byte at step 2
+      if (step < 3 || step - 3u >= rumble_config_.size()) break;
       rumble_config_[step - 3] = value;
       if (motor_slot(0x00) == kNoMotorSlot) motor_small_ = 0;
       if (motor_slot(0x01) == kNoMotorSlot) motor_large_ = 0;

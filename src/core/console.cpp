@@ -17,7 +17,26 @@ Console::Console()
       sio0_(sched_, irq_),
       gpu_(sched_, irq_),
       spu_(sched_, irq_, cdrom_.audio_out()) {
+  // The I/O region, in address order (psx-spx "Memory Map").
+  bus_.map_io(Sio0::kBase, Sio0::kSize, &sio0_);
+  bus_.map_io(Sio1::kBase, Sio1::kSize, &sio1_);
+  bus_.map_io(Dma::kBase, Dma::kSize, &dma_);
+  bus_.map_io(Timers::kBase, Timers::kSize, &timers_);
+  bus_.map_io(Cdrom::kBase, Cdrom::kMapSize, &cdrom_);
+  bus_.map_io(Gpu::kBase, Gpu::kSize, &gpu_);
+  bus_.map_io(Mdec::kBase, Mdec::kSize, &mdec_);
   bus_.map_io(Spu::kBase, Spu::kSize, &spu_);
+
+  dma_.connect(Dma::MdecIn, &mdec_.dma_in());
+  dma_.connect(Dma::MdecOut, &mdec_.dma_out());
+  dma_.connect(Dma::Gpu, &gpu_);
+  dma_.connect(Dma::Cdrom, &cdrom_);
+  dma_.connect(Dma::Spu, &spu_);
+  // The root counters count the GPU's dots and HBlanks and synchronise to its blanking.
+  gpu_.set_video_signals(&timers_);
+  // A digital pad in controller port 1 (programs and BIOSes expect one).
+  sio0_.attach_pad(0, std::make_unique<DigitalPad>());
+
   // A frame ends at the GPU's VBlank.
   gpu_.on_vblank = [this] {
     frame_done_ = true;
@@ -26,7 +45,6 @@ Console::Console()
     release_timed_buttons();
     cpu_.stop();
   };
-  bus_.map_io(Gpu::kBase, Gpu::kSize, &gpu_);
   limit_event_ = sched_.add_event("run-limit", [this](Cycles) {
     limit_reached_ = true;
     cpu_.stop();
@@ -40,27 +58,11 @@ Console::Console()
     cpu_.stop();
   };
   bus_.on_log = [this](const std::string& m) { log(m); };
+  cdrom_.on_log = bus_.on_log;
   hle_.on_tty = bus_.on_tty;
   hle_.on_log = bus_.on_log;
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
   hle_.pad_at = [this](int port) -> SioDevice* { return sio0_.pad(port); };
-  bus_.map_io(Cdrom::kBase, Cdrom::kMapSize, &cdrom_);
-  cdrom_.on_log = bus_.on_log;
-  // SIO0: a digital pad in controller port 1 by default (programs and BIOSes expect one).
-  bus_.map_io(Sio0::kBase, Sio0::kSize, &sio0_);
-  bus_.map_io(Sio1::kBase, Sio1::kSize, &sio1_);
-  sio0_.attach_pad(0, std::make_unique<DigitalPad>());
-
-  bus_.map_io(Dma::kBase, Dma::kSize, &dma_);
-  bus_.map_io(Timers::kBase, Timers::kSize, &timers_);
-  bus_.map_io(Mdec::kBase, Mdec::kSize, &mdec_);
-  dma_.connect(Dma::MdecIn, &mdec_.dma_in());
-  dma_.connect(Dma::MdecOut, &mdec_.dma_out());
-  dma_.connect(Dma::Gpu, &gpu_);
-  dma_.connect(Dma::Cdrom, &cdrom_);
-  dma_.connect(Dma::Spu, &spu_);
-  // The root counters count the GPU's dots and HBlanks and synchronise to its blanking.
-  gpu_.set_video_signals(&timers_);
   cpu_.reset();
 }
 

@@ -1,11 +1,13 @@
 // CD audio: XA-ADPCM decoding (psx-spx "CDROM XA Audio ADPCM Compression": sample = (nibble <<
 // 12) >> shift + filtered history), the Setfilter channel selection of interleaved XA sectors,
-// the 37.8 -> 44.1 kHz rate (7 output frames per 6 input samples; 18.9 kHz doubled first), and
-// CD-DA samples played into the SPU's CD-input FIFO.
+// the 37.8 -> 44.1 kHz zigzag resampling (7 output frames per 6 input samples; 18.9 kHz doubled
+// first; details in cdrom_xa_zigzag_test.cpp), and CD-DA samples played into the SPU's CD-input
+// FIFO.
 #include <filesystem>
 #include <fstream>
 
 #include "cdrom_test_harness.h"
+#include "cdrom_xa_reference.h"
 #include "core/disc/sector.h"
 
 namespace psx {
@@ -66,13 +68,16 @@ TEST(CdromAudio, XaFilterPlaysOnlyTheChosenChannel) {
   std::vector<StereoSample> out = play(h, 8, true);
   // Four channel-1 sectors; 18 groups * 8 units * 28 = 4032 samples each -> 4032 * 7 / 6 = 4704.
   ASSERT_EQ(out.size(), 4u * 4704);
-  u32 at_level = 0;
-  for (StereoSample s : out) {
-    ASSERT_LE(s.left, 0);
-    ASSERT_EQ(s.left, s.right);  // mono goes to both sides
-    if (s.left == -4096) ++at_level;
+  // Every sample is -4096 = -32768 / 8, so each zigzag product is floor(-TableX[i] / 8); once the
+  // 29 taps are full (frame 28 on) frame 7g+t is the sum of those for Table t+1.
+  s32 steady[7] = {};
+  for (int t = 0; t < 7; ++t)
+    for (int i = 0; i < 29; ++i) steady[t] += (-4096 * test::kDocZigZag[i][t]) >> 15;
+  for (size_t f = 0; f < out.size(); ++f) {
+    ASSERT_EQ(out[f].left, out[f].right);  // mono goes to both sides
+    if (f >= 28) ASSERT_EQ(out[f].left, steady[f % 7]) << "frame " << f;
   }
-  EXPECT_GT(at_level, 4u * 4700);
+  EXPECT_EQ(steady[2], -3720);  // Table3: its gain 73E5h / 8000h of -4096, floored per product
   // XA sectors never reach the CPU: no INT1 was raised.
   EXPECT_EQ(h.irq.stat() & 4u, 0u);
   h.cd.io_write(0, 0, 1);
@@ -102,19 +107,27 @@ TEST(CdromAudio, StereoHalfRateSectorLength) {
 
 TEST(CdromAudio, DecoderFilterFollowsTheDocumentedFormula) {
   // One group with filter 1 (60/64 of the previous sample), shift 12, nibble 7 in unit 0:
-  // s0 = (7 << 12) >> 12 = 7; s1 = 7 + (7 * 60 + 32) >> 6 = 7 + 7 = 14; s2 = 7 + (14 * 60 + 32) >> 6 = 20.
+  // s0 = (7 << 12) >> 12 = 7; s1 = 7 + (7 * 60 + 32) >> 6 = 7 + 7 = 14; s2 = 7 + (14 * 60 + 32) >> 6 = 20;
+  // s3 = 7 + (20 * 60 + 32) >> 6 = 26; s4 = 7 + 24 = 31; s5 = 7 + 29 = 36.
   u8 data[18 * 128] = {};
   data[4] = 0x1C;
   for (u32 j = 0; j < 28; ++j) data[16 + j * 4] = 0x07;
   XaAdpcm xa;
   std::vector<StereoSample> out;
   xa.decode_sector(data, 0x00, out);
-  // Output frame k sits at input position 6k/7: frames 0..2 interpolate between 0, 7, 14, 20.
-  ASSERT_GE(out.size(), 4u);
-  EXPECT_EQ(out[0].left, 0);              // position 0: the previous (zero) sample
-  EXPECT_EQ(out[1].left, 0 + 7 * 6 / 7);  // 6/7 of the way from 0 to 7
-  EXPECT_EQ(out[2].left, 7 + 7 * 5 / 7);  // 12/7: 5/7 from 7 to 14
-  EXPECT_EQ(out[3].left, 14 + 6 * 4 / 7); // 18/7: 4/7 from 14 to 20
+  // The first seven frames are the zigzag of those six samples (ring buffer otherwise zero):
+  // frame t = sum over the sample at distance i from p (s5 at i = 1 ... s0 at i = 6) of
+  // (s * TableX[i]) >> 15.
+  const s32 s[6] = {7, 14, 20, 26, 31, 36};
+  ASSERT_GE(out.size(), 7u);
+  for (int t = 0; t < 7; ++t) {
+    s32 want = 0;
+    for (int i = 1; i <= 6; ++i) want += (s[6 - i] * test::kDocZigZag[i - 1][t]) >> 15;
+    EXPECT_EQ(out[t].left, want) << "Table" << t + 1;
+  }
+  // Tiny samples times the small outer coefficients floor to 0 or -1: Table7 has TableX[1..6] =
+  // -5, +11h, -23h, +46h, -17h, -44h, giving -1 + 0 + -1 + 0 + -1 + -1 = -4.
+  EXPECT_EQ(out[6].left, -4);
 }
 
 TEST(CdromAudio, CddaPlaybackAndMute) {

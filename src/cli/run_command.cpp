@@ -20,7 +20,7 @@ const char* kRunHelp =
     "usage: psxrl run --exe FILE | --disc FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
     "                 [--pad1 TYPE] [--pad2 TYPE] [--memcard1 FILE] [--memcard2 FILE]\n"
     "                 [--screenshot FILE] [--vram FILE] [--wav FILE]\n"
-    "                 [--input FILE] [--screenshot-at FRAME FILE]...\n"
+    "                 [--input FILE] [--screenshot-at FRAME FILE]... [--realtime]\n"
     "\n"
     "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
     "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"

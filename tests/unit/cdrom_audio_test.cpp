@@ -75,7 +75,9 @@ TEST(CdromAudio, XaFilterPlaysOnlyTheChosenChannel) {
     for (int i = 0; i < 29; ++i) steady[t] += (-4096 * test::kDocZigZag[i][t]) >> 15;
   for (size_t f = 0; f < out.size(); ++f) {
     ASSERT_EQ(out[f].left, out[f].right);  // mono goes to both sides
-    if (f >= 28) ASSERT_EQ(out[f].left, steady[f % 7]) << "frame " << f;
+    if (f >= 28) {
+      ASSERT_EQ(out[f].left, steady[f % 7]) << "frame " << f;
+    }
   }
   EXPECT_EQ(steady[2], -3720);  // Table3: its gain 73E5h / 8000h of -4096, floored per product
   // XA sectors never reach the CPU: no INT1 was raised.

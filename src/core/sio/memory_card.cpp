@@ -142,9 +142,9 @@ SioDevice::Reply MemoryCard::transfer(u8 command) {
   return r;
 }
 
-// Read: 5Ah 5Dh, sector MSB/LSB in, 5Ch 5Dh, confirmed address, 128 data bytes, checksum, 47h.
-SioDevice::Reply MemoryCard::read_step(u32 step, u8 command) {
-  const bool valid = sector_ < kSectors;
+// Steps 2-5, the same for read and write: card IDs 5Ah 5Dh, then the sector number MSB/LSB
+// in (each answered with the byte before it), which also seeds the checksum.
+SioDevice::Reply MemoryCard::address_step(u32 step, u8 command) {
   switch (step) {
     case 2: return {0x5A, true};
     case 3: return {0x5D, true};
@@ -155,6 +155,15 @@ SioDevice::Reply MemoryCard::read_step(u32 step, u8 command) {
       sector_ |= command;
       checksum_ = static_cast<u8>((sector_ >> 8) ^ (sector_ & 0xFF));
       return {previous_, true};
+    default: return {0xFF, false};
+  }
+}
+
+// Read: 5Ah 5Dh, sector MSB/LSB in, 5Ch 5Dh, confirmed address, 128 data bytes, checksum, 47h.
+SioDevice::Reply MemoryCard::read_step(u32 step, u8 command) {
+  if (step <= 5) return address_step(step, command);
+  const bool valid = sector_ < kSectors;
+  switch (step) {
     case 6:
       late_ack_ = true;
       return {0x5C, true};
@@ -179,18 +188,7 @@ SioDevice::Reply MemoryCard::read_step(u32 step, u8 command) {
 // Write: 5Ah 5Dh, sector MSB/LSB, 128 data bytes and checksum in (each answered with the byte
 // before it), then 5Ch 5Dh and the end status.
 SioDevice::Reply MemoryCard::write_step(u32 step, u8 command) {
-  switch (step) {
-    case 2: return {0x5A, true};
-    case 3: return {0x5D, true};
-    case 4:
-      sector_ = static_cast<u16>(command << 8);
-      return {0x00, true};
-    case 5:
-      sector_ |= command;
-      checksum_ = static_cast<u8>((sector_ >> 8) ^ (sector_ & 0xFF));
-      return {previous_, true};
-    default: break;
-  }
+  if (step <= 5) return address_step(step, command);
   constexpr u32 kChecksumStep = 6 + kSectorSize;
   if (step < kChecksumStep) {
     sector_buf_[step - 6] = command;

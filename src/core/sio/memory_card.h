@@ -64,6 +64,7 @@ class MemoryCard final : public SioDevice {
 
   void format();
   void load();
+  Reply address_step(u32 step, u8 command);
   Reply read_step(u32 step, u8 command);
   Reply write_step(u32 step, u8 command);
   Reply get_id_step(u32 step);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/input_script.h"
+#include "core/hash.h"
 #include "tumble_console_util.h"
 
 using tumble_test::Boot;
@@ -17,12 +18,7 @@ using tumble_test::TumbleConsole;
 
 namespace {
 
-// FNV-1a over a span of RAM.
-psx::u64 hash(std::span<const psx::u8> bytes) {
-  psx::u64 h = 0xCBF29CE484222325ull;
-  for (psx::u8 b : bytes) h = (h ^ b) * 0x100000001B3ull;
-  return h;
-}
+psx::u64 hash(std::span<const psx::u8> bytes) { return psx::fnv1a(bytes.data(), bytes.size()); }
 
 // Boots, runs to game frame 40 on the title, starts level 1 through the request variable and
 // plays a few moves by the pad.

@@ -41,3 +41,9 @@ add_test(NAME rom.cdboot_tumble_disc
           -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${PROJECT_BINARY_DIR}/games/tumble/tumble.cue|--frames|120
           -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
 
+# `psxrl run --bios B` with no EXE and no disc starts the BIOS alone: the ROM finds the drive empty
+# and idles as a BIOS shell would, so the run ends at its frame limit with exit code 0.
+add_test(NAME rom.cdboot_bios_alone
+  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0 "-DEXPECT_OUTPUT=cdboot: no disc: shell idle"
+          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--frames|60
+          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)

@@ -152,6 +152,36 @@ TEST_F(DmaTest, ForceIrqRaisesOnRisingEdgeOnly) {
   EXPECT_EQ(r(kDicr), 0x0000003Fu);
 }
 
+TEST_F(DmaTest, DicrMasterFlagIgnoresChannelEnablesAndRisesOnEdges) {
+  // psx-spx DICR: bit 31 = bit 15 OR (bit 23 AND any flag 24-30); the enables 16-22 only decide
+  // whether a finishing channel sets its flag; I_STAT bit 3 fires on bit 31's 0-to-1 edge.
+  w(kDpcr, 0x00000800);  // DMA2 enable
+  w(kDicr, 0x00840000);  // master enable + DMA2 enable
+  w(reg(2, kMadr), 0x100);
+  w(reg(2, kBcr), 1);
+  w(reg(2, kChcr), 0x11000001);  // from RAM, burst, start+trigger
+  EXPECT_EQ(r(kDicr), 0x84840000u);
+  EXPECT_TRUE(dma_irq());
+  irq.write(0, 0);
+  w(kDicr, 0x00800000);  // DMA2 enable cleared: its pending flag still holds bit 31
+  EXPECT_EQ(r(kDicr), 0x84800000u);
+  EXPECT_FALSE(dma_irq());  // bit 31 stayed 1: no edge
+  w(kDicr, 0);
+  EXPECT_EQ(r(kDicr), 0x04000000u);
+  EXPECT_FALSE(dma_irq());
+  w(kDicr, 0x00800000);  // master enable again, every channel enable clear: a new edge
+  EXPECT_EQ(r(kDicr), 0x84800000u);
+  EXPECT_TRUE(dma_irq());
+  irq.write(0, 0);
+  w(kDicr, 0x04800000);  // writing 1 to the flag clears it, and bit 31 with it
+  EXPECT_EQ(r(kDicr), 0x00800000u);
+  EXPECT_FALSE(dma_irq());
+  // Force IRQ (bit 15) is stored, reads back and forces bit 31 even with bit 23 clear.
+  w(kDicr, 0x00008000);
+  EXPECT_EQ(r(kDicr), 0x80008000u);
+  EXPECT_TRUE(dma_irq());
+}
+
 TEST_F(DmaTest, BurstToDeviceKeepsRegistersAndChargesRate) {
   w(kDpcr, 0x00008000);  // DMA3 enable
   for (u32 i = 0; i < 8; ++i) set_ram32(0x400 + 4 * i, 0xA0 + i);

@@ -304,6 +304,24 @@ TEST_F(DmaTest, LinkedListSendsNodePayloads) {
   EXPECT_EQ(r(kDicr), 0x80840000u | (1u << 26));
 }
 
+TEST_F(DmaTest, LinkedListEndsAtAnyNextAddressWithBit23) {
+  // Any next-node address with bit 23 set ends the list, not only 0xFFFFFF. MADR keeps the end
+  // marker as written, BCR is untouched and CHCR's start/busy bit is clear.
+  w(kDpcr, 0x00000800);
+  for (u32 marker : {0x800000u, 0x800001u, 0xFFFFF0u, 0xFFFFFFu}) {
+    gpu.received.clear();
+    set_ram32(0x100, 0x01000000 | marker);  // one word, then the end
+    set_ram32(0x104, 0xC0DE0000 | (marker & 0xFF));
+    w(reg(2, kBcr), 0x00123456);
+    w(reg(2, kMadr), 0x100);
+    w(reg(2, kChcr), 0x01000401);  // linked list, from RAM, start
+    EXPECT_EQ(gpu.received, std::vector<u32>{0xC0DE0000 | (marker & 0xFF)}) << std::hex << marker;
+    EXPECT_EQ(r(reg(2, kMadr)), marker) << std::hex << marker;
+    EXPECT_EQ(r(reg(2, kBcr)), 0x00123456u) << std::hex << marker;
+    EXPECT_EQ(r(reg(2, kChcr)), 0x00000401u) << std::hex << marker;
+  }
+}
+
 TEST_F(DmaTest, EndlessLinkedListDoesNotHangHost) {
   w(kDpcr, 0x00000800);
   set_ram32(0x100, 0x01000100);  // a node that points at itself

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/console.h"
+#include "core/sha1.h"
 #include "lua/lua_host.h"
 
 #ifndef PSXRL_GAMES_DIR
@@ -112,6 +113,7 @@ void Env::boot() {
       throw psx::InputError("game '" + game_.name + "' needs your own disc image: pass --disc FILE.cue (see " +
                             game_.folder + "/README.md)");
     console_->insert_disc(disc);
+    if (game_.user_disc) check_disc_identity(disc);
     console_->boot_disc();
   }
   if (!game_.boot_ready.variable.empty()) {
@@ -123,6 +125,29 @@ void Env::boot() {
                                                        (console_->fatal_error().empty() ? "" : ": " + console_->fatal_error()));
   }
   boot_state_ = console_->save_state(false);
+}
+
+// A user's disc is the game the integration was written for when the SHA-1 of its first data
+// track (raw 2352-byte sectors from INDEX 01 to the track's end) is one the manifest lists.
+void Env::check_disc_identity(const std::string& path) {
+  if (game_.disc_sha1.empty()) return;
+  psx::disc::Disc& disc = *console_->cdrom().disc();
+  for (const auto& track : disc.tracks()) {
+    if (track.type == psx::disc::TrackType::Audio) continue;
+    psx::Sha1 sha;
+    psx::disc::RawSector sector;
+    for (psx::u32 s = track.index1; s < track.end; ++s) {
+      if (!disc.read_sector(s, sector)) throw psx::InputError::whole(path, "cannot read the data track: " + disc.last_error());
+      sha.update(sector.data(), sector.size());
+    }
+    std::string found = sha.hex();
+    if (contains_string(game_.disc_sha1, found)) return;
+    std::string known;
+    for (const auto& k : game_.disc_sha1) known += (known.empty() ? "" : ", ") + k;
+    throw psx::InputError::whole(path, "this is not a disc " + game_.manifest + " knows: its data track's SHA-1 is " +
+                                           found + ", expected one of " + known);
+  }
+  throw psx::InputError::whole(path, "the disc has no data track");
 }
 
 std::int64_t Env::raw(const Variable& v) const {

@@ -102,6 +102,7 @@ class Env {
 
  private:
   void boot();
+  void check_disc_identity(const std::string& path);
   std::uint64_t start_level(int level);  // returns the frames it ran
   void bind_script();
   const LevelMap& map() const;

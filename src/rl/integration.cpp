@@ -187,6 +187,9 @@ void read_boot(const Reader& root, Integration& g, const std::string& build_game
   if (bios != "none" && bios != "user") b.fail(b.get("bios"), "bios", "expected \"none\" or \"user\"");
   g.needs_bios = bios == "user";
   g.disc_sha1 = b.strings("disc_sha1");
+  for (const auto& h : g.disc_sha1)
+    if (h.size() != 40 || h.find_first_not_of("0123456789abcdef") != std::string::npos)
+      b.fail(b.get("disc_sha1"), "disc_sha1", "expected SHA-1s as 40 lower-case hex digits, found '" + h + "'");
   g.boot_ready = read_condition(b, "ready");
   g.boot_max_frames = static_cast<psx::u32>(b.integer("max_frames", 600, 1, 100000));
 }

@@ -35,6 +35,12 @@ struct Condition {
   std::vector<std::int64_t> values;
 };
 
+inline bool contains_string(const std::vector<std::string>& values, const std::string& x) {
+  for (const auto& v : values)
+    if (v == x) return true;
+  return false;
+}
+
 inline bool contains_value(const std::vector<std::int64_t>& values, std::int64_t x) {
   for (auto v : values)
     if (v == x) return true;

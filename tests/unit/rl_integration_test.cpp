@@ -125,7 +125,12 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenCase{18, "win = [20", "mini/game.toml:18:"},  // TOML syntax: an unclosed array
         BrokenCase{16, "[episodes]", "mini/game.toml:16: episodes: unknown field"},
         BrokenCase{12, "request_variable = 12", "mini/game.toml:12: [levels] request_variable: expected a string"},
-        BrokenCase{3, "script = \"../../etc/x.lua\"", "mini/game.toml:2: [boot] exe: expected exactly one of"}));
+        BrokenCase{3, "# nothing to boot", "mini/game.toml:2: [boot] exe: expected exactly one of"},
+        BrokenCase{3, "disc = \"user\"\ndisc_sha1 = [\"ABC\"]",
+                   "mini/game.toml:4: [boot] disc_sha1: expected SHA-1s as 40 lower-case hex digits, found 'ABC'"}),
+    [](const testing::TestParamInfo<BrokenCase>& info) {
+      return "Case" + std::to_string(info.index) + "Line" + std::to_string(info.param.line);
+    });
 
 TEST(Integration, MissingTableNamesTheFile) {
   std::string m = kManifest;

@@ -6,9 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "core/console.h"
 #include "core/input_error.h"
+#include "core/sha1.h"
 #include "rl/env.h"
 
 namespace fs = std::filesystem;
@@ -139,4 +141,47 @@ TEST(EnvKula, MissingUserFilesSayWhatToSupply) {
   EXPECT_NE(construct_error(cfg).find("/nonexistent-states/level01.state: cannot open file"), std::string::npos);
   cfg.files.states_dir = make_level_state();
   EXPECT_NE(construct_error(cfg).find("needs level maps for this observation: pass --maps DIR"), std::string::npos);
+}
+
+// An integration that pins its disc by the SHA-1 of the data track accepts that disc and refuses
+// another, naming both hashes. mkdisc writes the trace disc as one data track, so the track's
+// sectors are the whole .bin file.
+TEST(EnvKula, DiscIdentityBySha1OfTheDataTrack) {
+  auto bin = psx::read_file(kBuild + "/tests/roms/kula_trace.bin");
+  psx::Sha1 sha;
+  sha.update(bin.data(), bin.size());
+  std::string right = sha.hex();
+  auto manifest_bytes = psx::read_file(PSXRL_SOURCE_DIR "/games/kula/game.toml");
+  std::string manifest(manifest_bytes.begin(), manifest_bytes.end());
+  auto write = [&](const std::string& sha1) {
+    fs::path games = fs::temp_directory_path() / "psxrl_kula_sha1";
+    fs::create_directories(games / "kula");
+    std::string m = manifest;
+    m.replace(m.find("disc_sha1 = []"), 14, "disc_sha1 = [\"" + sha1 + "\"]");
+    std::ofstream(games / "kula" / "game.toml") << m;
+    fs::copy_file(PSXRL_SOURCE_DIR "/games/kula/game.lua", games / "kula" / "game.lua", fs::copy_options::overwrite_existing);
+    return games.string();
+  };
+  EnvConfig cfg = kula("episode");
+  cfg.games_dir = write(right);
+  Env ok(cfg);
+  EXPECT_EQ(ok.reset(1, 0, nullptr).size(), 1u);
+  cfg.games_dir = write(std::string(40, '0'));
+  std::string message = construct_error(cfg);
+  EXPECT_NE(message.find("its data track's SHA-1 is " + right + ", expected one of " + std::string(40, '0')),
+            std::string::npos)
+      << message;
+}
+
+// FIPS 180 example messages and their published digests.
+TEST(Sha1, KnownAnswers) {
+  auto hex = [](const std::string& s) {
+    psx::Sha1 h;
+    h.update(s.data(), s.size());
+    return h.hex();
+  };
+  EXPECT_EQ(hex(""), "da39a3ee5e6b4b0d3255bfef95601890afd80709");
+  EXPECT_EQ(hex("abc"), "a9993e364706816aba3e25717850c26c9cd0d89d");
+  EXPECT_EQ(hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"), "84983e441c3bd26ebaae4aa1f95129e5e54670f1");
+  EXPECT_EQ(hex(std::string(1000000, 'a')), "34aa973cd4c4daa4f61eeb2bdbad27316534016f");
 }

@@ -53,6 +53,7 @@ Env::Env(const EnvConfig& config) : config_(config) {
             config_.max_move_frames.value_or(game_.max_move_frames)};
   max_moves_ = config_.max_moves.value_or(game_.max_moves);
   sticky_ = config_.sticky.value_or(game_.sticky);
+  game_.watch_audio = config_.watch_audio.value_or(game_.watch_audio);
   maps_.resize(static_cast<size_t>(game_.level_count) + 1);
   lua_ = std::make_unique<lua::Host>(game_.folder);
   bind_script();

@@ -42,6 +42,7 @@ struct EnvConfig {
   // Overrides of the integration's settings; unset keeps the integration's value.
   std::optional<std::uint32_t> initial_delay, delay, max_move_frames, max_moves;
   std::optional<double> sticky;
+  std::optional<bool> watch_audio;  // whether sound keeps a move going
 };
 
 struct StepInfo {

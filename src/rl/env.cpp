@@ -185,7 +185,7 @@ void Env::set_delays(std::uint32_t initial_delay, std::uint32_t delay) {
 std::uint64_t Env::next_random() { return splitmix64(rng_); }
 
 const LevelMap& Env::map() const {
-  auto& slot = const_cast<std::optional<LevelMap>&>(maps_[static_cast<size_t>(level_)]);
+  auto& slot = maps_[static_cast<size_t>(level_)];
   if (!slot) {
     if (game_.map_pattern.find("{maps}") != std::string::npos && config_.files.maps_dir.empty())
       throw psx::InputError("game '" + game_.name + "' needs level maps for this observation: pass --maps DIR (see " +

@@ -107,7 +107,7 @@ class Env {
   std::uint64_t start_level(int level);  // returns the frames it ran
   void bind_script();
   const LevelMap& map() const;
-  bool position(int& x, int& y, int& facing) const;
+  void position(int& x, int& y, int& facing) const;
   std::string outcome() const;
   double move_reward(std::int64_t score_delta, const std::string& outcome) const;
   std::uint32_t run_move(const Action& a, bool& hit_bound);
@@ -123,7 +123,7 @@ class Env {
   RewardKind reward_kind_;
   std::unique_ptr<psx::Console> console_;
   std::unique_ptr<lua::Host> lua_;
-  std::vector<std::optional<LevelMap>> maps_;
+  mutable std::vector<std::optional<LevelMap>> maps_;  // read on first use
   std::vector<std::uint8_t> boot_state_;
   DelimiterSettings delim_;
   std::uint32_t max_moves_;

@@ -128,17 +128,16 @@ double Env::move_reward(std::int64_t delta, const std::string& out) const {
   return units * (1.0 - config_.gamma);
 }
 
-bool Env::position(int& x, int& y, int& facing) const {
+void Env::position(int& x, int& y, int& facing) const {
   if (!game_.position_x.empty()) {
     x = static_cast<int>(raw(game_.variable(game_.position_x)));
     y = static_cast<int>(raw(game_.variable(game_.position_y)));
     facing = static_cast<int>(raw(game_.variable(game_.position_facing)));
-    return true;
+    return;
   }
   auto p = lua_->call("position", {}, 3);
   if (!p[0] || !p[1] || !p[2]) throw psx::InputError(game_.script + ": position() must return x, y and facing");
   x = static_cast<int>(*p[0]), y = static_cast<int>(*p[1]), facing = static_cast<int>(*p[2]);
-  return true;
 }
 
 void Env::encode() {

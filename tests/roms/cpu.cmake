@@ -27,3 +27,4 @@ add_test(NAME rom.bios_putchar_with_rom
           -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CMAKE_CURRENT_BINARY_DIR}/bootrom.bin|--exe|${CMAKE_CURRENT_BINARY_DIR}/bios_putchar.exe|--frames|60|--expect-exit
           -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
 psx_add_rom_test(watch_writes SOURCES watch_writes.c)
+psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S)

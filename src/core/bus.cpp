@@ -16,6 +16,8 @@ constexpr u32 kExp2Base = 0x1F802000, kIoEnd = 0x1F803000;
 constexpr u32 kExp3Base = 0x1FA00000, kExp3End = 0x1FC00000;
 constexpr u32 kBiosBase = 0x1FC00000;
 constexpr u32 kCacheControl = 0xFFFE0130;
+// BIU/cache configuration (psx-spx "Memory Control", FFFE0130h): scratchpad RAM, data cache enable.
+constexpr u32 kBccRam = 1u << 3, kBccDs = 1u << 7;
 constexpr u32 kCdromBase = 0x1F801800, kCdromEnd = 0x1F801810;
 // The SPU timings apply to the SPU's 0x1F801C00 block and the unknown one after it (psx-spx).
 constexpr u32 kSpuBase = 0x1F801C00, kSpuEnd = 0x1F802000;
@@ -95,20 +97,25 @@ bool Bus::read(u32 vaddr, u32& v, u32 width) {
   if (p < 0x00800000) {
     v = load_width(&ram_[p & (kRamSize - 1)], width);
     sched_.advance(kRamRead);
+    if (dcache_mode_) dcache_fill(vaddr, load_le32(&ram_[p & (kRamSize - 4)]));
     return true;
   }
   if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
-    v = load_width(&scratch_[p - kScratchBase], width);
+    v = scratchpad_access(vaddr) ? load_width(&scratch_[p - kScratchBase], width) : 0;
     return true;
   }
   if (p >= kIoBase && p < kIoEnd) {
     sched_.advance(io_read_cycles(p, width));
     v = io_read(p, width);
+    // An I/O word load fills its slot too; what a narrower one leaves in the rest of the word is
+    // not documented, so only word loads are modelled.
+    if (dcache_mode_ && width == 4) dcache_fill(vaddr, v);
     return true;
   }
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
     v = load_width(&bios_[p - kBiosBase], width);
     sched_.advance(read_cycles(kBiosDelay, width));
+    if (dcache_mode_) dcache_fill(vaddr, load_le32(&bios_[(p - kBiosBase) & ~3u]));
     return true;
   }
   if ((p >= kExp1Base && p < kExp1End) || (p >= kExp3Base && p < kExp3End)) {
@@ -140,6 +147,7 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
     return true;
   }
   if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
+    if (!scratchpad_access(vaddr)) return true;
     if (watches_) watched_store(&scratch_[p - kScratchBase], p, v, width);
     else store_width(&scratch_[p - kScratchBase], v, width);
     return true;
@@ -152,10 +160,25 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
       (p >= kExp3Base && p < kExp3End))
     return true;  // ROM and empty expansion space ignore writes
   if (vaddr == kCacheControl) {
-    cache_control_ = v;
+    set_cache_control(v);
     return true;
   }
   report_unmapped(vaddr, "write");
+  return false;
+}
+
+void Bus::set_cache_control(u32 v) {
+  cache_control_ = v;
+  dcache_mode_ = (v & (kBccRam | kBccDs)) == kBccDs;
+}
+
+// In D-cache mode the scratchpad is unmapped and an access to its addresses deadlocks the bus
+// until a power cycle (psx-spx "Memory Control", "D-cache" mode): the console stops.
+bool Bus::scratchpad_access(u32 vaddr) {
+  if (!dcache_mode_) return true;
+  char msg[112];
+  std::snprintf(msg, sizeof msg, "scratchpad access at 0x%08X in data-cache mode hangs the bus (psx-spx Memory Control)", vaddr);
+  if (on_fatal) on_fatal(msg);
   return false;
 }
 
@@ -239,6 +262,7 @@ void Bus::do_state(StateIO& s) {
   s.pod(ram_size_);
   s.pod(cache_control_);
   update_read_cycles();  // derived from memctrl_
+  set_cache_control(cache_control_);
 }
 
 }  // namespace psx

@@ -76,6 +76,8 @@ class Bus {
   std::function<void(u32 code)> on_exit_request;
   // Where unmapped and not-yet-emulated accesses are reported (once per address).
   std::function<void(const std::string&)> on_log;
+  // An access that hangs the real bus (the console cannot go on).
+  std::function<void(const std::string&)> on_fatal;
 
   // Memory watches see every RAM/scratchpad write (CPU and DMA) while attached; `frame` is the
   // console's frame counter, stamped on each event. Detached (nullptr) the write path is unchanged.
@@ -112,6 +114,13 @@ class Bus {
   void expansion2_write(u32 p, u32 v, u32 width);
   void report_unmapped(u32 vaddr, const char* what);
   void watched_store(u8* mem, u32 phys, u32 v, u32 width);
+  void set_cache_control(u32 v);
+  bool scratchpad_access(u32 vaddr);
+  // D-cache mode (psx-spx "Memory Control", BCC RAM=0 DS=1): every load from a cached segment
+  // misses and copies the whole word holding the loaded byte into scratchpad slot (addr>>2)&FFh.
+  void dcache_fill(u32 vaddr, u32 word) {
+    if (vaddr < 0xA0000000) store_le32(&scratch_[vaddr & 0x3FC], word);
+  }
   // Device events fall due between instructions; an I/O access in the middle of an instruction
   // (after its wait states) first runs the ones already due, so the device answers as of "now".
   void catch_up() {
@@ -129,6 +138,7 @@ class Bus {
   std::array<u32, 9> memctrl_{};
   u32 ram_size_ = 0x00000B88;
   u32 cache_control_ = 0;
+  bool dcache_mode_ = false;  // derived from cache_control_
   // read_cycles() for each Delay/Size region and width 1, 2, 4 (index width >> 1), derived from
   // memctrl_ whenever it changes.
   std::array<std::array<Cycles, 3>, 6> read_cycles_{};

@@ -28,3 +28,4 @@ add_test(NAME rom.bios_putchar_with_rom
           -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
 psx_add_rom_test(watch_writes SOURCES watch_writes.c)
 psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S)
+psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S)

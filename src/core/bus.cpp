@@ -16,8 +16,6 @@ constexpr u32 kExp2Base = 0x1F802000, kIoEnd = 0x1F803000;
 constexpr u32 kExp3Base = 0x1FA00000, kExp3End = 0x1FC00000;
 constexpr u32 kBiosBase = 0x1FC00000;
 constexpr u32 kCacheControl = 0xFFFE0130;
-// BIU/cache configuration (psx-spx "Memory Control", FFFE0130h): scratchpad RAM, data cache enable.
-constexpr u32 kBccRam = 1u << 3, kBccDs = 1u << 7;
 constexpr u32 kCdromBase = 0x1F801800, kCdromEnd = 0x1F801810;
 // The SPU timings apply to the SPU's 0x1F801C00 block and the unknown one after it (psx-spx).
 constexpr u32 kSpuBase = 0x1F801C00, kSpuEnd = 0x1F802000;
@@ -46,6 +44,7 @@ Bus::Bus(Scheduler& sched, InterruptController& irq)
   memctrl_ = {0x1F000000, 0x1F802000, 0x0013243F, 0x00003022, 0x0013243F,
               0x200931E1, 0x00020843, 0x00070777, 0x00031125};
   update_read_cycles();
+  set_cache_control(cache_control_);
 }
 
 void Bus::update_read_cycles() {
@@ -80,11 +79,28 @@ void Bus::report_unmapped(u32 vaddr, const char* what) {
   on_log(msg);
 }
 
-bool Bus::fetch_slow(u32 vaddr, u32 p, u32& word) {
+// Extra cycles of an instruction fetch whose uncached word read takes `word_cycles`: KUSEG and
+// KSEG0 code runs through the i-cache when BCC.IS1 enables it (a hit is free, a miss reads the
+// words it fills), KSEG1 code is always read uncached (psx-spx "Memory Map", i-Cache).
+Cycles Bus::fetch_cycles(u32 vaddr, u32 p, Cycles word_cycles, bool ram) {
+  if (vaddr >= 0xA0000000 || !(cache_control_ & kBccIs1)) return word_cycles;
+  Cycles c = 0;
+  if (!icache_.hit(vaddr, p)) c = word_cycles * icache_.fill(vaddr, p, (cache_control_ & kBccIblksz) == 0);
+  hot_lines_[ICache::line(vaddr)] = ram && icache_.line_valid(vaddr) ? vaddr & ~15u : kNoLine;
+  return c;
+}
+
+bool Bus::fetch_slow(u32 vaddr, u32& word) {
+  const u32 p = physical(vaddr);
+  if (p < 0x00800000) {
+    word = load_le32(&ram_[p & (kRamSize - 1)]);
+    if (Cycles c = fetch_cycles(vaddr, p, kRamFetchUncached, true)) sched_.advance(c);
+    return true;
+  }
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
     word = load_le32(&bios_[p - kBiosBase]);
-    // An uncached fetch is a 32-bit read over the ROM's bus (cached: see fetch()).
-    if (vaddr >= 0xA0000000) sched_.advance(read_cycles(kBiosDelay, 4));
+    // Each word read is a 32-bit read over the ROM's bus.
+    if (Cycles c = fetch_cycles(vaddr, p, read_cycles(kBiosDelay, 4), false)) sched_.advance(c);
     return true;
   }
   // The scratchpad is data cache: it cannot be executed. Nor can I/O or expansion space.
@@ -169,6 +185,7 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
 
 void Bus::set_cache_control(u32 v) {
   cache_control_ = v;
+  hot_lines_.fill(kNoLine);
   dcache_mode_ = (v & (kBccRam | kBccDs)) == kBccDs;
 }
 
@@ -255,7 +272,7 @@ void Bus::dma_read_ram(u32 addr, u32* words, u32 count) const {
 }
 
 void Bus::do_state(StateIO& s) {
-  s.section("BUS ", 1);
+  s.section("BUS ", 2);
   s.bytes(ram_.data(), ram_.size());
   s.pod(scratch_);
   s.pod(memctrl_);
@@ -263,6 +280,7 @@ void Bus::do_state(StateIO& s) {
   s.pod(cache_control_);
   update_read_cycles();  // derived from memctrl_
   set_cache_control(cache_control_);
+  icache_.do_state(s);
 }
 
 }  // namespace psx

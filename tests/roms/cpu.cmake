@@ -29,3 +29,4 @@ add_test(NAME rom.bios_putchar_with_rom
 psx_add_rom_test(watch_writes SOURCES watch_writes.c)
 psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S)
 psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S)
+psx_add_rom_test(cpu_icache SOURCES cpu_icache.c cpu_icache.S)

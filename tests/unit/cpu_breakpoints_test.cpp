@@ -24,6 +24,7 @@ class FlatBus {
   bool write32(u32 a, u32 v) { return write(a, v, 4); }
   bool write16(u32 a, u32 v) { return write(a, v, 2); }
   bool write8(u32 a, u32 v) { return write(a, v, 1); }
+  void isolated_store(u32, u32) {}
 
  private:
   bool read(u32 a, u32& v, u32 n) {

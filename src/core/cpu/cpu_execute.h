@@ -76,8 +76,8 @@ void CpuT<BusT>::execute(u32 instr) {
       if (!check_address(addr, 3, Exception::AddressStore)) break;
       if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, 4, true)) break;
       wait_gte();
-      if (cop0_.sr & Cop0::kIsC) break;
-      if (!bus_.write32(addr, gte_.read_data(rt(instr)))) exception(Exception::BusData);
+      if (cop0_.sr & Cop0::kIsC) bus_.isolated_store(addr, gte_.read_data(rt(instr)));
+      else if (!bus_.write32(addr, gte_.read_data(rt(instr)))) exception(Exception::BusData);
       break;
     }
     case 0x30:

@@ -229,8 +229,11 @@ void CpuT<BusT>::store(u32 instr, u32 width) {
   u32 addr = regs_[rs(instr)] + simm(instr);
   if (!check_address(addr, width - 1, Exception::AddressStore)) return;
   if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, width, true)) return;
-  if (cop0_.sr & Cop0::kIsC) return;  // cache isolated: the store only touches the cache
   u32 v = regs_[rt(instr)];
+  if (cop0_.sr & Cop0::kIsC) {  // cache isolated: the store only touches the cache
+    bus_.isolated_store(addr, v);
+    return;
+  }
   bool ok = width == 4 ? bus_.write32(addr, v) : width == 2 ? bus_.write16(addr, v & 0xFFFF) : bus_.write8(addr, v & 0xFF);
   if (!ok) exception(Exception::BusData);
 }

@@ -134,8 +134,8 @@ void CpuT<BusT>::exception(Exception code, u32 coprocessor, u32 vector_offset) {
 
 // COP0 hardware breakpoints (psx-spx "COP0 - Debug Registers"): a break sets DCIC's status bits
 // and, with DCIC.TR, raises a Bp exception (ExcCode 09h, EPC/BD as for any exception) at the debug
-// vector 0x80000040 instead of executing the instruction or making the access, so the handler can
-// clear DCIC and return to EPC to run it.
+// vector 0x80000040 (0xBFC00140 with SR.BEV) instead of executing the instruction or making the
+// access, so the handler can clear DCIC and return to EPC to run it.
 template <class BusT>
 bool CpuT<BusT>::exec_break() {
   if (((pc_ ^ cop0_.bpc) & cop0_.bpcm) != 0 || !cop0_.break_armed(Cop0::kDcicPCE)) return false;

@@ -44,6 +44,7 @@ Bus::Bus(Scheduler& sched, InterruptController& irq)
   memctrl_ = {0x1F000000, 0x1F802000, 0x0013243F, 0x00003022, 0x0013243F,
               0x200931E1, 0x00020843, 0x00070777, 0x00031125};
   update_read_cycles();
+  set_cache_control(cache_control_);
 }
 
 void Bus::update_read_cycles() {
@@ -78,11 +79,28 @@ void Bus::report_unmapped(u32 vaddr, const char* what) {
   on_log(msg);
 }
 
-bool Bus::fetch_slow(u32 vaddr, u32 p, u32& word) {
+// Extra cycles of an instruction fetch whose uncached word read takes `word_cycles`: KUSEG and
+// KSEG0 code runs through the i-cache when BCC.IS1 enables it (a hit is free, a miss reads the
+// words it fills), KSEG1 code is always read uncached (psx-spx "Memory Map", i-Cache).
+Cycles Bus::fetch_cycles(u32 vaddr, u32 p, Cycles word_cycles, bool ram) {
+  if (vaddr >= 0xA0000000 || !(cache_control_ & kBccIs1)) return word_cycles;
+  Cycles c = 0;
+  if (!icache_.hit(vaddr, p)) c = word_cycles * icache_.fill(vaddr, p, (cache_control_ & kBccIblksz) == 0);
+  hot_lines_[ICache::line(vaddr)] = ram && icache_.line_valid(vaddr) ? vaddr & ~15u : kNoLine;
+  return c;
+}
+
+bool Bus::fetch_slow(u32 vaddr, u32& word) {
+  const u32 p = physical(vaddr);
+  if (p < 0x00800000) {
+    word = load_le32(&ram_[p & (kRamSize - 1)]);
+    if (Cycles c = fetch_cycles(vaddr, p, kRamFetchUncached, true)) sched_.advance(c);
+    return true;
+  }
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
     word = load_le32(&bios_[p - kBiosBase]);
-    // An uncached fetch is a 32-bit read over the ROM's bus (cached: see fetch()).
-    if (vaddr >= 0xA0000000) sched_.advance(read_cycles(kBiosDelay, 4));
+    // Each word read is a 32-bit read over the ROM's bus.
+    if (Cycles c = fetch_cycles(vaddr, p, read_cycles(kBiosDelay, 4), false)) sched_.advance(c);
     return true;
   }
   // The scratchpad is data cache: it cannot be executed. Nor can I/O or expansion space.
@@ -95,20 +113,25 @@ bool Bus::read(u32 vaddr, u32& v, u32 width) {
   if (p < 0x00800000) {
     v = load_width(&ram_[p & (kRamSize - 1)], width);
     sched_.advance(kRamRead);
+    if (dcache_mode_) dcache_fill(vaddr, load_le32(&ram_[p & (kRamSize - 4)]));
     return true;
   }
   if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
-    v = load_width(&scratch_[p - kScratchBase], width);
+    v = scratchpad_access(vaddr) ? load_width(&scratch_[p - kScratchBase], width) : 0;
     return true;
   }
   if (p >= kIoBase && p < kIoEnd) {
     sched_.advance(io_read_cycles(p, width));
     v = io_read(p, width);
+    // An I/O word load fills its slot too; what a narrower one leaves in the rest of the word is
+    // not documented, so only word loads are modelled.
+    if (dcache_mode_ && width == 4) dcache_fill(vaddr, v);
     return true;
   }
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
     v = load_width(&bios_[p - kBiosBase], width);
     sched_.advance(read_cycles(kBiosDelay, width));
+    if (dcache_mode_) dcache_fill(vaddr, load_le32(&bios_[(p - kBiosBase) & ~3u]));
     return true;
   }
   if ((p >= kExp1Base && p < kExp1End) || (p >= kExp3Base && p < kExp3End)) {
@@ -140,6 +163,7 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
     return true;
   }
   if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
+    if (!scratchpad_access(vaddr)) return true;
     if (watches_) watched_store(&scratch_[p - kScratchBase], p, v, width);
     else store_width(&scratch_[p - kScratchBase], v, width);
     return true;
@@ -152,10 +176,26 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
       (p >= kExp3Base && p < kExp3End))
     return true;  // ROM and empty expansion space ignore writes
   if (vaddr == kCacheControl) {
-    cache_control_ = v;
+    set_cache_control(v);
     return true;
   }
   report_unmapped(vaddr, "write");
+  return false;
+}
+
+void Bus::set_cache_control(u32 v) {
+  cache_control_ = v;
+  hot_lines_.fill(kNoLine);
+  dcache_mode_ = (v & (kBccRam | kBccDs)) == kBccDs;
+}
+
+// In D-cache mode the scratchpad is unmapped and an access to its addresses deadlocks the bus
+// until a power cycle (psx-spx "Memory Control", "D-cache" mode): the console stops.
+bool Bus::scratchpad_access(u32 vaddr) {
+  if (!dcache_mode_) return true;
+  char msg[112];
+  std::snprintf(msg, sizeof msg, "scratchpad access at 0x%08X in data-cache mode hangs the bus (psx-spx Memory Control)", vaddr);
+  if (on_fatal) on_fatal(msg);
   return false;
 }
 
@@ -232,13 +272,15 @@ void Bus::dma_read_ram(u32 addr, u32* words, u32 count) const {
 }
 
 void Bus::do_state(StateIO& s) {
-  s.section("BUS ", 1);
+  s.section("BUS ", 2);
   s.bytes(ram_.data(), ram_.size());
   s.pod(scratch_);
   s.pod(memctrl_);
   s.pod(ram_size_);
   s.pod(cache_control_);
   update_read_cycles();  // derived from memctrl_
+  set_cache_control(cache_control_);
+  icache_.do_state(s);
 }
 
 }  // namespace psx

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cpu/icache.h"
 #include "core/endian.h"
 #include "core/io_device.h"
 #include "core/memory_watch.h"
@@ -39,16 +40,22 @@ class Bus {
   // CPU accesses. They return false on a bus error (the CPU raises IBE/DBE) and charge the
   // region's access time to the scheduler.
   bool fetch(u32 vaddr, u32& word) {
-    u32 p = physical(vaddr);
-    if (p < 0x00800000) {
-      word = load_le32(&ram_[p & (kRamSize - 1)]);
-      // KSEG0/KUSEG code runs from the instruction cache (not modelled: a hit every time); KSEG1
-      // code is fetched uncached.
-      if (vaddr >= 0xA0000000) sched_.advance(kRamFetchUncached);
+    if (hot_lines_[ICache::line(vaddr)] == (vaddr & ~15u)) {  // a cache hit in RAM: free
+      word = load_le32(&ram_[vaddr & (kRamSize - 1)]);
       return true;
     }
-    return fetch_slow(vaddr, p, word);
+    return fetch_slow(vaddr, word);
   }
+  // A store while SR.IsC isolates the cache: with BCC.TAG and IS1 it writes an i-cache tag;
+  // otherwise it reaches neither memory nor anything modelled here (the cached code words are
+  // not kept, see ICache).
+  void isolated_store(u32 vaddr, u32 v) {
+    if ((cache_control_ & (kBccTag | kBccIs1)) == (kBccTag | kBccIs1)) {
+      icache_.write_tag(vaddr, physical(vaddr), v);
+      hot_lines_[ICache::line(vaddr)] = kNoLine;
+    }
+  }
+  const ICache& icache() const { return icache_; }
   bool read32(u32 vaddr, u32& v) { return read(vaddr, v, 4); }
   bool read16(u32 vaddr, u32& v) { return read(vaddr, v, 2); }
   bool read8(u32 vaddr, u32& v) { return read(vaddr, v, 1); }
@@ -76,6 +83,8 @@ class Bus {
   std::function<void(u32 code)> on_exit_request;
   // Where unmapped and not-yet-emulated accesses are reported (once per address).
   std::function<void(const std::string&)> on_log;
+  // An access that hangs the real bus (the console cannot go on).
+  std::function<void(const std::string&)> on_fatal;
 
   // Memory watches see every RAM/scratchpad write (CPU and DMA) while attached; `frame` is the
   // console's frame counter, stamped on each event. Detached (nullptr) the write path is unchanged.
@@ -92,7 +101,7 @@ class Bus {
   // The BIOS ROM, expansion regions, SPU and CD-ROM take the times their Memory Control
   // Delay/Size registers select (see read_cycles()). Stores go through the CPU's write queue and
   // take no extra time (psx-spx "CPU Load/Store Opcodes"; the queue filling up is not modelled).
-  static constexpr Cycles kRamFetchUncached = 4;
+  static constexpr Cycles kRamFetchUncached = 4;  // per word, also for each word of an i-cache fill
   static constexpr Cycles kRamRead = 4;
   static constexpr Cycles kIoRead = 2;
 
@@ -102,7 +111,8 @@ class Bus {
   Cycles read_cycles(DelayRegion r, u32 width) const { return read_cycles_[r - kExp1Delay][width >> 1]; }
 
  private:
-  bool fetch_slow(u32 vaddr, u32 p, u32& word);
+  bool fetch_slow(u32 vaddr, u32& word);
+  Cycles fetch_cycles(u32 vaddr, u32 p, Cycles word_cycles, bool ram);
   void update_read_cycles();
   Cycles io_read_cycles(u32 p, u32 width) const;
   bool read(u32 vaddr, u32& v, u32 width);
@@ -112,6 +122,13 @@ class Bus {
   void expansion2_write(u32 p, u32 v, u32 width);
   void report_unmapped(u32 vaddr, const char* what);
   void watched_store(u8* mem, u32 phys, u32 v, u32 width);
+  void set_cache_control(u32 v);
+  bool scratchpad_access(u32 vaddr);
+  // D-cache mode (psx-spx "Memory Control", BCC RAM=0 DS=1): every load from a cached segment
+  // misses and copies the whole word holding the loaded byte into scratchpad slot (addr>>2)&FFh.
+  void dcache_fill(u32 vaddr, u32 word) {
+    if (vaddr < 0xA0000000) store_le32(&scratch_[vaddr & 0x3FC], word);
+  }
   // Device events fall due between instructions; an I/O access in the middle of an instruction
   // (after its wait states) first runs the ones already due, so the device answers as of "now".
   void catch_up() {
@@ -128,7 +145,18 @@ class Bus {
   // Memory control 1 (0x1F801000-0x1F801023), RAM_SIZE (0x1F801060) and cache control.
   std::array<u32, 9> memctrl_{};
   u32 ram_size_ = 0x00000B88;
-  u32 cache_control_ = 0;
+  // BIU/cache configuration (psx-spx "Memory Control", FFFE0130h), reset to the value the BIOS
+  // sets (scratchpad, 4-word i-cache refill, i-cache on), as memctrl_ is.
+  static constexpr u32 kBccTag = 1u << 2, kBccRam = 1u << 3, kBccDs = 1u << 7;
+  static constexpr u32 kBccIblksz = 3u << 8, kBccIs1 = 1u << 11;
+  u32 cache_control_ = 0x0001E988;
+  bool dcache_mode_ = false;  // derived from cache_control_
+  ICache icache_;
+  // Per i-cache line, the KUSEG/KSEG0 address of the RAM line it holds whole, or kNoLine: fetches
+  // from it are hits without a tag check (an interpreter speed-up derived from the tags, reset
+  // whenever a tag or BCC changes).
+  static constexpr u32 kNoLine = 1;
+  std::array<u32, ICache::kLines> hot_lines_;
   // read_cycles() for each Delay/Size region and width 1, 2, 4 (index width >> 1), derived from
   // memctrl_ whenever it changes.
   std::array<std::array<Cycles, 3>, 6> read_cycles_{};

@@ -58,6 +58,10 @@ Console::Console()
     cpu_.stop();
   };
   bus_.on_log = [this](const std::string& m) { log(m); };
+  bus_.on_fatal = [this](const std::string& m) {
+    fatal_error_ = m;
+    cpu_.stop();
+  };
   cdrom_.on_log = bus_.on_log;
   hle_.on_tty = bus_.on_tty;
   hle_.on_log = bus_.on_log;

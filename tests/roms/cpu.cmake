@@ -27,3 +27,11 @@ add_test(NAME rom.bios_putchar_with_rom
           -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CMAKE_CURRENT_BINARY_DIR}/bootrom.bin|--exe|${CMAKE_CURRENT_BINARY_DIR}/bios_putchar.exe|--frames|60|--expect-exit
           -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
 psx_add_rom_test(watch_writes SOURCES watch_writes.c)
+psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S)
+psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S)
+psx_add_rom_test(cpu_icache SOURCES cpu_icache.c cpu_icache.S)
+psx_add_exe(cpu_dcache_hang SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/cpu_dcache_hang.c)
+add_test(NAME rom.cpu_dcache_hang
+  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=3 "-DEXPECT_OUTPUT=scratchpad access at 0x1F800000 in data-cache mode hangs the bus"
+          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--exe|${CMAKE_CURRENT_BINARY_DIR}/cpu_dcache_hang.exe|--frames|60|--expect-exit
+          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)

@@ -42,7 +42,7 @@ std::unique_ptr<disc::Disc> xa_disc(u32 count, u8 coding) {
 // disc carries far more audio per second than a real interleaved stream).
 std::vector<StereoSample> play(CdromHarness& h, u32 sectors, bool double_speed) {
   std::vector<StereoSample> out;
-  h.run_for(Cdrom::seek_time(150, 150) + 500);
+  h.run_for(Cdrom::seek_time(150, 150, true, double_speed) + 500);  // from Pause
   for (u32 i = 0; i < sectors; ++i) {
     h.run_for(Cdrom::sector_period(double_speed));
     while (h.fifo.size()) out.push_back(h.fifo.pop());
@@ -145,7 +145,7 @@ TEST(CdromAudio, CddaPlaybackAndMute) {
   h.cd.insert_disc(disc::Disc::open((dir / "a.cue").string()));
   h.send(0x03, {0x01});
   EXPECT_EQ(h.wait().irq, 3);
-  h.run_for(Cdrom::seek_time(150, 150) + 3 * Cdrom::sector_period(false));
+  h.run_for(Cdrom::seek_time(150, 150, true, false) + 3 * Cdrom::sector_period(false));  // from Pause
   ASSERT_EQ(h.fifo.size(), 3u * 588);  // 2352 bytes = 588 stereo 16-bit frames per sector
   StereoSample s = h.fifo.pop();
   EXPECT_EQ(s.left, 1000);

@@ -90,6 +90,21 @@ TEST(CdromRead, DoubleSpeedWholeSectorsAndDma) {
   EXPECT_EQ(words[3], 21u);                                      // first data word
 }
 
+// Seek times follow Mednafen's model (see Cdrom::seek_time); the expected cycles are its
+// arithmetic: distance * 33868800 / 324000 (at least 20000), plus 10160640 (300 ms) from 2250
+// sectors on, else 1237952 (double speed) or 2 * 1237952 (single speed) when leaving Pause.
+TEST(CdromRead, SeekTimeModel) {
+  EXPECT_EQ(Cdrom::seek_time(150, 160, true, false), 20000u + 2475904);   // 10 * 104.5 < 20000
+  EXPECT_EQ(Cdrom::seek_time(160, 150, true, true), 20000u + 1237952);
+  EXPECT_EQ(Cdrom::seek_time(150, 1150, false, false), 104533u);          // 1000 sectors, not paused
+  EXPECT_EQ(Cdrom::seek_time(0, 2249, true, true), 235095u + 1237952);    // the last short seek
+  EXPECT_EQ(Cdrom::seek_time(0, 2250, true, true), 235200u + 10160640);   // sled: no Pause wait
+  EXPECT_EQ(Cdrom::seek_time(150, 15000, false, false), 1552320u + 10160640);
+}
+
+// Through the controller: a fresh disc spins with the drive idle (paused), so Setloc + ReadN
+// pays the single-speed Pause wait on a short seek and the sled time on a long one; the first
+// sector then takes one sector period (451584 cycles at single speed).
 TEST(CdromRead, SeekTimeGrowsWithDistance) {
   auto first_sector_delay = [](u32 target) {
     CdromHarness h;
@@ -100,10 +115,8 @@ TEST(CdromRead, SeekTimeGrowsWithDistance) {
     Cycles acked = h.wait().at;
     return h.wait().at - acked;
   };
-  Cycles near = first_sector_delay(160), far = first_sector_delay(15000);
-  EXPECT_EQ(near, Cdrom::seek_time(150, 160) + Cdrom::sector_period(false));
-  EXPECT_GT(far, near);
-  EXPECT_EQ(far - near, (15000u - 160u) * Cdrom::kSeekPerSector);
+  EXPECT_EQ(first_sector_delay(160), 20000u + 2475904 + 451584);           // ~87 ms
+  EXPECT_EQ(first_sector_delay(15000), 1552320u + 10160640 + 451584);      // ~359 ms
 }
 
 TEST(CdromRead, GetlocLAndGetlocP) {

@@ -5,6 +5,7 @@
 // Register access lives in cdrom.cpp, command handling in cdrom_commands.cpp, the drive in
 // cdrom_drive.cpp.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <memory>
@@ -83,19 +84,34 @@ class Cdrom final : public IoDevice, public DmaPort {
   static constexpr Cycles kStopSingle = 0xD38ACA;
   static constexpr Cycles kStopDouble = 0x18A6076;
   static constexpr Cycles kStopWhenStopped = 0x1D7B;
-  // psx-spx: the seek, spin-up and ReadTOC second-response times are unknown ("probably quite
-  // complicated"). These are the project's deterministic estimates: a fixed settle time plus a
-  // per-sector track-crossing cost, a quarter-second spin-up, half a second to read the TOC, and
-  // the gap between a queued response's acknowledge and its delivery.
+  // psx-spx: the spin-up, SetSession and ReadTOC second-response times are unknown ("probably
+  // quite complicated"). These are the project's deterministic estimates: a quarter-second
+  // spin-up, half a second to read the TOC, and the gap between a queued response's acknowledge
+  // and its delivery.
   static constexpr Cycles kReadTocTime = kCpuClockHz / 2;
   static constexpr Cycles kMotorSpinUp = kCpuClockHz / 4;
-  static constexpr Cycles kSeekSettle = 24000;
-  static constexpr Cycles kSeekPerSector = 30;
+  static constexpr Cycles kSetSessionTime = 192000;
   static constexpr Cycles kAckToNextIrq = 1500;
   // INT1 rate: SystemClock * 930h / 4 / 44100 Hz = 451584 cycles per sector at single speed, half
   // at double speed (psx-spx "INT1 Rate"), i.e. 75 and 150 sectors per second.
   static Cycles sector_period(bool double_speed) { return kCpuClockHz / (double_speed ? 150 : 75); }
-  static Cycles seek_time(u32 from, u32 to) { return kSeekSettle + (from > to ? from - to : to - from) * kSeekPerSector; }
+  // Seek time, which psx-spx does not give: Mednafen's model (PS_CDC::CalcSeekTime), tuned
+  // against hardware tests. The head moves at one 72-minute disc (324000 sectors) per second,
+  // taking at least kSeekMin; a seek of kSledSeekSectors (30 seconds of disc) or more moves the
+  // sled and takes 300 ms more; a shorter one from Pause (motor on, drive idle) waits
+  // kResumeFromPause (about 37 ms) at double speed, twice that at single speed.
+  static constexpr Cycles kSeekMin = 20000;
+  static constexpr u32 kSectorsPerDisc = 72 * 60 * 75;
+  static constexpr u32 kSledSeekSectors = 30 * 75;
+  static constexpr Cycles kSledSeek = kCpuClockHz * 3 / 10;
+  static constexpr Cycles kResumeFromPause = 1237952;
+  static Cycles seek_time(u32 from, u32 to, bool paused, bool double_speed) {
+    const u32 distance = from > to ? from - to : to - from;
+    Cycles t = std::max<Cycles>(Cycles(distance) * kCpuClockHz / kSectorsPerDisc, kSeekMin);
+    if (distance >= kSledSeekSectors) t += kSledSeek;
+    else if (paused) t += kResumeFromPause * (double_speed ? 1 : 2);
+    return t;
+  }
 
  private:
   Cycles first_response_time(u8 command) const;

@@ -144,7 +144,7 @@ void Cdrom::execute(u8 cmd) {
         break;
       }
       deliver(make(3, {stat()}));
-      schedule_second(p0 == 1 ? Second::SetSession : Second::None, kSeekSettle * 8);
+      schedule_second(p0 == 1 ? Second::SetSession : Second::None, kSetSessionTime);
       break;
     case 0x13: {  // GetTN: first and last track numbers
       const auto& t = disc_->tracks();

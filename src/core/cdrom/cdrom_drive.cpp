@@ -28,7 +28,8 @@ void Cdrom::stop_drive() {
 
 void Cdrom::start_seek(u32 target, AfterSeek then) {
   sched_.cancel(ev_drive_);
-  Cycles t = seek_time(position_, target);
+  const bool paused = motor_on_ && drive_ == Drive::Idle;
+  Cycles t = seek_time(position_, target, paused, mode_ & kModeDoubleSpeed);
   if (!motor_on_) t += kMotorSpinUp;
   motor_on_ = true;
   drive_ = Drive::Seeking;

@@ -33,9 +33,32 @@ struct Cop0 {
   static constexpr u32 kIP2 = 1u << 10;  // hardware interrupt from I_STAT & I_MASK
   static constexpr u32 kCauseWritable = 0x300;  // only the software interrupt bits IP0/IP1
   static constexpr u32 kPRId = 0x00000002;      // CW33300 (LSI R3000A) revision
+  // DCIC (psx-spx "COP0 - Debug Registers"): status bits 0-5, which a break sets...
+  static constexpr u32 kDcicDB = 1u << 0;  // any break
+  static constexpr u32 kDcicPC = 1u << 1;  // BPC program counter break
+  static constexpr u32 kDcicDA = 1u << 2;  // BDA data address break
+  static constexpr u32 kDcicR = 1u << 3;   // ... on a read
+  static constexpr u32 kDcicW = 1u << 4;   // ... on a write
+  // ...and enables: DE gates bits 24-31; KD/UD arm breaks in kernel/user mode; TR jumps to the
+  // debug vector, without it a break only sets the status bits.
+  static constexpr u32 kDcicDE = 1u << 23;
+  static constexpr u32 kDcicPCE = 1u << 24;
+  static constexpr u32 kDcicDAE = 1u << 25;
+  static constexpr u32 kDcicDR = 1u << 26;
+  static constexpr u32 kDcicDW = 1u << 27;
+  static constexpr u32 kDcicKD = 1u << 29;
+  static constexpr u32 kDcicUD = 1u << 30;
+  static constexpr u32 kDcicTR = 1u << 31;
+  static constexpr u32 kDcicWritable = 0xFF80F03F;  // bits 6-11 and 16-22 always read zero
 
   u32 bpc = 0, bda = 0, jumpdest = 0, dcic = 0, badvaddr = 0, bdam = 0, bpcm = 0;
   u32 sr = 0, cause = 0, epc = 0;
+
+  // Whether every DCIC enable in `enables` is set, with DE, and breaks are armed in this mode.
+  bool break_armed(u32 enables) const {
+    u32 need = kDcicDE | enables | ((sr & kKUc) ? kDcicUD : kDcicKD);
+    return (dcic & need) == need;
+  }
 
   void do_state(StateIO& s) {
     s.section("COP0", 1);

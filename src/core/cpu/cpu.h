@@ -82,7 +82,12 @@ class CpuT {
   void execute_bcondz(u32 instr);
   void execute_cop0(u32 instr);
   void execute_cop2(u32 instr);
-  void exception(Exception code, u32 coprocessor = 0);
+  // Vectors at BEV ? 0xBFC00100 : 0x80000000 plus 0x80 (general) or 0x40 (debug break).
+  static constexpr u32 kGeneralVector = 0x80, kDebugVector = 0x40;
+  void exception(Exception code, u32 coprocessor = 0, u32 vector_offset = kGeneralVector);
+  bool exec_break();
+  bool data_break(u32 first, u32 count, bool write);
+  bool debug_break(u32 status);
   void take_interrupt();
   bool interrupt_pending() const;
 

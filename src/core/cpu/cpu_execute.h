@@ -58,6 +58,7 @@ void CpuT<BusT>::execute(u32 instr) {
       }
       u32 addr = s + simm(instr), v;
       if (!check_address(addr, 3, Exception::AddressLoad)) break;
+      if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, 4, false)) break;
       if (!bus_.read32(addr, v)) {
         exception(Exception::BusData);
         break;
@@ -73,9 +74,10 @@ void CpuT<BusT>::execute(u32 instr) {
       }
       u32 addr = s + simm(instr);
       if (!check_address(addr, 3, Exception::AddressStore)) break;
+      if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, 4, true)) break;
       wait_gte();
-      if (cop0_.sr & Cop0::kIsC) break;
-      if (!bus_.write32(addr, gte_.read_data(rt(instr)))) exception(Exception::BusData);
+      if (cop0_.sr & Cop0::kIsC) bus_.isolated_store(addr, gte_.read_data(rt(instr)));
+      else if (!bus_.write32(addr, gte_.read_data(rt(instr)))) exception(Exception::BusData);
       break;
     }
     case 0x30:
@@ -223,7 +225,7 @@ void CpuT<BusT>::execute_cop0(u32 instr) {
       switch (rd(instr)) {
         case 3: cop0_.bpc = v; break;
         case 5: cop0_.bda = v; break;
-        case 7: cop0_.dcic = v; break;
+        case 7: cop0_.dcic = v & Cop0::kDcicWritable; break;
         case 9: cop0_.bdam = v; break;
         case 11: cop0_.bpcm = v; break;
         case 12: cop0_.sr = v; break;

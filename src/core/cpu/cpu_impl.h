@@ -78,6 +78,8 @@ void CpuT<BusT>::step() {
   if (pc_ & 3) {
     cop0_.badvaddr = pc_;
     exception(Exception::AddressLoad);
+  } else if ((cop0_.dcic & Cop0::kDcicPCE) && exec_break()) {
+    // the debug exception was taken instead of the instruction
   } else if (!bus_.fetch(pc_, instr)) {
     exception(Exception::BusFetch);
   } else {
@@ -110,7 +112,7 @@ void CpuT<BusT>::take_interrupt() {
 }
 
 template <class BusT>
-void CpuT<BusT>::exception(Exception code, u32 coprocessor) {
+void CpuT<BusT>::exception(Exception code, u32 coprocessor, u32 vector_offset) {
   cop0_.cause = (cop0_.cause & ~(Cop0::kBD | 0x3000007Cu)) | (static_cast<u32>(code) << 2) | (coprocessor << 28);
   if (in_delay_slot_) {
     cop0_.cause |= Cop0::kBD;
@@ -121,13 +123,42 @@ void CpuT<BusT>::exception(Exception code, u32 coprocessor) {
   }
   // Push the KU/IE stack: current -> previous -> old, then kernel mode with interrupts off.
   cop0_.sr = (cop0_.sr & ~0x3Fu) | ((cop0_.sr << 2) & 0x3F);
-  u32 vector = (cop0_.sr & Cop0::kBEV) ? 0xBFC00180 : 0x80000080;
+  u32 vector = ((cop0_.sr & Cop0::kBEV) ? 0xBFC00100 : 0x80000000) + vector_offset;
   pc_ = vector;
   next_pc_ = vector + 4;
   next_in_delay_ = false;
   in_delay_slot_ = false;
   new_load_reg_ = 0;
   arm_hook(vector);
+}
+
+// COP0 hardware breakpoints (psx-spx "COP0 - Debug Registers"): a break sets DCIC's status bits
+// and, with DCIC.TR, raises a Bp exception (ExcCode 09h, EPC/BD as for any exception) at the debug
+// vector 0x80000040 (0xBFC00140 with SR.BEV) instead of executing the instruction or making the
+// access, so the handler can clear DCIC and return to EPC to run it.
+template <class BusT>
+bool CpuT<BusT>::exec_break() {
+  if (((pc_ ^ cop0_.bpc) & cop0_.bpcm) != 0 || !cop0_.break_armed(Cop0::kDcicPCE)) return false;
+  return debug_break(Cop0::kDcicPC);
+}
+
+// An access of `count` bytes from `first` breaks when any byte it touches meets psx-spx's
+// condition ((addr XOR BDA) AND BDAM) = 0, so a partial or unaligned access (SB into a watched
+// word, SWL/SWR covering the watched byte) is caught as well as an exact one.
+template <class BusT>
+bool CpuT<BusT>::data_break(u32 first, u32 count, bool write) {
+  if (!cop0_.break_armed(Cop0::kDcicDAE | (write ? Cop0::kDcicDW : Cop0::kDcicDR))) return false;
+  for (u32 a = first; a != first + count; ++a)
+    if (((a ^ cop0_.bda) & cop0_.bdam) == 0) return debug_break(Cop0::kDcicDA | (write ? Cop0::kDcicW : Cop0::kDcicR));
+  return false;
+}
+
+template <class BusT>
+bool CpuT<BusT>::debug_break(u32 status) {
+  cop0_.dcic |= Cop0::kDcicDB | status;
+  if (!(cop0_.dcic & Cop0::kDcicTR)) return false;
+  exception(Exception::Break, 0, kDebugVector);
+  return true;
 }
 
 template <class BusT>
@@ -156,6 +187,7 @@ void CpuT<BusT>::load(u32 instr, u32 width, bool sign) {
   using namespace cpu_detail;
   u32 addr = regs_[rs(instr)] + simm(instr);
   if (!check_address(addr, width - 1, Exception::AddressLoad)) return;
+  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, width, false)) return;
   u32 v;
   bool ok = width == 4 ? bus_.read32(addr, v) : width == 2 ? bus_.read16(addr, v) : bus_.read8(addr, v);
   if (!ok) {
@@ -175,6 +207,8 @@ void CpuT<BusT>::load_unaligned(u32 instr, bool left) {
     exception(Exception::AddressLoad);
     return;
   }
+  const u32 off = addr & 3;
+  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(left ? addr - off : addr, left ? off + 1 : 4 - off, false)) return;
   u32 word;
   if (!bus_.read32(addr & ~3u, word)) {
     exception(Exception::BusData);
@@ -183,7 +217,7 @@ void CpuT<BusT>::load_unaligned(u32 instr, bool left) {
   // LWL/LWR merge with the register's in-flight load value, not the stale register.
   u32 t = rt(instr);
   u32 cur = load_reg_ == t ? load_val_ : regs_[t];
-  u32 sh = (addr & 3) * 8;
+  u32 sh = off * 8;
   u32 v = left ? (cur & (0x00FFFFFFu >> sh)) | (word << (24 - sh))
                : (cur & ~(0xFFFFFFFFu >> sh)) | (word >> sh);
   delayed_load(t, v);
@@ -194,8 +228,12 @@ void CpuT<BusT>::store(u32 instr, u32 width) {
   using namespace cpu_detail;
   u32 addr = regs_[rs(instr)] + simm(instr);
   if (!check_address(addr, width - 1, Exception::AddressStore)) return;
-  if (cop0_.sr & Cop0::kIsC) return;  // cache isolated: the store only touches the cache
+  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, width, true)) return;
   u32 v = regs_[rt(instr)];
+  if (cop0_.sr & Cop0::kIsC) {  // cache isolated: the store only touches the cache
+    bus_.isolated_store(addr, v);
+    return;
+  }
   bool ok = width == 4 ? bus_.write32(addr, v) : width == 2 ? bus_.write16(addr, v & 0xFFFF) : bus_.write8(addr, v & 0xFF);
   if (!ok) exception(Exception::BusData);
 }
@@ -209,12 +247,13 @@ void CpuT<BusT>::store_unaligned(u32 instr, bool left) {
     exception(Exception::AddressStore);
     return;
   }
-  if (cop0_.sr & Cop0::kIsC) return;
   // SWL stores the register's top (offset+1) bytes into the word's bytes 0..offset; SWR stores
   // its low (4-offset) bytes into bytes offset..3. The bus sees a write of just those bytes.
   u32 v = regs_[rt(instr)];
   u32 off = addr & 3, base = addr & ~3u;
   u32 first = left ? 0 : off, last = left ? off : 3;
+  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(base + first, last - first + 1, true)) return;
+  if (cop0_.sr & Cop0::kIsC) return;
   u32 shift = left ? 24 - 8 * off : 8 * off;  // register bits that land in byte `first`
   u32 data = left ? v >> shift : v << shift;
   bool ok = true;

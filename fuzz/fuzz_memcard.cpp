@@ -3,7 +3,7 @@
 //   byte 0 flags: bit 0 = back the card with an image file, bit 1 = pad/cut that image to the
 //                 128 KiB a card holds (so the card loads it), bit 2 = load a card state
 //   [bit 0] u16 length + image bytes
-//   [bit 2] u16 length + bytes over the card state's fields after the 128 KiB of data
+//   [bit 2] u16 length + bytes over the first fields of the card state after its 128 KiB of data
 //   the rest: bytes sent to the card while selected, deselected after each command's last byte
 #include <memory>
 
@@ -37,9 +37,8 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, size_t size) {
     card->do_state(writer);
     std::vector<psx::u8> state = writer.buffer();
     const size_t fields = 8 + MemoryCard::kSize;
-    size_t n = in.u16();
-    state.resize(fields + std::min(n, in.left()));
-    for (size_t i = fields; i < state.size(); ++i) state[i] = in.byte();
+    const size_t end = fields + std::min<size_t>(in.u16(), state.size() - fields);
+    for (size_t i = fields; i < end; ++i) state[i] = in.byte();
     psx::StateIO reader(state.data(), state.size());
     try {
       card->do_state(reader);

@@ -9,6 +9,7 @@ APT_PACKAGES=(
   libgtest-dev libpng-dev libsdl2-dev libosmesa6-dev libeigen3-dev
   libtorch-dev pybind11-dev liblua5.4-dev lua5.4 zlib1g-dev libtomlplusplus-dev libcli11-dev
   gcc-mipsel-linux-gnu binutils-mipsel-linux-gnu
+  clang-16 libfuzzer-16-dev
   python3 python3-pip python3-venv
 )
 PIP_PACKAGES=(numpy gymnasium pytest)

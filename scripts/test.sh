@@ -11,3 +11,7 @@ ctest --test-dir build --output-on-failure -j2
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSXRL_SANITIZE=ON >/dev/null
 cmake --build build-sanitize
 ASAN_OPTIONS=detect_leaks=0 ctest --test-dir build-sanitize --output-on-failure -j2
+
+# Every parser of user files and the CPU/GPU guest side fuzzed briefly (fuzz/, scripts/fuzz.sh):
+# past crashes are replayed and a few seconds per target look for new ones.
+scripts/fuzz.sh 5

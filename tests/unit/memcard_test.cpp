@@ -304,5 +304,22 @@ TEST(MemcardState, RoundTripKeepsContentsFlagAndDirty) {
   EXPECT_EQ(test::clock_bytes(b, rest).replies, test::clock_bytes(a, rest).replies);
 }
 
+// A state is user input: one claiming a read in progress past the card's last sector (which the
+// protocol never reaches) must be refused, not read beyond the image (a fuzz_memcard crash).
+TEST(MemcardState, ReadInProgressBeyondTheCardIsRefused) {
+  MemoryCard a;
+  test::clock_bytes(a, {0x81, 0x52, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00});  // in the data
+  StateIO w;
+  a.do_state(w);
+  V blob = w.buffer();
+  const size_t sector_at = 8 + MemoryCard::kSize + 7;  // after tag+version, data, flag, dirty, step, mode
+  ASSERT_EQ(blob[sector_at], 0x00);
+  ASSERT_EQ(blob[sector_at + 1], 0x02);
+  blob[sector_at] = 0x00, blob[sector_at + 1] = 0x04;  // sector 0400h, one past the last
+  MemoryCard b;
+  StateIO r(blob.data(), blob.size());
+  EXPECT_THROW(b.do_state(r), StateError);
+}
+
 }  // namespace
 }  // namespace psx

@@ -251,6 +251,12 @@ void MemoryCard::do_state(StateIO& s) {
   s.pod(end_status_);
   s.boolean(late_ack_);
   s.pod(sector_buf_);
+  // A read goes past step 9 only for a sector on the card (read_step stops it there otherwise),
+  // so a state claiming a later step of a read beyond the card is corrupt: reading on would index
+  // past the image (found by fuzz/fuzz_memcard.cpp).
+  if (s.loading() && mode_ == kCmdRead && step_ >= 10 && sector_ >= kSectors)
+    s.fail("memory card: a read of sector " + std::to_string(sector_) + " is in progress, beyond the card's " +
+           std::to_string(kSectors) + " sectors");
 }
 
 }  // namespace psx

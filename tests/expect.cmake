@@ -3,11 +3,21 @@
 # test program reported running exactly that many checks ("<name>: N checks, M failures", the
 # last such line, from psx/test.h's test_done). Used by CTest for CLI behaviour and test programs.
 string(REPLACE "|" ";" cmd "${COMMAND}")
+# In a sanitizer build a finding must never pass as an expected exit code (ASan and UBSan exit
+# with 1 by default, the CLI's usage-error code): unless the caller chose one, they exit with 99,
+# which psxrl never uses.
+foreach(var ASAN_OPTIONS UBSAN_OPTIONS)
+  if(NOT "$ENV{${var}}" MATCHES "exitcode=")
+    set(ENV{${var}} "$ENV{${var}}:exitcode=99")
+  endif()
+endforeach()
 execute_process(COMMAND ${cmd} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
 message("${all}")
 set(problems "")
-if(NOT code STREQUAL EXPECT_CODE)
+if(code STREQUAL "99")
+  string(APPEND problems "exit code 99: a sanitizer (ASan, LSan or UBSan) reported an error\n")
+elseif(NOT code STREQUAL EXPECT_CODE)
   string(APPEND problems "exit code ${code}, expected ${EXPECT_CODE}\n")
 endif()
 if(DEFINED EXPECT_OUTPUT)

@@ -30,13 +30,17 @@ function(psx_add_exe target)
     list(APPEND defs -D${def})
   endforeach()
   set(objs)
+  # Each object's header dependencies come from the compiler's -MMD depfile, so editing a header
+  # (e.g. Tumble's contract.h) rebuilds every object that includes it; IMPLICIT_DEPENDS would
+  # only work with Makefile generators, and the build uses Ninja.
   foreach(src ${srcs})
     get_filename_component(name ${src} NAME)
     set(obj ${CMAKE_CURRENT_BINARY_DIR}/${target}.dir/${name}.o)
     add_custom_command(OUTPUT ${obj}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/${target}.dir
-      COMMAND ${PSX_CC} ${PSX_CFLAGS} ${incs} ${defs} -c ${src} -o ${obj}
-      DEPENDS ${src} ${ARG_DEPENDS} IMPLICIT_DEPENDS C ${src}
+      COMMAND ${PSX_CC} ${PSX_CFLAGS} ${incs} ${defs} -MMD -MF ${obj}.d -c ${src} -o ${obj}
+      DEPENDS ${src} ${ARG_DEPENDS}
+      DEPFILE ${obj}.d
       COMMENT "PSX cc ${name}" VERBATIM)
     list(APPEND objs ${obj})
   endforeach()

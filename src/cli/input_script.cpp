@@ -5,25 +5,11 @@
 #include <utility>
 
 #include "core/console.h"
+#include "core/sio/pad_names.h"
 
 namespace psxrl::cli {
 
 namespace {
-
-// Names as printed on the pad; the bits are psx-spx's switch order (core/sio/pad.h).
-constexpr std::pair<const char*, psx::u16> kButtonNames[] = {
-    {"up", psx::pad_button::kUp},         {"down", psx::pad_button::kDown},
-    {"left", psx::pad_button::kLeft},     {"right", psx::pad_button::kRight},
-    {"cross", psx::pad_button::kCross},   {"circle", psx::pad_button::kCircle},
-    {"square", psx::pad_button::kSquare}, {"triangle", psx::pad_button::kTriangle},
-    {"l1", psx::pad_button::kL1},         {"l2", psx::pad_button::kL2},
-    {"r1", psx::pad_button::kR1},         {"r2", psx::pad_button::kR2},
-    {"start", psx::pad_button::kStart},   {"select", psx::pad_button::kSelect},
-    {"l3", psx::pad_button::kL3},         {"r3", psx::pad_button::kR3},
-};
-
-constexpr const char* kNameList =
-    "up, down, left, right, cross, circle, square, triangle, l1, l2, r1, r2, start, select, l3, r3";
 
 bool parse_number(const std::string& s, psx::u64 limit, psx::u64& out) {
   if (s.empty() || s.size() > 19 || s.find_first_not_of("0123456789") != std::string::npos) return false;
@@ -37,13 +23,11 @@ psx::u16 parse_buttons(const std::string& field, const std::string& name, size_t
   for (;;) {
     size_t plus = field.find('+', start);
     std::string one = field.substr(start, plus == std::string::npos ? std::string::npos : plus - start);
-    psx::u16 bit = 0;
-    for (const auto& [button, value] : kButtonNames)
-      if (one == button) bit = value;
+    std::optional<psx::u16> bit = psx::pad_button_from_name(one);
     if (!bit)
-      throw psx::InputError::at_line(name, line, "expected a button name (" + std::string(kNameList) +
+      throw psx::InputError::at_line(name, line, "expected a button name (" + std::string(psx::kPadButtonNameList) +
                                                      ") in '" + field + "', found '" + one + "'");
-    bits |= bit;
+    bits |= *bit;
     if (plus == std::string::npos) return bits;
     start = plus + 1;
   }

@@ -1,5 +1,6 @@
-// `psxrl run`: boots a PS-X EXE (with a BIOS or the HLE kernel) headless, prints the program's TTY
-// output, and exits with the program's exit code or when the frame/cycle limit is reached.
+// `psxrl run`: boots a PS-X EXE (with a BIOS or the HLE kernel), a disc, or a BIOS alone headless,
+// prints the program's TTY output, and exits with the program's exit code or when the frame/cycle
+// limit is reached.
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -21,6 +22,7 @@ const char* kRunHelp =
     "                 [--pad1 TYPE] [--pad2 TYPE] [--memcard1 FILE] [--memcard2 FILE]\n"
     "                 [--screenshot FILE] [--vram FILE] [--wav FILE]\n"
     "                 [--input FILE] [--screenshot-at FRAME FILE]... [--realtime]\n"
+    "       psxrl run --bios FILE [the same options]   (the BIOS alone: no EXE, no disc)\n"
     "\n"
     "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
     "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
@@ -28,7 +30,9 @@ const char* kRunHelp =
     "options:\n"
     "  --exe FILE       PS-X EXE to run\n"
     "  --disc FILE      disc image (.cue, .iso or a raw .bin) to insert; without --exe it is booted\n"
-    "  --bios FILE      BIOS image (exactly 512 KiB); without it the HLE kernel is used\n"
+    "                   (with --bios by the BIOS itself from reset, as on the console)\n"
+    "  --bios FILE      BIOS image (exactly 512 KiB); without it the HLE kernel is used; alone,\n"
+    "                   the BIOS starts from reset with no disc (its shell)\n"
     "  --frames N       stop after N frames (default 3600)\n"
     "  --cycles N       stop after N CPU cycles (instead of --frames)\n"
     "  --expect-exit    reaching the limit is a failure (exit 3): the program must exit itself\n"
@@ -158,7 +162,8 @@ int run_command(const std::vector<std::string>& args) {
       return usage("unknown option '" + a + "'");
     }
   }
-  if (exe.empty() && disc.empty()) return usage("--exe is required (or --disc to boot a disc)");
+  if (exe.empty() && disc.empty() && bios.empty())
+    return usage("--exe is required (or --disc to boot a disc, or --bios to start the BIOS alone)");
   const bool scripted = !input_path.empty() || !shots.empty() || realtime;
   if (scripted && cycles) return usage("--input, --screenshot-at and --realtime count frames: use --frames, not --cycles");
   for (const ScreenshotAt& shot : shots)
@@ -176,8 +181,11 @@ int run_command(const std::vector<std::string>& args) {
     if (!input_path.empty()) presses = read_input_script(input_path);
     if (!bios.empty()) console.load_bios(bios);
     if (!disc.empty()) console.insert_disc(disc);
+    // With a BIOS and no EXE, boot_disc() and boot_bios() both start the BIOS from reset and
+    // nothing is side-loaded: the BIOS reads the disc itself, or shows its shell.
     if (!exe.empty()) console.boot_exe(exe);
-    else console.boot_disc();
+    else if (!disc.empty()) console.boot_disc();
+    else console.boot_bios();
     for (int port = 1; port <= 2; ++port) {
       console.plug_pad(port, pads[port - 1]);
       if (!memcards[port - 1].empty()) console.insert_memory_card(port, memcards[port - 1]);

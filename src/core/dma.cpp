@@ -94,16 +94,20 @@ void Dma::write_channel(u32 ch, u32 reg, u32 value) {
   service();
 }
 
+// DICR (psx-spx "DMA Interrupt Register"): bits 0-5 read/write, 6-14 always zero, 15 force IRQ,
+// 16-22 per-channel enables, 23 master enable; writing 1 to a flag (24-30) clears it.
 void Dma::write_dicr(u32 value) {
   u32 ack = value & 0x7F000000;
   dicr_ = (dicr_ & 0xFF000000 & ~ack) | (value & 0x00FF803F);
   update_master_flag();
 }
 
+// Bit 31 = bit 15 OR (bit 23 AND any flag in 24-30). The per-channel enables only gate whether a
+// finishing channel sets its flag (finish()), so re-enabling bit 23 while a flag is still pending
+// raises bit 31 again even with every channel enable clear. I_STAT bit 3 fires on its 0-to-1 edge.
 void Dma::update_master_flag() {
   bool before = dicr_ >> 31;
-  u32 enabled_flags = (dicr_ >> 16) & (dicr_ >> 24) & 0x7F;
-  bool after = (dicr_ & (1u << 15)) || ((dicr_ & (1u << 23)) && enabled_flags);
+  bool after = (dicr_ & (1u << 15)) || ((dicr_ & (1u << 23)) && (dicr_ & 0x7F000000));
   dicr_ = (dicr_ & 0x7FFFFFFF) | (after ? 0x80000000u : 0);
   if (after && !before) irq_.raise(Irq::Dma);
 }

@@ -35,7 +35,10 @@ u32 Gpu::gpustat() const {
   const bool interlaced = display_mode_ & 0x20;
   u32 s = draw_mode_ & 0x7FF;                        // 0-10 from E1
   s |= (mask_bits_ & 3) << 11;                       // 11-12 from E6
-  s |= (interlaced ? timing_.odd_field() : true) << 13;  // interlace field, 1 when not interlaced
+  // 13: the interlace field being drawn, which is the one not displayed, so the complement of the
+  // field GPUSTAT.31 shows (a BIOS shell waits for 31=1 with 13=0, then the reverse); always 1
+  // without interlace (psx-spx "GPU Status Register", ODE2).
+  s |= u32{interlaced ? !timing_.odd_field() : true} << 13;
   s |= ((display_mode_ >> 7) & 1) << 14;             // "reverse flag"
   s |= ((draw_mode_ >> 11) & 1) << 15;               // texture disable
   s |= ((display_mode_ >> 6) & 1) << 16;             // horizontal resolution 2 (368)
@@ -56,10 +59,11 @@ u32 Gpu::gpustat() const {
   return s;
 }
 
-// GPUSTAT.31: the line being displayed is odd (the field in interlaced modes); 0 in VBlank.
+// GPUSTAT.31 (ODE): the displayed line is odd. psx-spx "GPU Status Register": it changes per
+// frame (the field) in 480-line interlace, per scanline in 240-line modes, and is 0 in VBlank.
 bool Gpu::field_line_odd() const {
   if (timing_.in_vblank()) return false;
-  if (display_mode_ & 0x20) return timing_.odd_field();
+  if ((display_mode_ & 0x24) == 0x24) return timing_.odd_field();
   return timing_.line() & 1;
 }
 

@@ -1,8 +1,9 @@
 // Software rasterizer: lines (GP0(40)-(5F)) and rectangles (GP0(60)-(7F)).
-// Lines include both end points and step one pixel along the major axis per step, the minor
-// axis and the colours advancing by a fixed-point fraction (32 and 12 fraction bits) with a
-// half-pixel bias. Rectangles are never dithered; textured ones step the texture coordinate by
-// one texel per pixel, backwards when GP0(E1) bits 12/13 flip them.
+// Lines include both end points and step one pixel along the major axis per step; the minor axis
+// takes the pixel nearest the exact line, the one farther from the start where the line passes
+// midway between two, and the colours advance by a 12-bit fixed-point fraction with a half-unit
+// bias. Rectangles are never dithered; textured ones step the texture coordinate by one texel per
+// pixel, backwards when GP0(E1) bits 12/13 flip them.
 #include <algorithm>
 #include <cstdlib>
 
@@ -10,6 +11,23 @@
 #include "gpu/software_renderer_pixel.h"
 
 namespace psx::gpu {
+
+namespace {
+// One coordinate of a line's pixels: start + |delta| * i / steps rounded to the nearest integer,
+// exact halves away from the start (hardware draws (0,0)->(10,3) through (5,2), and (0,3)->(10,0)
+// through (5,1)). An error term, 2|delta|i + steps - 2 steps * offset, kept in [0, 2 steps),
+// makes that exact for any length, where a fixed-point step would drift off the halves.
+struct LineAxis {
+  s32 pos, dir, error, add, wrap;
+  LineAxis(s32 start, s32 delta, s32 steps)
+      : pos(start), dir(delta < 0 ? -1 : 1), error(steps), add(2 * std::abs(delta)), wrap(2 * steps) {}
+  // |delta| <= steps, so one step moves the coordinate by at most one pixel.
+  void step() {
+    error += add;
+    if (error >= wrap) error -= wrap, pos += dir;
+  }
+};
+}  // namespace
 
 template <int kTex, bool kRaw, bool kSemi>
 void SoftwareRenderer::rasterize_rectangle(const Rectangle& r, const DrawState& ds) {
@@ -55,10 +73,7 @@ void SoftwareRenderer::rasterize_line(const Line& l, const DrawState& ds) {
   s32 steps = std::max(std::abs(dx), std::abs(dy));
   PixelContext ctx(vram_.data(), ds, 0, 0, kShaded);
 
-  // Positions in 32.32 fixed point, biased by half a pixel so that rounding is symmetric.
-  const s64 half = s64{1} << 31;
-  s64 x = (s64{p0.x} << 32) + half - (dx < 0 ? 1 : 0), y = (s64{p0.y} << 32) + half - (dy < 0 ? 1 : 0);
-  s64 step_x = steps ? (s64{dx} << 32) / steps : 0, step_y = steps ? (s64{dy} << 32) / steps : 0;
+  LineAxis x(p0.x, dx, steps), y(p0.y, dy, steps);
   // Colours in 12-bit fixed point with a half-unit bias.
   s32 r = (p0.r << 12) + 2048, g = (p0.g << 12) + 2048, b = (p0.b << 12) + 2048;
   s32 step_r = 0, step_g = 0, step_b = 0;
@@ -67,12 +82,12 @@ void SoftwareRenderer::rasterize_line(const Line& l, const DrawState& ds) {
     step_b = ((p1.b - p0.b) << 12) / steps;
   }
   for (s32 i = 0; i <= steps; ++i) {
-    s32 px = static_cast<s32>(x >> 32), py = static_cast<s32>(y >> 32);
+    const s32 px = x.pos, py = y.pos;
     if (px >= ds.area_left && px <= ds.area_right && py >= ds.area_top && py <= ds.area_bottom &&
         (py & 1) != ds.skip_row_parity)
       draw_pixel<kUntextured, false, kSemi>(ctx, px, py, static_cast<u32>(r >> 12), static_cast<u32>(g >> 12),
                                             static_cast<u32>(b >> 12), 0, 0, ctx.dither_row(py)[px & 3]);
-    x += step_x, y += step_y;
+    x.step(), y.step();
     r += step_r, g += step_g, b += step_b;
   }
 }

@@ -1,5 +1,6 @@
 # The cdboot boot ROM (tests/roms/cdboot/): boots discs made by mkdisc by reading them through the
-# CD-ROM controller itself, as a BIOS does. Needs cdrom.cmake's DATA.BIN (CDROM_DATA) and discs.
+# CD-ROM controller itself, as a BIOS does, after following the GPU's interlace fields through
+# GPUSTAT bits 31/13 as a BIOS shell does. Needs cdrom.cmake's DATA.BIN (CDROM_DATA) and discs.
 set(CDBOOT_DIR ${CMAKE_CURRENT_SOURCE_DIR}/cdboot)
 psx_add_rom_image(cdboot_rom
   SOURCES ${CDBOOT_DIR}/rom_start.S ${CDBOOT_DIR}/rom_main.c ${CDBOOT_DIR}/cd.c ${PSX_GUEST_DIR}/runtime.c
@@ -17,7 +18,7 @@ add_custom_command(OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue ${CMAKE_CU
 add_custom_target(cdboot_test_disc ALL DEPENDS ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue)
 add_test(NAME rom.cdboot_disc_check
   COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0
-          "-DEXPECT_OUTPUT=cdboot: psxrl disc boot ROM\ncdboot: SYSTEM.CNF BOOT=\\BOOT.EXE"
+          "-DEXPECT_OUTPUT=cdboot: psxrl disc boot ROM\ncdboot: GPU in 480-line interlace, fields followed\ncdboot: SYSTEM.CNF BOOT=\\BOOT.EXE"
           -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue|--frames|600|--expect-exit
           -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
 
@@ -31,4 +32,18 @@ add_test(NAME rom.cdboot_hle_disc
 add_test(NAME rom.cdboot_no_exe
   COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=3 "-DEXPECT_OUTPUT=cdboot: PSX.EXE"
           -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue|--frames|600|--expect-exit
+          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+
+# Tumble's disc through the ROM from the command line: a pure low-level boot (the ROM reads the
+# disc; no HLE, nothing side-loaded). tests/unit/cdboot_bios_boot_test.cpp checks it reaches its title.
+add_test(NAME rom.cdboot_tumble_disc
+  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0 "-DEXPECT_OUTPUT=cdboot: loading \\TUMBLE.EXE"
+          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${PROJECT_BINARY_DIR}/games/tumble/tumble.cue|--frames|120
+          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+
+# `psxrl run --bios B` with no EXE and no disc starts the BIOS alone: the ROM finds the drive empty
+# and idles as a BIOS shell would, so the run ends at its frame limit with exit code 0.
+add_test(NAME rom.cdboot_bios_alone
+  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0 "-DEXPECT_OUTPUT=cdboot: no disc: shell idle"
+          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--frames|60
           -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)

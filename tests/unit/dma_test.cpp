@@ -152,6 +152,36 @@ TEST_F(DmaTest, ForceIrqRaisesOnRisingEdgeOnly) {
   EXPECT_EQ(r(kDicr), 0x0000003Fu);
 }
 
+TEST_F(DmaTest, DicrMasterFlagIgnoresChannelEnablesAndRisesOnEdges) {
+  // psx-spx DICR: bit 31 = bit 15 OR (bit 23 AND any flag 24-30); the enables 16-22 only decide
+  // whether a finishing channel sets its flag; I_STAT bit 3 fires on bit 31's 0-to-1 edge.
+  w(kDpcr, 0x00000800);  // DMA2 enable
+  w(kDicr, 0x00840000);  // master enable + DMA2 enable
+  w(reg(2, kMadr), 0x100);
+  w(reg(2, kBcr), 1);
+  w(reg(2, kChcr), 0x11000001);  // from RAM, burst, start+trigger
+  EXPECT_EQ(r(kDicr), 0x84840000u);
+  EXPECT_TRUE(dma_irq());
+  irq.write(0, 0);
+  w(kDicr, 0x00800000);  // DMA2 enable cleared: its pending flag still holds bit 31
+  EXPECT_EQ(r(kDicr), 0x84800000u);
+  EXPECT_FALSE(dma_irq());  // bit 31 stayed 1: no edge
+  w(kDicr, 0);
+  EXPECT_EQ(r(kDicr), 0x04000000u);
+  EXPECT_FALSE(dma_irq());
+  w(kDicr, 0x00800000);  // master enable again, every channel enable clear: a new edge
+  EXPECT_EQ(r(kDicr), 0x84800000u);
+  EXPECT_TRUE(dma_irq());
+  irq.write(0, 0);
+  w(kDicr, 0x04800000);  // writing 1 to the flag clears it, and bit 31 with it
+  EXPECT_EQ(r(kDicr), 0x00800000u);
+  EXPECT_FALSE(dma_irq());
+  // Force IRQ (bit 15) is stored, reads back and forces bit 31 even with bit 23 clear.
+  w(kDicr, 0x00008000);
+  EXPECT_EQ(r(kDicr), 0x80008000u);
+  EXPECT_TRUE(dma_irq());
+}
+
 TEST_F(DmaTest, BurstToDeviceKeepsRegistersAndChargesRate) {
   w(kDpcr, 0x00008000);  // DMA3 enable
   for (u32 i = 0; i < 8; ++i) set_ram32(0x400 + 4 * i, 0xA0 + i);
@@ -272,6 +302,24 @@ TEST_F(DmaTest, LinkedListSendsNodePayloads) {
   EXPECT_EQ(gpu.received, expect);
   EXPECT_EQ(r(reg(2, kMadr)), 0x00FFFFFFu);
   EXPECT_EQ(r(kDicr), 0x80840000u | (1u << 26));
+}
+
+TEST_F(DmaTest, LinkedListEndsAtAnyNextAddressWithBit23) {
+  // Any next-node address with bit 23 set ends the list, not only 0xFFFFFF. MADR keeps the end
+  // marker as written, BCR is untouched and CHCR's start/busy bit is clear.
+  w(kDpcr, 0x00000800);
+  for (u32 marker : {0x800000u, 0x800001u, 0xFFFFF0u, 0xFFFFFFu}) {
+    gpu.received.clear();
+    set_ram32(0x100, 0x01000000 | marker);  // one word, then the end
+    set_ram32(0x104, 0xC0DE0000 | (marker & 0xFF));
+    w(reg(2, kBcr), 0x00123456);
+    w(reg(2, kMadr), 0x100);
+    w(reg(2, kChcr), 0x01000401);  // linked list, from RAM, start
+    EXPECT_EQ(gpu.received, std::vector<u32>{0xC0DE0000 | (marker & 0xFF)}) << std::hex << marker;
+    EXPECT_EQ(r(reg(2, kMadr)), marker) << std::hex << marker;
+    EXPECT_EQ(r(reg(2, kBcr)), 0x00123456u) << std::hex << marker;
+    EXPECT_EQ(r(reg(2, kChcr)), 0x00000401u) << std::hex << marker;
+  }
 }
 
 TEST_F(DmaTest, EndlessLinkedListDoesNotHangHost) {

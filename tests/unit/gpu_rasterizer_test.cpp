@@ -128,6 +128,27 @@ TEST_F(GpuTest, LineSlopeSteps) {
   for (u32 x = 0; x < 5; ++x) EXPECT_EQ(px(x, rows[x]), kWhite15) << x;
 }
 
+TEST_F(GpuTest, LineHalfStepsTakeThePixelFartherFromTheStart) {
+  // Where the exact line passes midway between two pixels, hardware draws the one farther from
+  // the start point. Each case is drawn at its own origin (ox, oy), which does not change it.
+  struct Case {
+    s32 x0, y0, x1, y1, x, y, not_x, not_y;
+  };
+  const Case cases[] = {
+      {0, 0, 10, 3, 5, 2, 5, 1},    // y = 1.5 at x = 5
+      {0, 3, 10, 0, 5, 1, 5, 2},    // y = 1.5 at x = 5, drawn upwards
+      {10, 0, 7, 10, 8, 5, 9, 5},   // x = 8.5 at y = 5, drawn leftwards
+      {10, 10, 7, 0, 8, 5, 9, 5},   // x = 8.5 at y = 5, drawn up and leftwards
+  };
+  for (int k = 0; k < 4; ++k) {
+    const Case& c = cases[k];
+    const s32 ox = 20 * k, oy = 100;
+    gp0({0x40000000 | kWhite, xy(ox + c.x0, oy + c.y0), xy(ox + c.x1, oy + c.y1)});
+    EXPECT_EQ(px(ox + c.x, oy + c.y), kWhite15) << "case " << k;
+    EXPECT_EQ(px(ox + c.not_x, oy + c.not_y), 0) << "case " << k;
+  }
+}
+
 TEST_F(GpuTest, GouraudLineInterpolates) {
   // Red 0 -> 240 over 30 steps: 8 per pixel, 5-bit red = x. Dither is off (E1.9 = 0).
   gp0({0x50000000, xy(0, 40), 0x0000F0, xy(30, 40)});

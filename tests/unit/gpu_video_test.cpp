@@ -85,6 +85,102 @@ TEST_F(GpuTest, InterlaceFieldToggles) {
   EXPECT_EQ((stat() >> 13) & 1, 1u);  // always 1 without interlace
 }
 
+// GPUSTAT bits 31 (ODE) and 13 (ODE2), sampled every 200 CPU cycles (a line is about 2153).
+struct FieldSample {
+  bool vblank;
+  u32 line, bit31, bit13;
+};
+
+class GpuFieldTest : public GpuTest {
+ protected:
+  std::vector<FieldSample> sample(Cycles cycles) {
+    std::vector<FieldSample> out;
+    for (Cycles t = 0; t < cycles; t += 200) {
+      run(200);
+      u32 s = stat();
+      out.push_back({gpu.timing().in_vblank(), gpu.timing().line(), s >> 31, (s >> 13) & 1});
+    }
+    return out;
+  }
+  // The samples split into the visible parts of successive fields (VBlank samples dropped).
+  static std::vector<std::vector<FieldSample>> visible_periods(const std::vector<FieldSample>& all) {
+    std::vector<std::vector<FieldSample>> periods;
+    bool in_visible = false;
+    for (const FieldSample& f : all) {
+      if (!f.vblank && !in_visible) periods.emplace_back();
+      if (!f.vblank) periods.back().push_back(f);
+      in_visible = !f.vblank;
+    }
+    return periods;
+  }
+};
+
+TEST_F(GpuFieldTest, Interlace480Bit13IsTheFieldNotDisplayed) {
+  gp1(0x08000024);  // 256x480, NTSC, interlaced
+  auto all = sample(6 * 570000);
+  for (const FieldSample& f : all) {
+    if (f.vblank) {
+      EXPECT_EQ(f.bit31, 0u) << "line " << f.line;  // psx-spx: 0 during VBlank
+    }
+  }
+  auto periods = visible_periods(all);
+  ASSERT_GE(periods.size(), 5u);
+  for (size_t p = 0; p < periods.size(); ++p) {
+    // 480-line mode: bit 31 changes per frame (psx-spx), and the GPU draws into the other field.
+    for (const FieldSample& f : periods[p]) {
+      EXPECT_EQ(f.bit31, periods[p][0].bit31) << "field " << p << " line " << f.line;
+      EXPECT_EQ(f.bit13, 1 - f.bit31) << "field " << p << " line " << f.line;
+    }
+    if (p) {
+      EXPECT_NE(periods[p][0].bit31, periods[p - 1][0].bit31) << p;
+    }
+  }
+}
+
+TEST_F(GpuFieldTest, Interlace240Bit31PerLineBit13PerField) {
+  gp1(0x08000020);  // 256x240, NTSC, interlaced
+  auto periods = visible_periods(sample(6 * 570000));
+  ASSERT_GE(periods.size(), 5u);
+  for (size_t p = 0; p < periods.size(); ++p) {
+    const auto& v = periods[p];
+    // 240-line mode: bit 31 changes per scanline (psx-spx); bit 13 holds the field all along.
+    for (size_t i = 1; i < v.size(); ++i) {
+      if (v[i].line != v[i - 1].line) {
+        EXPECT_NE(v[i].bit31, v[i - 1].bit31) << "line " << v[i].line;
+      }
+      EXPECT_EQ(v[i].bit13, v[0].bit13) << "field " << p;
+    }
+    if (p) {
+      EXPECT_NE(v[0].bit13, periods[p - 1][0].bit13) << p;
+    }
+  }
+}
+
+TEST_F(GpuFieldTest, ProgressiveBit13Is1AndBit31PerLine) {
+  gp1(0x08000001);  // 320x240, NTSC, progressive
+  auto all = sample(3 * 570000);
+  for (size_t i = 1; i < all.size(); ++i) {
+    EXPECT_EQ(all[i].bit13, 1u);  // psx-spx: always 1 when GP1(08h).5 = 0
+    if (all[i].vblank) {
+      EXPECT_EQ(all[i].bit31, 0u);
+    } else if (!all[i - 1].vblank && all[i].line != all[i - 1].line) {
+      EXPECT_NE(all[i].bit31, all[i - 1].bit31);
+    }
+  }
+}
+
+TEST_F(GpuFieldTest, BiosShellFieldSyncLoopEnds) {
+  // A BIOS shell in 640x480 interlace waits for bit 31 = 1 with bit 13 = 0, then for bit 31 = 0
+  // with bit 13 = 1. Three rounds take two fields each: well within 10 frames.
+  gp1(0x08000027);
+  Cycles limit = sched.now() + 10 * 570000;
+  for (int round = 0; round < 3; ++round) {
+    while (sched.now() < limit && (stat() & 0x80002000u) != 0x80000000u) run(100);
+    while (sched.now() < limit && (stat() & 0x80002000u) != 0x00002000u) run(100);
+  }
+  EXPECT_LT(sched.now(), limit);
+}
+
 TEST_F(GpuTest, DisplayOutput15Bit) {
   poke(0, 0, 0x001F);
   poke(319, 239, 0x7C00);

@@ -26,6 +26,7 @@ static_assert(offsetof(TumbleContract, move) == 0x38);
 static_assert(offsetof(TumbleContract, rng) == 0x44);
 static_assert(offsetof(TumbleContract, request_level) == 0x48);
 static_assert(offsetof(TumbleContract, state_timer) == 0x64);
+static_assert(offsetof(TumbleContract, camera_z) == 0x70);
 
 struct TumbleConsole {
   psx::Console console;
@@ -55,7 +56,7 @@ TEST(TumbleConsole, BootsToTitleWithContract) {
   TumbleConsole t;
   ASSERT_TRUE(t.run_game_frames(3));
   EXPECT_EQ(t.word(offsetof(TumbleContract, magic)), 0x4C424D54u);  // "TMBL"
-  EXPECT_EQ(t.word(offsetof(TumbleContract, version)), 1u);
+  EXPECT_EQ(t.word(offsetof(TumbleContract, version)), 2u);
   EXPECT_EQ(t.word(offsetof(TumbleContract, state)), 50u);  // title
   EXPECT_EQ(t.word(offsetof(TumbleContract, level_count)), 10u);
   EXPECT_EQ(t.word(offsetof(TumbleContract, level)), 0u);

@@ -8,7 +8,7 @@
 
 #define TUMBLE_CONTRACT_ADDRESS 0x80010000u
 #define TUMBLE_MAGIC 0x4C424D54u /* "TMBL" in little-endian byte order */
-#define TUMBLE_CONTRACT_VERSION 1u
+#define TUMBLE_CONTRACT_VERSION 2u
 
 /* Game state codes, in the spirit of the Kula World codes in the seed's Appendix B (same numbers
    where Kula has the state). */
@@ -65,6 +65,9 @@ typedef struct TumbleContract {
   uint32_t map_width;        /* 0x5C current level's map size in tiles */
   uint32_t map_height;       /* 0x60 */
   uint32_t state_timer;      /* 0x64 frames spent in the current state */
+  int32_t camera_x;          /* 0x68 camera eye position in world units (256 per tile); it */
+  int32_t camera_y;          /* 0x6C follows the ball every frame of a move, like the seed's */
+  int32_t camera_z;          /* 0x70 Kula World camera position (version 2) */
 } TumbleContract;
 
 /* Event bits (TumbleContract.events): what happened this frame, for sound, rumble and agents. */

@@ -7,6 +7,7 @@
 #include "hud.h"
 #include "hw.h"
 #include "pad.h"
+#include "scene.h"
 #include "screens.h"
 #include "sound.h"
 
@@ -39,6 +40,7 @@ int main(void) {
   for (;;) {
     uint32_t buttons = pad_poll(&pad, tumble_game.rumble_frames ? 0xC0 : 0);
     game_frame(&tumble_game, buttons);
+    scene_update_camera(&tumble_game);
     sound_play_events(&sound, tumble_game.pub.events);
     gpu_begin(&gpu);
     screens_draw(&gpu, &tumble_game);

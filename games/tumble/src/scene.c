@@ -165,13 +165,30 @@ static void draw_ball(Gpu *gpu, const Game *g, const Vert *ball) {
   }
 }
 
+/* The camera eye: behind the ball along the view yaw and above it, never below floor height. */
+static void camera_eye(const Game *g, const Vert *ball, Vert *eye) {
+  uint32_t yaw = g->pub.camera_angle;
+  int32_t fy = ball->y < BALL_R ? BALL_R : ball->y;
+  eye->x = ball->x - (fx_sin(yaw) * CAM_BACK >> 12);
+  eye->y = fy + CAM_UP;
+  eye->z = ball->z + (fx_cos(yaw) * CAM_BACK >> 12);
+}
+
+void scene_update_camera(Game *g) {
+  Vert ball, eye;
+  ball_position(g, &ball);
+  camera_eye(g, &ball, &eye);
+  g->pub.camera_x = eye.x;
+  g->pub.camera_y = eye.y;
+  g->pub.camera_z = eye.z;
+}
+
 void scene_draw(Gpu *gpu, const Game *g) {
   const TumbleContract *p = &g->pub;
-  Vert ball;
+  Vert ball, eye;
   ball_position(g, &ball);
-  uint32_t yaw = p->camera_angle;
-  int32_t fy = ball.y < BALL_R ? BALL_R : ball.y;
-  render_camera(ball.x - (fx_sin(yaw) * CAM_BACK >> 12), fy + CAM_UP, ball.z + (fx_cos(yaw) * CAM_BACK >> 12), yaw);
+  camera_eye(g, &ball, &eye);
+  render_camera(eye.x, eye.y, eye.z, p->camera_angle);
   scene_sky(gpu);
   for (int y = 0; y < (int)p->map_height; ++y) {
     for (int x = 0; x < (int)p->map_width; ++x) {

@@ -7,5 +7,7 @@
 
 void scene_sky(Gpu *gpu);
 void scene_draw(Gpu *gpu, const Game *g);
+/* Stores the camera eye position of this frame in the RAM contract (camera_x/y/z). */
+void scene_update_camera(Game *g);
 
 #endif

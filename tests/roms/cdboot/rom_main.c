@@ -1,15 +1,31 @@
 /* The cdboot boot ROM's boot sequence: what a BIOS does to start a disc, without Sony code.
-   Initialises the CD-ROM drive, reads SYSTEM.CNF from the ISO 9660 file system (psx-spx "CDROM
-   File Formats": BOOT and STACK; PSX.EXE;1 when there is no SYSTEM.CNF), loads the PS-X EXE
-   (psx-spx "CDROM File Formats, PS-X EXE": 0x800-byte header, text at its load address, BSS
-   cleared), and enters it with SP/GP set. Progress and errors go to the dev-kit DUART TX
-   (0x1F802023); an error stops the emulator through the debug exit port with code 3. */
+   Sets the GPU to 640x480 interlace and follows its fields through GPUSTAT as a BIOS shell does,
+   initialises the CD-ROM drive, asks for the disc (GetID; with none it idles like the shell),
+   reads SYSTEM.CNF from the ISO 9660 file system (psx-spx "CDROM File Formats": BOOT and STACK;
+   PSX.EXE;1 when there is no SYSTEM.CNF), loads the PS-X EXE (psx-spx "CDROM File Formats, PS-X
+   EXE": 0x800-byte header, text at its load address, BSS cleared), and enters it with SP/GP set.
+   Progress and errors go to the dev-kit DUART TX (0x1F802023); an error stops the emulator
+   through the debug exit port with code 3. */
 #include <stdint.h>
 
 #include "cd.h"
 
 #define DUART_TX (*(volatile uint8_t *)0xBF802023)
 #define DEBUG_EXIT (*(volatile uint16_t *)0xBF802082)
+#define GP1 (*(volatile uint32_t *)0xBF801814)
+#define GPUSTAT GP1
+
+/* GPUSTAT bit 31 (ODE): the displayed line is odd (the field, in 480-line interlace; 0 in VBlank).
+   Bit 13 (ODE2): the interlace field being drawn, the one not displayed (psx-spx "GPU Status
+   Register"). */
+#define GPUSTAT_ODE 0x80000000u
+#define GPUSTAT_ODE2 0x00002000u
+/* Rounds of the field handshake before the ROM goes on; each spans two fields. */
+#define FIELD_SYNC_ROUNDS 4
+/* GPUSTAT reads before giving up on a field change: about three seconds of emulated time, far
+   longer than the two fields (1/30 s) one round takes. A real BIOS waits forever; this ROM stops
+   with a message instead, so a test fails rather than hangs. */
+#define FIELD_SPIN_LIMIT 500000u
 
 /* SYSTEM.CNF's STACK when it gives none (psx-spx). */
 #define DEFAULT_STACK 0x801FFF00u
@@ -139,9 +155,47 @@ static void load_and_run(uint32_t lba, uint32_t size, uint32_t stack) {
   exe_jump(pc, gp, stack);
 }
 
+/* Waits until GPUSTAT's bits 31 and 13 read `want` (their other bits masked off). */
+static void wait_field(uint32_t want) {
+  for (uint32_t spin = 0; (GPUSTAT & (GPUSTAT_ODE | GPUSTAT_ODE2)) != want; ++spin)
+    if (spin > FIELD_SPIN_LIMIT) fail("GPU", "GPUSTAT bits 31/13 never showed the interlace fields");
+}
+
+/* One frame of a BIOS shell's field handshake: the odd field displayed while the even one is drawn
+   (31 = 1, 13 = 0), then the even one displayed while the odd one is drawn (31 = 0, 13 = 1). If
+   bit 13 followed the displayed field instead, the first state would never come. */
+static void follow_fields(void) {
+  wait_field(GPUSTAT_ODE);
+  wait_field(GPUSTAT_ODE2);
+}
+
+/* GP1(00h) reset, then GP1(08h) 640x480, NTSC, 15-bit, vertical interlace (bit 5), as a BIOS shell
+   sets the display up, and a few frames of its field handshake. */
+static void gpu_init_interlaced(void) {
+  GP1 = 0x00000000;
+  GP1 = 0x08000027;
+  for (int i = 0; i < FIELD_SYNC_ROUNDS; ++i) follow_fields();
+  out_str("cdboot: GPU in 480-line interlace, fields followed\n");
+}
+
+/* GetID (psx-spx "CDROM Commands"): INT2 for a data disc, INT5 with flag bit 6
+   ("missing disk") in its second byte when the drive is empty. */
+static int disc_present(void) {
+  int r = cd_command(0x1A, 0, 0, 1);
+  if (r == CD_ERROR && cd_response_len >= 2 && (cd_response[1] & 0x40)) return 0;
+  check(r, "GetID");
+  return 1;
+}
+
 void rom_main(void) {
   out_str("cdboot: psxrl disc boot ROM\n");
+  gpu_init_interlaced();
   check(cd_init(), "drive init");
+  if (!disc_present()) {
+    /* What a BIOS shows without a disc is its shell; this one only keeps following the fields. */
+    out_str("cdboot: no disc: shell idle\n");
+    for (;;) follow_fields();
+  }
   uint32_t lba, size, stack = DEFAULT_STACK;
   int r = iso_find("SYSTEM.CNF;1", &lba, &size);
   if (r == CD_OK) {

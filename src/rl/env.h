@@ -1,0 +1,148 @@
+// The environment: one Console + one Lua state + one integration, stepped synchronously (seed
+// §3.2, DESIGN.md "The environment layer"). reset() and step() return only when the level has
+// started or the move is over; the only clock is the emulated frame counter, so the same seed and
+// actions always give the same observations, rewards and flags. One thread at a time.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rl/integration.h"
+#include "rl/move_delimiter.h"
+#include "rl/observation.h"
+
+namespace psx {
+class Console;
+}
+namespace psxrl::lua {
+class Host;
+}
+
+namespace psxrl::rl {
+
+// Where integrations live: $PSXRL_GAMES, else the source tree's games/ this build was made from.
+std::string default_games_dir();
+// Where the build put built-in game programs (build/games).
+std::string default_build_games_dir();
+
+enum class RewardKind { Table, Score, Script };
+RewardKind parse_reward_kind(const std::string& name);  // "table" | "score" | "script"
+
+struct EnvConfig {
+  std::string game = "tumble";
+  std::string games_dir;        // empty: default_games_dir()
+  std::string build_games_dir;  // empty: default_build_games_dir()
+  UserFiles files;
+  std::string obs = "simple";
+  bool visual_gray = false;
+  std::string reward = "table";
+  double gamma = 0.9;
+  // Overrides of the integration's settings; unset keeps the integration's value.
+  std::optional<std::uint32_t> initial_delay, delay, max_move_frames, max_moves;
+  std::optional<double> sticky;
+};
+
+struct StepInfo {
+  std::uint64_t game_frames = 0;  // emulated frames of this move or reset ("game duration")
+  double real_seconds = 0;        // host time of this call ("real duration"); nothing depends on it
+  std::int64_t score = 0;
+  double time_left = 0;           // seconds, from the integration's time variable
+  std::int64_t state = 0;         // the game state code
+  int level = 0;
+  bool hit_upper_bound = false;   // the move ran to the delimiter's frame limit
+  std::uint32_t moves = 0;        // moves this episode
+  double episode_reward = 0;
+  std::string outcome;            // "win", "lose" or "" while the episode runs
+};
+
+struct StepResult {
+  double reward = 0;
+  bool terminated = false;  // win or loss
+  bool truncated = false;   // move or frame cap
+  StepInfo info;
+};
+
+class Env {
+ public:
+  // Loads the integration, boots the game and snapshots it. Throws psx::InputError for a bad
+  // integration or missing user files, std::invalid_argument for a bad observation or reward name.
+  explicit Env(const EnvConfig& config);
+  ~Env();
+  Env(const Env&) = delete;
+  Env& operator=(const Env&) = delete;
+
+  const Integration& game() const { return game_; }
+  const EnvConfig& config() const { return config_; }
+  ObsKind obs_kind() const { return obs_kind_; }
+  const std::vector<Space>& observation_spaces() const { return spaces_; }
+  const std::vector<Action>& actions() const { return game_.actions; }
+  int action_count() const { return static_cast<int>(game_.actions.size()); }
+
+  // Starts `level` (1-based) from the booted game; `seed` seeds the game's randomness (through
+  // the script's on_reset) and the environment's own (sticky actions, random frame skip).
+  const Observation& reset(int level, std::uint64_t seed, StepInfo* info = nullptr);
+  StepResult step(int action);
+  const Observation& observation() const { return obs_; }
+  bool episode_over() const { return done_; }
+  int level() const { return level_; }
+
+  // Move delimiting settable at run time (seed §4.1.3).
+  void set_delays(std::uint32_t initial_delay, std::uint32_t delay);
+  DelimiterSettings delimiter_settings() const { return delim_; }
+
+  // Named variables as the integration declares them (scaled) and raw.
+  double value(const std::string& variable) const;
+  std::int64_t raw(const Variable& v) const;
+  void write_raw(const Variable& v, std::int64_t value);
+
+  // The console, for tools that show or record a game (play, record); agents never use it.
+  psx::Console& console() { return *console_; }
+
+ private:
+  void boot();
+  void check_disc_identity(const std::string& path);
+  std::uint64_t start_level(int level);  // returns the frames it ran
+  void bind_script();
+  const LevelMap& map() const;
+  bool position(int& x, int& y, int& facing) const;
+  std::string outcome() const;
+  double move_reward(std::int64_t score_delta, const std::string& outcome) const;
+  std::uint32_t run_move(const Action& a, bool& hit_bound);
+  std::uint32_t run_frames(int action);
+  void frame_done(std::vector<std::int64_t>* watched, bool* activity);
+  void encode();
+  std::uint64_t next_random();
+  StepInfo make_info(std::uint64_t frames, double seconds) const;
+
+  EnvConfig config_;
+  Integration game_;
+  ObsKind obs_kind_;
+  RewardKind reward_kind_;
+  std::unique_ptr<psx::Console> console_;
+  std::unique_ptr<lua::Host> lua_;
+  std::vector<std::optional<LevelMap>> maps_;
+  std::vector<std::uint8_t> boot_state_;
+  DelimiterSettings delim_;
+  std::uint32_t max_moves_;
+  double sticky_;
+
+  std::vector<Space> spaces_;
+  Observation obs_;
+  std::vector<std::int64_t> simple_buf_;
+  std::vector<float> local_buf_, episode_buf_, audio_buf_;
+  std::vector<std::uint8_t> visual_buf_, rumble_buf_;
+  std::vector<psx::StereoSample> frame_audio_, move_audio_;
+
+  int level_ = 0;
+  bool done_ = true;
+  std::uint64_t rng_ = 0;
+  std::uint32_t moves_ = 0;
+  std::uint64_t episode_frames_ = 0;
+  double episode_reward_ = 0;
+  double time_at_start_ = 0;
+  int last_action_ = 0;
+};
+
+}  // namespace psxrl::rl

@@ -1,8 +1,12 @@
-/* The few C library and libgcc helpers that GCC may call from PlayStation code. The Debian cross
-   toolchain's own libraries target MIPS32r2 with PIC and hardware float, so programs cannot link
-   them. */
+/* The few C library and libgcc helpers that GCC may call from PlayStation code, and the counters
+   of the test harness (psx/test.h). The Debian cross toolchain's own libraries target MIPS32r2
+   with PIC and hardware float, so programs cannot link them. */
 #include <stddef.h>
 #include <stdint.h>
+
+/* psx/test.h's counters, one pair per program whatever the number of files that check. */
+int test_failures;
+int test_checks;
 
 void *memcpy(void *dst, const void *src, size_t n) {
   unsigned char *d = dst;

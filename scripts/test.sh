@@ -6,11 +6,14 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh
 ctest --test-dir build --output-on-failure -j2
 
-# The same tests again under AddressSanitizer and UndefinedBehaviorSanitizer: guest programs and
-# user files must never make the emulator touch memory it does not own or rely on undefined C++.
+# The same tests again under AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer:
+# guest programs and user files must never make the emulator touch memory it does not own, leak,
+# or rely on undefined C++. Any finding exits with 99, a code no psxrl run uses, so that it
+# cannot pass for an expected exit code (tests/expect.cmake also reports it as a sanitizer error).
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSXRL_SANITIZE=ON >/dev/null
 cmake --build build-sanitize
-ASAN_OPTIONS=detect_leaks=0 ctest --test-dir build-sanitize --output-on-failure -j2
+ASAN_OPTIONS=detect_leaks=1:exitcode=99 UBSAN_OPTIONS=exitcode=99:print_stacktrace=1 \
+  ctest --test-dir build-sanitize --output-on-failure -j2
 
 # Every parser of user files and the CPU/GPU guest side fuzzed briefly (fuzz/, scripts/fuzz.sh):
 # past crashes are replayed and a few seconds per target look for new ones.

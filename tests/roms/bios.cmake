@@ -1,4 +1,5 @@
 # HLE kernel test programs: BIOS calls through the A0h/B0h/C0h vectors and SYSCALL.
-psx_add_rom_test(bios_string SOURCES bios_string.c bios_calls.S)
-psx_add_rom_test(bios_heap SOURCES bios_heap.c bios_calls.S)
-psx_add_rom_test(bios_interrupts SOURCES bios_interrupts.c bios_calls.S)
+# CHECKS: one per CHECK_EQ call site, each run once.
+psx_add_rom_test(bios_string SOURCES bios_string.c bios_calls.S CHECKS 52)
+psx_add_rom_test(bios_heap SOURCES bios_heap.c bios_calls.S CHECKS 20)
+psx_add_rom_test(bios_interrupts SOURCES bios_interrupts.c bios_calls.S CHECKS 30)

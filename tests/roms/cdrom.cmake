@@ -14,7 +14,8 @@ add_custom_command(OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue ${CMAKE_CUR
   COMMAND mkdisc -o ${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue ${CDROM_DATA}=DATA.BIN
   DEPENDS mkdisc ${CDROM_DATA} VERBATIM)
 add_custom_target(cdrom_test_disc ALL DEPENDS ${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue)
-psx_add_rom_test(cdrom_controller SOURCES cdrom_controller.c
+# 44 checks run once, one in the two-sector loop twice: 46.
+psx_add_rom_test(cdrom_controller SOURCES cdrom_controller.c CHECKS 46
                  ARGS --disc ${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue)
 
 # A bootable disc: the HLE fast boot reads SYSTEM.CNF and loads BOOT.EXE from it.
@@ -24,5 +25,5 @@ add_custom_command(OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/cdrom_boot.cue ${CMAKE_CUR
           --exe-name BOOT.EXE --cnf ${CMAKE_CURRENT_SOURCE_DIR}/cdrom_boot.cnf --region E
   DEPENDS mkdisc cdrom_boot ${CMAKE_CURRENT_BINARY_DIR}/cdrom_boot.exe ${CMAKE_CURRENT_SOURCE_DIR}/cdrom_boot.cnf VERBATIM)
 add_custom_target(cdrom_boot_disc ALL DEPENDS ${CMAKE_CURRENT_BINARY_DIR}/cdrom_boot.cue)
-add_test(NAME rom.cdrom_boot_hle
-  COMMAND psxrl run --disc ${CMAKE_CURRENT_BINARY_DIR}/cdrom_boot.cue --frames 60 --expect-exit)
+psx_add_run_test(rom.cdrom_boot_hle CODE 0 CHECKS 1
+  RUN --disc ${CMAKE_CURRENT_BINARY_DIR}/cdrom_boot.cue --frames 60 --expect-exit)

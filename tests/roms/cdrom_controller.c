@@ -24,11 +24,14 @@ static void send(uint8_t cmd, const uint8_t *params, int n) {
 }
 
 /* Waits for the next interrupt, reads its response, acknowledges it; returns INT1..INT5 (0 on
-   a time-out). */
+   a time-out, which also counts as a failure). */
 static int wait_int(void) {
   CD_INDEX = 1;
   for (uint32_t spin = 0; (CD_REG3 & 7) == 0; ++spin)
-    if (spin > 20000000) return 0;
+    if (spin > 20000000) {
+      TEST_TIMEOUT("a CD-ROM interrupt (HINTSTS bits 0-2)");
+      return 0;
+    }
   int type = CD_REG3 & 7;
   resp_len = 0;
   while ((CD_INDEX & 0x20) && resp_len < 16) resp[resp_len++] = CD_REG1;
@@ -38,10 +41,13 @@ static int wait_int(void) {
   return type;
 }
 
+/* Waits for the next interrupt other than INT1 (data ready). A drive that keeps reading sends
+   INT1 at 75 sectors per second for ever; 1000 of them (13 s) means the awaited one never came. */
 static int wait_int_skipping_data(void) {
-  int t;
-  while ((t = wait_int()) == 1) {
+  int t, sectors = 0;
+  while ((t = wait_int()) == 1 && ++sectors < 1000) {
   }
+  if (t == 1) TEST_TIMEOUT("a CD-ROM interrupt other than INT1 (data ready)");
   return t;
 }
 

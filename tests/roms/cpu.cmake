@@ -1,37 +1,35 @@
 # CPU, bus, exception and boot test programs.
-psx_add_rom_test(hello SOURCES hello.c)
-psx_add_rom_test(cpu_pipeline SOURCES cpu_pipeline.c cpu_pipeline.S)
-psx_add_rom_test(cpu_exceptions SOURCES cpu_exceptions.c cpu_exceptions.S)
-psx_add_rom_test(cpu_memory SOURCES cpu_memory.c cpu_memory.S)
-psx_add_rom_test(cpu_alu SOURCES cpu_alu.c)
+# CHECKS: one per CHECK_EQ call site unless a comment gives the arithmetic.
+psx_add_rom_test(hello SOURCES hello.c CHECKS 2 OUTPUT "hello from the PlayStation\n")
+psx_add_rom_test(cpu_pipeline SOURCES cpu_pipeline.c cpu_pipeline.S CHECKS 11)
+# 10 expect() calls x 5 checks + 5 direct checks between them + 6 for the software interrupt,
+# masked interrupt and RFE = 61.
+psx_add_rom_test(cpu_exceptions SOURCES cpu_exceptions.c cpu_exceptions.S CHECKS 61)
+psx_add_rom_test(cpu_memory SOURCES cpu_memory.c cpu_memory.S CHECKS 21)
+psx_add_rom_test(cpu_alu SOURCES cpu_alu.c CHECKS 27)
 
 # The project's boot ROM exercises the BIOS boot + side-load path without Sony's BIOS.
 psx_add_rom_image(bootrom SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bootrom.S
                   LINKER_SCRIPT ${CMAKE_CURRENT_SOURCE_DIR}/bootrom.ld
                   DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/rom_init.inc)
-add_test(NAME rom.bootrom_sideload
-  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0 "-DEXPECT_OUTPUT=psxrl boot ROM\nhello from the PlayStation"
-          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CMAKE_CURRENT_BINARY_DIR}/bootrom.bin|--exe|${CMAKE_CURRENT_BINARY_DIR}/hello.exe|--frames|60|--expect-exit
-          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+psx_add_run_test(rom.bootrom_sideload CODE 0 CHECKS 2 OUTPUT "psxrl boot ROM\nhello from the PlayStation"
+  RUN --bios ${CMAKE_CURRENT_BINARY_DIR}/bootrom.bin --exe ${CMAKE_CURRENT_BINARY_DIR}/hello.exe --frames 60 --expect-exit)
 
 # HLE BIOS calls: the text is what C's printf gives for the same formats and arguments.
 psx_add_exe(bios_hle SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bios_hle.c ${CMAKE_CURRENT_SOURCE_DIR}/bios_calls.S)
-add_test(NAME rom.bios_hle
-  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0
-          "-DEXPECT_OUTPUT=AB\nputs line\nstd_out_puts line\n[-42|7|3000000000|beef|BEEF|10]\n[   42|42   |00042|+42| 42]\n[0xff|010|007|     abc|z   |%]\n[   -12|six|ok]\n1 2 3 4 5 6\nbios_hle: 10 checks, 0 failures"
-          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--exe|${CMAKE_CURRENT_BINARY_DIR}/bios_hle.exe|--frames|60|--expect-exit
-          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+psx_add_run_test(rom.bios_hle CODE 0 CHECKS 10
+  OUTPUT "AB\nputs line\nstd_out_puts line\n[-42|7|3000000000|beef|BEEF|10]\n[   42|42   |00042|+42| 42]\n[0xff|010|007|     abc|z   |%]\n[   -12|six|ok]\n1 2 3 4 5 6\nbios_hle: 10 checks, 0 failures"
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/bios_hle.exe --frames 60 --expect-exit)
 psx_add_exe(bios_putchar SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bios_putchar.c ${CMAKE_CURRENT_SOURCE_DIR}/bios_calls.S)
-add_test(NAME rom.bios_putchar_with_rom
-  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0 "-DEXPECT_OUTPUT=psxrl boot ROM\nok\n"
-          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CMAKE_CURRENT_BINARY_DIR}/bootrom.bin|--exe|${CMAKE_CURRENT_BINARY_DIR}/bios_putchar.exe|--frames|60|--expect-exit
-          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
-psx_add_rom_test(watch_writes SOURCES watch_writes.c)
-psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S)
-psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S)
-psx_add_rom_test(cpu_icache SOURCES cpu_icache.c cpu_icache.S)
+# No checks of its own: the text is the test.
+psx_add_run_test(rom.bios_putchar_with_rom CODE 0 OUTPUT "psxrl boot ROM\nok\n"
+  RUN --bios ${CMAKE_CURRENT_BINARY_DIR}/bootrom.bin --exe ${CMAKE_CURRENT_BINARY_DIR}/bios_putchar.exe --frames 60 --expect-exit)
+psx_add_rom_test(watch_writes SOURCES watch_writes.c CHECKS 5)
+# COP0 breakpoints: 11 checks in main's flow, 12 expected breaks of 5 checks, 10 expected
+# non-breaks of 1: 11 + 60 + 10 = 81. The cache programs check each case once (10 and 12 sites).
+psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S CHECKS 81)
+psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S CHECKS 10)
+psx_add_rom_test(cpu_icache SOURCES cpu_icache.c cpu_icache.S CHECKS 12)
 psx_add_exe(cpu_dcache_hang SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/cpu_dcache_hang.c)
-add_test(NAME rom.cpu_dcache_hang
-  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=3 "-DEXPECT_OUTPUT=scratchpad access at 0x1F800000 in data-cache mode hangs the bus"
-          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--exe|${CMAKE_CURRENT_BINARY_DIR}/cpu_dcache_hang.exe|--frames|60|--expect-exit
-          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+psx_add_run_test(rom.cpu_dcache_hang CODE 3 OUTPUT "scratchpad access at 0x1F800000 in data-cache mode hangs the bus"
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_dcache_hang.exe --frames 60 --expect-exit)

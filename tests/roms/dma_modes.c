@@ -35,7 +35,7 @@ static void test_dicr_rules(void) {
   I_STAT = 0;
   D_BCR(6) = 1;
   D_CHCR(6) = 0x11000002;
-  dma_wait(6);
+  if (!dma_wait(6)) TEST_TIMEOUT("DMA6 (OTC) to finish");
   CHECK_EQ("no flag when disabled", DICR, 0x00800000);
   CHECK_EQ("no irq when disabled", I_STAT & 8, 0);
   DICR = 0x00008000; /* force IRQ */

@@ -14,9 +14,14 @@
 #define XY(x, y) ((((uint32_t)(y) & 0xFFFF) << 16) | ((uint32_t)(x) & 0xFFFF))
 #define RGB15(r, g, b) ((uint32_t)(r) | ((uint32_t)(g) << 5) | ((uint32_t)(b) << 10))
 
+/* Bound on the polls of a GPUSTAT ready bit; the GPU answers within a few commands' time. */
+#define GPU_WAIT_LIMIT 1000000
+
 static inline void gp0(uint32_t w) {
-  while (!(GPU_STAT & (1u << 26))) {
+  int i = 0;
+  while (!(GPU_STAT & (1u << 26)) && ++i < GPU_WAIT_LIMIT) {
   }
+  if (i == GPU_WAIT_LIMIT) TEST_TIMEOUT("GPUSTAT.26 (ready for a command)");
   GPU_GP0 = w;
 }
 
@@ -51,8 +56,10 @@ static inline void gpu_read_pixels(uint32_t x, uint32_t y, uint32_t w, uint32_t 
   gp0(0xC0000000);
   gp0(XY(x, y));
   gp0(XY(w, h));
-  while (!(GPU_STAT & (1u << 27))) {
+  int spins = 0;
+  while (!(GPU_STAT & (1u << 27)) && ++spins < GPU_WAIT_LIMIT) {
   }
+  if (spins == GPU_WAIT_LIMIT) TEST_TIMEOUT("GPUSTAT.27 (VRAM data ready to send)");
   for (i = 0; i < n; i += 2) {
     uint32_t word = GPU_READ;
     out[i] = (uint16_t)word;

@@ -30,10 +30,12 @@ static void upload_manual(uint32_t addr, const uint8_t *data, int bytes) {
     int n = 0;
     for (; n < 32 && pos < bytes; ++n, pos += 2) FIFO = (uint16_t)(data[pos] | data[pos + 1] << 8);
     SPUCNT = CNT_ON | 0x10;
-    for (int i = 0; i < 100000 && (SPUSTAT & 0x400); ++i) {
+    int i = 0;
+    while ((SPUSTAT & 0x400) && ++i < 100000) {
     }
+    if (i == 100000) TEST_TIMEOUT("SPUSTAT.10 (data transfer busy) to clear");
     SPUCNT = CNT_ON;
-    spu_wait_mode(0);
+    if (!spu_wait_mode(0)) TEST_TIMEOUT("SPUSTAT bits 0-5 to show transfer mode 0");
   }
 }
 

@@ -53,11 +53,13 @@ static void test_target_period(void) {
   while (!(I_STAT & 0x40) && ++n < 100000) {
   }
   uint32_t first = T_COUNT(1);
+  if (n == 100000) TEST_TIMEOUT("the first timer 2 IRQ (I_STAT.6)");
   I_STAT = ~0x40u;
   n = 0;
   while (!(I_STAT & 0x40) && ++n < 100000) {
   }
   uint32_t second = T_COUNT(1);
+  if (n == 100000) TEST_TIMEOUT("the second timer 2 IRQ (I_STAT.6)");
   uint32_t period = (second - first) & 0xFFFF;
   CHECK_EQ("period >= 1001 - poll", period + 40 >= 1001, 1);
   CHECK_EQ("period <= 1001 + poll", period <= 1001 + 40, 1);
@@ -90,12 +92,17 @@ static void test_one_shot_and_toggle(void) {
   T_MODE(1) = 0x00D8; /* ZRET | CMP | REPT | toggle */
   CHECK_EQ("toggle intf set after write", T_MODE(1) & 0x0400, 0x0400);
   I_STAT = 0;
-  while (!(I_STAT & 0x20)) {
+  /* COMP = 200 system clocks: an IRQ and a toggle come within a few hundred polls. */
+  int n = 0;
+  while (!(I_STAT & 0x20) && ++n < 100000) {
   }
+  if (n == 100000) TEST_TIMEOUT("the timer 1 IRQ (I_STAT.5)");
   CHECK_EQ("toggle intf 0 after irq", T_MODE(1) & 0x0400, 0);
   I_STAT = ~0x20u;
-  while (!(T_MODE(1) & 0x0400)) {
+  n = 0;
+  while (!(T_MODE(1) & 0x0400) && ++n < 100000) {
   }
+  if (n == 100000) TEST_TIMEOUT("timer 1 mode bit 10 to toggle back to 1");
   CHECK_EQ("no irq on 0->1", I_STAT & 0x20, 0);
   T_MODE(1) = 0;
 }

@@ -12,19 +12,23 @@ static void spin(int n) {
   }
 }
 
-/* Acknowledges IRQ0 and waits for the next VBlank start; 0 on time-out. */
+/* Acknowledges IRQ0 and waits for the next VBlank start; 0 on time-out (also a failure). */
 static int wait_vblank(void) {
   I_STAT = ~1u;
   for (int i = 0; i < 3000000; ++i)
     if (I_STAT & 1) return 1;
+  TEST_TIMEOUT("the VBlank IRQ (I_STAT.0)");
   return 0;
 }
 
-/* Waits `ticks` x 8 system clocks on timer 2 (system clock / 8). */
+/* Waits `ticks` x 8 system clocks on timer 2 (system clock / 8). Every poll takes at least one
+   clock, so ticks x 8 polls (plus slack) are more than enough. */
 static void wait_sys8(uint32_t ticks) {
   T_MODE(2) = 0x0200;
-  while (T_COUNT(2) < ticks) {
+  uint32_t polls = 0, limit = ticks * 8 + 10000;
+  while (T_COUNT(2) < ticks && ++polls < limit) {
   }
+  if (polls == limit) TEST_TIMEOUT("timer 2 (system clock / 8) to count up");
 }
 
 static void hblanks_per_frame(void) {

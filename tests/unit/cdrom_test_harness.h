@@ -49,7 +49,9 @@ class CdromHarness {
     cd.io_write(0, 1, 1);
     r.irq = cd.io_read(3, 1) & 7;
     cd.io_write(0, 0, 1);
-    while (cd.io_read(0, 1) & 0x20) r.bytes.push_back(static_cast<u8>(cd.io_read(1, 1)));
+    // The response FIFO holds 16 bytes: HSTS.5 (not empty) must clear after at most 16 reads.
+    while ((cd.io_read(0, 1) & 0x20) && r.bytes.size() < 16) r.bytes.push_back(static_cast<u8>(cd.io_read(1, 1)));
+    if (cd.io_read(0, 1) & 0x20) ADD_FAILURE() << "HSTS.5 still shows response bytes after 16 reads";
     if (ack) acknowledge();
     return r;
   }

@@ -1,11 +1,9 @@
-// Runs every case of the SingleStepTests r3000 data (../shared/testdata/r3000-singlestep, format
-// in its README): one instruction from a recorded state against a scripted bus, then compares
+// Runs every case of the SingleStepTests r3000 data (tests/data/r3000-singlestep, format in its
+// README): one instruction from a recorded state against a scripted bus, then compares
 // registers, HI/LO, PC, EPC, the pending branch and load, Cause (ExcCode, BD) and data writes.
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -40,8 +38,7 @@ struct StepCase {
 };
 
 std::vector<StepCase> read_cases(const std::filesystem::path& file) {
-  std::ifstream f(file, std::ios::binary);
-  std::vector<u8> d((std::istreambuf_iterator<char>(f)), {});
+  const std::string d = test::read_gz(file);
   std::vector<StepCase> out;
   size_t o = 0;
   auto take = [&](void* p, size_t n) {
@@ -176,10 +173,14 @@ std::string run_case(const StepCase& c) {
 class SingleStep : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SingleStep, AllCasesMatch) {
-  auto file = test::testdata_dir() / "r3000-singlestep" / (GetParam() + ".json.bin");
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "hardware test data not found: " << file;
-  auto cases = read_cases(file);
-  ASSERT_FALSE(cases.empty());
+  const auto file = test::testdata_dir() / "r3000-singlestep" / (GetParam() + ".json.bin.gz");
+  std::vector<StepCase> cases;
+  try {
+    cases = read_cases(file);
+  } catch (const std::exception& e) {
+    FAIL() << e.what();
+  }
+  ASSERT_EQ(cases.size(), 1000u) << file.string() << ": every file of the data set has 1000 cases";
   int failures = 0;
   for (const StepCase& c : cases) {
     std::string d = run_case(c);

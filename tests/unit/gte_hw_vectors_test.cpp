@@ -1,11 +1,10 @@
-// GTE against 1150 vectors recorded on a real PlayStation (testdata/gte/gte-hw-vectors.jsonl,
+// GTE against 1150 vectors recorded on a real PlayStation (tests/data/gte/gte-hw-vectors.jsonl.gz,
 // from JaCzekanski/ps1-tests gte/test-all): register write/read quirks and every command.
-// Replays the recording procedure of testdata/README.md and compares all 64 registers.
+// Replays the recording procedure of tests/data/gte/README.md and compares all 64 registers.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cctype>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -112,9 +111,13 @@ std::string hex(u32 v) {
 }
 
 TEST(GteHwVectors, AllRecordedVectorsMatch) {
-  const auto path = test::testdata_dir() / "gte" / "gte-hw-vectors.jsonl";
-  std::ifstream in(path);
-  if (!in) GTEST_SKIP() << "GTE hardware vectors not found at " << path.string() << " (set PSXRL_TESTDATA)";
+  const auto path = test::testdata_dir() / "gte" / "gte-hw-vectors.jsonl.gz";
+  std::istringstream in;
+  try {
+    in.str(test::read_gz(path));
+  } catch (const std::exception& e) {
+    FAIL() << e.what();
+  }
 
   std::string line;
   int line_no = 0, vectors = 0, mismatched_vectors = 0;

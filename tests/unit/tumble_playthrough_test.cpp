@@ -66,7 +66,11 @@ void play_route(TumbleConsole& t, int level, int facing0, const std::string& rou
     psx::u32 taken = t.word(TUMBLE_FIELD(frame));  // the game frame that took the move
     EXPECT_EQ(t.word(TUMBLE_FIELD(move)), route[i] == 'F' ? 1u : route[i] == 'R' ? 2u : 3u);
     EXPECT_EQ(t.word(TUMBLE_FIELD(move_length)), expected_frames);
-    while (t.word(TUMBLE_FIELD(move)) != MOVE_NONE && t.state() == STATE_PLAYING) t.console.run_frame();
+    // A move lasts at most a few dozen frames; 1000 console frames means it never ended.
+    for (int f = 0; f < 1000 && t.word(TUMBLE_FIELD(move)) != MOVE_NONE && t.state() == STATE_PLAYING; ++f)
+      t.console.run_frame();
+    ASSERT_FALSE(t.word(TUMBLE_FIELD(move)) != MOVE_NONE && t.state() == STATE_PLAYING)
+        << "the move did not end within 1000 frames";
     bool last = i + 1 == route.size();
     EXPECT_EQ(t.state(), last ? STATE_SUCCESS : STATE_PLAYING);
     if (!last) {
@@ -134,9 +138,10 @@ TEST(TumblePlaythrough, RollingOffThePlatformFallsThenGameOverThenTitle) {
   t.screenshot("fallen");
   // A lost state lasts 120 frames, then game over (18); Start (after 30 frames) goes to the title.
   psx::u32 lost_at = t.word(TUMBLE_FIELD(frame)) - t.word(TUMBLE_FIELD(state_timer));
-  while (t.state() == STATE_FALLEN && t.run_game_frames(1)) {
+  // Bounded at 200 game frames: the expected 120 and some.
+  for (int f = 0; f < 200 && t.state() == STATE_FALLEN && t.run_game_frames(1); ++f) {
   }
-  EXPECT_EQ(t.state(), STATE_GAME_OVER);
+  EXPECT_EQ(t.state(), STATE_GAME_OVER) << "still fallen (6) after 200 game frames, or the console stopped";
   EXPECT_EQ(t.word(TUMBLE_FIELD(frame)) - lost_at, 120u);
   t.run_game_frames(40);
   t.screenshot("game_over");

@@ -2,10 +2,14 @@
 games/tumble/levels/level01.txt: width 5, start S at column 2 of row 5 facing north, coins at
 columns 1 and 3, plain floor at column 4). Expected values follow from the map, the seed's simple
 state 4*w*y + 4*x + z and Table 3.3 rewards in units of 1 - gamma (docs/environments.md)."""
+import shutil
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 import psxrl
+from conftest import tumble_exe
 
 FORWARD, LOOKRIGHT, LOOKLEFT, JUMPFORWARD = range(4)
 INFO_FIELDS = {"game_frames", "real_seconds", "score", "time_left", "state", "level", "hit_upper_bound", "moves",
@@ -75,6 +79,17 @@ def test_errors_carry_the_cpp_messages():
         env.step(4)
     with pytest.raises(IndexError):
         env.reset(11, 0)  # Tumble has 10 levels
+
+
+def test_a_lua_error_in_an_integration_names_the_script(tmp_path):
+    # Tumble's integration with a script that does not parse: the error names file and line.
+    source = Path(__file__).resolve().parents[2] / "games" / "tumble"
+    game = tmp_path / "tumble"
+    shutil.copytree(source / "levels", game / "levels")
+    shutil.copy(source / "game.toml", game / "game.toml")
+    (game / "game.lua").write_text("-- broken\nfunction on_reset(seed\n")
+    with pytest.raises(psxrl.InputError, match=r"game\.lua:\d+:"):
+        psxrl.Env(games_dir=tmp_path, build_games_dir=Path(tumble_exe()).parents[1])
 
 
 def test_delays_are_settable():

@@ -61,6 +61,22 @@ def bench_vector(venv, k, steps):
     return rate
 
 
+def bench_calls(n=20000):
+    """Cost of crossing the binding without emulation: a memory read, and an observation copy."""
+    env = psxrl.Env(obs="simple")
+    env.reset(1, 1)
+    c = psxrl.Console()
+    t0 = time.perf_counter()
+    for _ in range(n):
+        c.read32(0x80010000)
+    read_us = (time.perf_counter() - t0) / n * 1e6
+    t0 = time.perf_counter()
+    for _ in range(n):
+        env.observation()
+    obs_us = (time.perf_counter() - t0) / n * 1e6
+    return read_us, obs_us
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--moves", type=int, default=300, help="moves per single-environment row")
@@ -74,6 +90,8 @@ def main():
         py_rate, cpp_rate, overhead = bench_env(obs, args.moves)
         print(f"{'':24} {obs:8} {py_rate:15.1f} {cpp_rate:12.1f} {overhead:17.1f}")
     print(f"{'gymnasium.make':24} {'simple':8} {bench_gym('simple', args.moves):15.1f}")
+    read_us, obs_us = bench_calls()
+    print(f"\nbinding calls: Console.read32 {read_us:.2f} us, Env.observation() (simple, a copy) {obs_us:.2f} us")
 
     print(f"\nvector, {k} environments x {steps} steps (moves/s over all environments)")
     sync_env = gym.vector.SyncVectorEnv([lambda: gym.make("psxrl/Tumble-v0") for _ in range(k)],

@@ -10,9 +10,9 @@ APT_PACKAGES=(
   libtorch-dev pybind11-dev liblua5.4-dev lua5.4 zlib1g-dev libtomlplusplus-dev libcli11-dev
   gcc-mipsel-linux-gnu binutils-mipsel-linux-gnu
   clang-16 libfuzzer-16-dev
-  python3 python3-pip python3-venv
+  python3 python3-dev python3-pip python3-venv
 )
-PIP_PACKAGES=(numpy gymnasium pytest)
+PIP_PACKAGES=(numpy gymnasium pytest scikit-build-core)
 
 missing=()
 for p in "${APT_PACKAGES[@]}"; do
@@ -29,7 +29,7 @@ fi
 PY=${PYTHON:-python3}
 pip_missing=()
 for p in "${PIP_PACKAGES[@]}"; do
-  "$PY" -c "import $p" 2>/dev/null || pip_missing+=("$p")
+  "$PY" -c "import ${p//-/_}" 2>/dev/null || pip_missing+=("$p")  # import names use _ for -
 done
 if [ ${#pip_missing[@]} -gt 0 ]; then
   echo "setup: pip installing ${pip_missing[*]}"
@@ -38,3 +38,8 @@ fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build
+# The Python module for `import psxrl` (pyproject.toml: scikit-build-core drives this CMake project
+# in build-pip/, building only the module and Tumble's program). No build isolation: its build
+# requirements are the packages installed above, so no download is needed.
+echo "setup: pip installing the psxrl Python module"
+"$PY" -m pip install -q --no-build-isolation . || "$PY" -m pip install -q --no-build-isolation --break-system-packages .

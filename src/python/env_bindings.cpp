@@ -1,0 +1,257 @@
+// psxrl.Env and psxrl.VecEnv over src/rl (docs/environments.md): keyword arguments mirror
+// EnvConfig, observations are NumPy arrays (a dict of them for multimodal), infos are dicts with
+// the seed's §3.2.7 fields. Env returns copies, since the environment overwrites its buffers at
+// every call; VecEnv returns read-only views of its batch buffers (no copy), which the next
+// reset/step overwrites. Booting, resetting and stepping release the GIL.
+#include <algorithm>
+#include <thread>
+
+#include <pybind11/stl.h>
+
+#include "core/console.h"
+#include "python/bindings.h"
+#include "rl/env.h"
+#include "rl/vec_env.h"
+
+namespace py = pybind11;
+namespace rl = psxrl::rl;
+
+namespace psxrl::python {
+namespace {
+
+using R = py::gil_scoped_release;
+
+std::string path_of(py::handle v) { return py::str(py::module_::import("os").attr("fspath")(v)); }
+
+// EnvConfig from keyword arguments; None keeps a field's default (the integration's value for the
+// optional overrides). An unknown keyword is a TypeError, as for any Python function.
+rl::EnvConfig config_from(const py::kwargs& kw) {
+  rl::EnvConfig c;
+  for (auto [k, v] : kw) {
+    std::string key = py::str(k);
+    if (v.is_none()) continue;
+    if (key == "game") c.game = v.cast<std::string>();
+    else if (key == "games_dir") c.games_dir = path_of(v);
+    else if (key == "build_games_dir") c.build_games_dir = path_of(v);
+    else if (key == "disc") c.files.disc = path_of(v);
+    else if (key == "bios") c.files.bios = path_of(v);
+    else if (key == "states") c.files.states_dir = path_of(v);
+    else if (key == "maps") c.files.maps_dir = path_of(v);
+    else if (key == "obs") c.obs = v.cast<std::string>();
+    else if (key == "visual_gray") c.visual_gray = v.cast<bool>();
+    else if (key == "reward") c.reward = v.cast<std::string>();
+    else if (key == "gamma") c.gamma = v.cast<double>();
+    else if (key == "initial_delay") c.initial_delay = v.cast<std::uint32_t>();
+    else if (key == "delay") c.delay = v.cast<std::uint32_t>();
+    else if (key == "max_move_frames") c.max_move_frames = v.cast<std::uint32_t>();
+    else if (key == "max_moves") c.max_moves = v.cast<std::uint32_t>();
+    else if (key == "sticky") c.sticky = v.cast<double>();
+    else throw py::type_error("unexpected keyword argument '" + key + "'");
+  }
+  return c;
+}
+
+py::dtype dtype_of(rl::DType d) {
+  switch (d) {
+    case rl::DType::U8: return py::dtype::of<std::uint8_t>();
+    case rl::DType::I64: return py::dtype::of<std::int64_t>();
+    case rl::DType::F32: return py::dtype::of<float>();
+  }
+  return py::dtype::of<float>();
+}
+
+// One observation array, `batch` environments deep (0: a single environment's array). Without a
+// base the data is copied; with one the array views it and keeps the base alive.
+py::array part_array(const rl::Space& s, const void* data, int batch, py::handle base) {
+  std::vector<py::ssize_t> shape;
+  if (batch > 0) shape.push_back(batch);
+  for (std::int64_t d : s.shape) shape.push_back(d);
+  std::vector<py::ssize_t> strides = c_strides(shape, rl::dtype_size(s.dtype));
+  if (!base) return py::array(dtype_of(s.dtype), shape, strides, data);
+  return read_only(py::array(dtype_of(s.dtype), shape, strides, data, base));
+}
+
+// A single-array observation is that array; multimodal is a dict by part name.
+py::object observation(const std::vector<rl::Space>& spaces, const std::vector<const void*>& data, int batch,
+                       py::handle base) {
+  if (spaces.size() == 1) return part_array(spaces[0], data[0], batch, base);
+  py::dict d;
+  for (size_t i = 0; i < spaces.size(); ++i) d[py::str(spaces[i].name)] = part_array(spaces[i], data[i], batch, base);
+  return d;
+}
+
+py::object env_observation(const rl::Env& e) {
+  std::vector<const void*> data;
+  for (const rl::ObsPart& p : e.observation()) data.push_back(p.data);
+  return observation(e.observation_spaces(), data, 0, py::handle());
+}
+
+py::object batch_observation(const std::vector<rl::Space>& spaces, const std::vector<std::vector<std::uint8_t>>& buf,
+                             int n, py::handle base) {
+  std::vector<const void*> data;
+  for (const auto& b : buf) data.push_back(b.data());
+  return observation(spaces, data, n, base);
+}
+
+py::dict info_dict(const rl::StepInfo& i) {
+  py::dict d;
+  d["game_frames"] = i.game_frames;
+  d["real_seconds"] = i.real_seconds;
+  d["score"] = i.score;
+  d["time_left"] = i.time_left;
+  d["state"] = i.state;
+  d["level"] = i.level;
+  d["hit_upper_bound"] = i.hit_upper_bound;
+  d["moves"] = i.moves;
+  d["episode_reward"] = i.episode_reward;
+  d["outcome"] = i.outcome;
+  return d;
+}
+
+py::list spaces_list(const std::vector<rl::Space>& spaces) {
+  py::list l;
+  for (const rl::Space& s : spaces) {
+    py::dict d;
+    d["name"] = s.name;
+    d["shape"] = py::tuple(py::cast(s.shape));
+    d["dtype"] = rl::dtype_name(s.dtype);
+    d["low"] = s.low;
+    d["high"] = s.high;
+    l.append(d);
+  }
+  return l;
+}
+
+py::list action_names(const std::vector<rl::Action>& actions) {
+  py::list l;
+  for (const rl::Action& a : actions) l.append(a.name);
+  return l;
+}
+
+py::dict delimiter_dict(const rl::DelimiterSettings& s) {
+  py::dict d;
+  d["initial_delay"] = s.initial_delay;
+  d["delay"] = s.delay;
+  d["max_move_frames"] = s.max_frames;
+  return d;
+}
+
+}  // namespace
+
+void bind_env(py::module_& m) {
+  m.def("episode_seed", &rl::episode_seed, py::arg("seed"), py::arg("env_index"), py::arg("episode"),
+        "The seed VecEnv gives environment `env_index`'s `episode`-th episode (0 = the one reset() starts).");
+
+  py::class_<rl::Env>(m, "Env", "One environment: a console, a Lua state and a game integration.")
+      .def(py::init([](const py::kwargs& kw) {
+        rl::EnvConfig c = config_from(kw);
+        R release;
+        return std::make_unique<rl::Env>(c);
+      }))
+      .def(
+          "reset",
+          [](rl::Env& e, int level, std::uint64_t seed) {
+            rl::StepInfo info;
+            {
+              R release;
+              e.reset(level, seed, &info);
+            }
+            return py::make_tuple(env_observation(e), info_dict(info));
+          },
+          py::arg("level") = 1, py::arg("seed") = 0)
+      .def(
+          "step",
+          [](rl::Env& e, int action) {
+            rl::StepResult r;
+            {
+              R release;
+              r = e.step(action);
+            }
+            return py::make_tuple(env_observation(e), r.reward, r.terminated, r.truncated, info_dict(r.info));
+          },
+          py::arg("action"))
+      .def("observation", &env_observation, "The current observation (a copy).")
+      .def_property_readonly("observation_spaces", [](const rl::Env& e) { return spaces_list(e.observation_spaces()); })
+      .def_property_readonly("obs", [](const rl::Env& e) { return rl::obs_kind_name(e.obs_kind()); })
+      .def_property_readonly("game", [](const rl::Env& e) { return e.game().name; })
+      .def_property_readonly("action_count", &rl::Env::action_count)
+      .def_property_readonly("action_names", [](const rl::Env& e) { return action_names(e.actions()); })
+      .def_property_readonly("level", &rl::Env::level)
+      .def_property_readonly("episode_over", &rl::Env::episode_over)
+      .def("set_delays", &rl::Env::set_delays, py::arg("initial_delay"), py::arg("delay"))
+      .def_property_readonly("delimiter", [](const rl::Env& e) { return delimiter_dict(e.delimiter_settings()); })
+      .def("value", &rl::Env::value, py::arg("variable"), "A named variable of the integration, scaled.")
+      .def(
+          "get_screen",
+          [](rl::Env& e) {
+            psx::Console::Frame f = e.console().frame();
+            py::ssize_t w = f.width, h = f.height;
+            return array_of<std::uint8_t>({h, w, 3}, f.rgb);
+          },
+          "The displayed picture as a [height, width, 3] uint8 array (a copy).");
+
+  py::class_<rl::VecEnv>(m, "VecEnv", "N environments stepped together on a thread pool, with same-step autoreset.")
+      .def(py::init([](int num_envs, unsigned threads, const py::kwargs& kw) {
+             rl::EnvConfig c = config_from(kw);
+             if (threads == 0)
+               threads = std::min<unsigned>(static_cast<unsigned>(std::max(num_envs, 1)),
+                                            std::max(1u, std::thread::hardware_concurrency()));
+             R release;
+             return std::make_unique<rl::VecEnv>(c, num_envs, threads);
+           }),
+           py::arg("num_envs"), py::arg("threads") = 0)
+      .def(
+          "reset",
+          [](py::object self, int level, std::uint64_t seed) {
+            auto& v = self.cast<rl::VecEnv&>();
+            {
+              R release;
+              v.reset(level, seed);
+            }
+            return batch_observation(v.observation_spaces(), v.batch(), v.size(), self);
+          },
+          py::arg("level") = 1, py::arg("seed") = 0)
+      .def(
+          "step",
+          [](py::object self, const py::array_t<int, py::array::c_style | py::array::forcecast>& actions) {
+            auto& v = self.cast<rl::VecEnv&>();
+            std::vector<int> a(actions.data(), actions.data() + actions.size());
+            const rl::VecStep* s;
+            {
+              R release;
+              s = &v.step(a);
+            }
+            py::list infos;
+            for (const rl::StepInfo& i : s->infos) infos.append(info_dict(i));
+            // The flags are 0/1 bytes, which is exactly NumPy's bool layout.
+            auto flags = [](const std::vector<std::uint8_t>& f) {
+              return array_of<bool>({static_cast<py::ssize_t>(f.size())}, reinterpret_cast<const bool*>(f.data()));
+            };
+            return py::make_tuple(batch_observation(v.observation_spaces(), v.batch(), v.size(), self),
+                                  array_of<double>({static_cast<py::ssize_t>(s->rewards.size())}, s->rewards.data()),
+                                  flags(s->terminated), flags(s->truncated), infos);
+          },
+          py::arg("actions"))
+      .def(
+          "observation",
+          [](py::object self) {
+            auto& v = self.cast<rl::VecEnv&>();
+            return batch_observation(v.observation_spaces(), v.batch(), v.size(), self);
+          },
+          "The current batch: read-only views, overwritten by the next reset() or step().")
+      .def(
+          "final_observation",
+          [](py::object self) {
+            auto& v = self.cast<rl::VecEnv&>();
+            return batch_observation(v.observation_spaces(), v.final_batch(), v.size(), self);
+          },
+          "Views of each environment's last observation of its latest finished episode (rows of environments "
+          "whose episode has not ended yet are stale or zero).")
+      .def_property_readonly("num_envs", &rl::VecEnv::size)
+      .def_property_readonly("threads", &rl::VecEnv::threads)
+      .def_property_readonly("observation_spaces",
+                             [](const rl::VecEnv& v) { return spaces_list(v.observation_spaces()); })
+      .def_property_readonly("action_count", &rl::VecEnv::action_count);
+}
+
+}  // namespace psxrl::python

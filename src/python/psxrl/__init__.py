@@ -1,0 +1,60 @@
+"""psxrl: a PlayStation emulator and reinforcement-learning environments, in-process.
+
+``psxrl.Console`` is the emulator (the seed's PSXPY surface, synchronous); ``psxrl.Env`` and
+``psxrl.VecEnv`` are the C++ environments; importing the package registers the Gymnasium ids
+``psxrl/Tumble-v0`` and ``psxrl/Kula-v0`` (when Gymnasium is installed). See docs/python.md.
+"""
+import os as _os
+from pathlib import Path as _Path
+
+from . import _psxrl
+from ._psxrl import BUTTONS, Console, InputError, StateError, WatchEvent, episode_seed
+
+__all__ = ["BUTTONS", "Console", "Env", "InputError", "StateError", "VecEnv", "WatchEvent", "episode_seed", "make_vec"]
+
+# `pip install .` puts the integrations and Tumble's program in psxrl/games; a module imported from
+# the build tree has no such folder and uses the source tree's games/ and build/games, compiled in.
+_PACKAGED_GAMES = _Path(__file__).parent / "games"
+
+
+def _with_games(kwargs):
+    if not _PACKAGED_GAMES.is_dir():
+        return kwargs
+    kwargs = dict(kwargs)
+    if kwargs.get("games_dir") is None and "PSXRL_GAMES" not in _os.environ:
+        kwargs["games_dir"] = str(_PACKAGED_GAMES)
+    if kwargs.get("build_games_dir") is None:
+        kwargs["build_games_dir"] = str(_PACKAGED_GAMES)
+    return kwargs
+
+
+class Env(_psxrl.Env):
+    __doc__ = _psxrl.Env.__doc__
+
+    def __init__(self, **kwargs):
+        super().__init__(**_with_games(kwargs))
+
+
+class VecEnv(_psxrl.VecEnv):
+    __doc__ = _psxrl.VecEnv.__doc__
+
+    def __init__(self, num_envs, threads=0, **kwargs):
+        super().__init__(num_envs, threads, **_with_games(kwargs))
+
+
+def make_vec(id, num_envs, **kwargs):
+    """A Gymnasium vector environment backed by the C++ VecEnv (one console per environment,
+    stepped on a thread pool, same-step autoreset): ``make_vec("psxrl/Tumble-v0", num_envs=8)``."""
+    import gymnasium
+
+    return gymnasium.make_vec(id, num_envs=num_envs, vectorization_mode="vector_entry_point", **kwargs)
+
+
+try:
+    import gymnasium as _gymnasium
+except ImportError:  # the console and the C++ environments work without Gymnasium
+    _gymnasium = None
+if _gymnasium is not None:
+    from .gym_envs import register_envs as _register_envs
+
+    _register_envs()

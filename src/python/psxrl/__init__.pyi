@@ -1,0 +1,14 @@
+"""Type stubs for the psxrl package (docs/python.md)."""
+from typing import Any
+
+import gymnasium
+
+from ._psxrl import (BUTTONS as BUTTONS, Console as Console, InputError as InputError, StateError as StateError,
+                     WatchEvent as WatchEvent, episode_seed as episode_seed)
+from ._psxrl import Env as _Env
+from ._psxrl import VecEnv as _VecEnv
+
+class Env(_Env): ...
+class VecEnv(_VecEnv): ...
+
+def make_vec(id: str, num_envs: int, **kwargs: Any) -> gymnasium.vector.VectorEnv: ...

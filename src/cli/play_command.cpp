@@ -44,13 +44,16 @@ LoadedPolicy load_policy(const PlayOptions& p, const rl::UserFiles& files) {
   if (!p.obs.empty()) env.obs = p.obs;
   env.files = files;
   env.max_moves = p.max_moves;
+  // Another game or observation is refused before booting anything (the game may not even be
+  // installed); the integration version and network are checked once the environment exists.
+  std::string why = agents::policy_mismatch(c.meta, env.game, env.obs, c.meta["integration_hash"], c.meta["network"]);
+  if (!why.empty()) throw std::invalid_argument("cannot use the policy in " + path + ": " + why);
   LoadedPolicy l;
   l.env = std::make_unique<rl::Env>(env);
   size_t inputs = 0;
   for (const rl::Space& s : l.env->observation_spaces()) inputs += s.elements();
   l.agent = agents::make_agent(tc.agent, l.env->obs_kind(), static_cast<int>(inputs), l.env->action_count(), tc.options);
-  std::string why = agents::policy_mismatch(c.meta, env.game, env.obs, agents::integration_hash(l.env->game()),
-                                            l.agent->network());
+  why = agents::policy_mismatch(c.meta, env.game, env.obs, agents::integration_hash(l.env->game()), l.agent->network());
   if (!why.empty()) throw std::invalid_argument("cannot use the policy in " + path + ": " + why);
   agents::ByteReader r(c.agent, path + " (agent)");
   l.agent->load(r);

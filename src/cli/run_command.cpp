@@ -76,6 +76,45 @@ void run_scripted(psx::Console& console, unsigned long long frames, const std::v
   }
 }
 
+// psxrl run's options as given on the command line, before they are checked.
+struct RunArgs {
+  std::string exe, bios, disc, screenshot, vram_png, wav, input_path;
+  std::string frames_text = "3600", cycles_text, pad_text[2] = {"digital", "none"};
+  std::string memcards[2];
+  std::vector<std::pair<std::string, std::string>> shot_args;
+  bool expect_exit = false, quiet = false, realtime = false;
+
+  void add_to(CLI::App& app) {
+    app.add_option("--exe", exe, "PS-X EXE to run")->type_name("FILE");
+    app.add_option("--disc", disc, "disc image (.cue, .iso or a raw .bin) to insert; without --exe it is booted\n"
+                                   "(with --bios by the BIOS itself from reset, as on the console)")->type_name("FILE");
+    app.add_option("--bios", bios, "BIOS image (exactly 512 KiB); without it the HLE kernel is used")->type_name("FILE");
+    app.add_option("--frames", frames_text, "stop after N frames (default 3600)")->type_name("N");
+    app.add_option("--cycles", cycles_text, "stop after N CPU cycles (instead of --frames)")->type_name("N");
+    app.add_flag("--expect-exit", expect_exit, "reaching the limit is a failure (exit 3): the program must exit itself");
+    app.add_flag("--quiet", quiet, "no summary or diagnostics on standard error");
+    app.add_flag("--realtime", realtime, "run no faster than the console (59.94 frames per second), to watch");
+    app.add_option("--pad1", pad_text[0], "controller in port 1: digital (default), dualshock or none")->type_name("TYPE");
+    app.add_option("--pad2", pad_text[1], "controller in port 2: none (default), digital or dualshock")->type_name("TYPE");
+    app.add_option("--memcard1", memcards[0], "memory card in slot 1 (raw 128 KiB image; created on the first write)")
+        ->type_name("FILE");
+    app.add_option("--memcard2", memcards[1], "memory card in slot 2")->type_name("FILE");
+    app.add_option("--screenshot", screenshot, "write the displayed picture as PNG at the end of the run")->type_name("FILE");
+    app.add_option("--vram", vram_png, "write all of VRAM (1024x512) as PNG at the end of the run")->type_name("FILE");
+    app.add_option("--wav", wav, "write the whole run's audio (stereo 16-bit, 44.1 kHz) to FILE")->type_name("FILE");
+    app.add_option("--input", input_path,
+                   "press port 1's buttons from a script: one line per press, FRAME BUTTONS [HOLD_FRAMES],\n"
+                   "frames counted from 0, BUTTONS joined by '+' from up down left right cross circle\n"
+                   "square triangle l1 l2 r1 r2 start select l3 r3, HOLD_FRAMES default 1, '#' comments")
+        ->type_name("FILE");
+    app.add_option("--screenshot-at", shot_args,
+                   "write the displayed picture as PNG when frame FRAME (counted from 0) ends;\n"
+                   "repeatable; needs --frames above FRAME")
+        ->type_name("FRAME FILE")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  }
+};
+
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
@@ -83,49 +122,22 @@ int run_command(const std::vector<std::string>& args) {
                "0x1F802080, DUART 0x1F802023, BIOS putchar).",
                "psxrl run"};
   setup_app(app, kRunFooter);
-  std::string exe, bios, disc, screenshot, vram_png, wav, input_path;
-  std::string frames_text = "3600", cycles_text, pad_text[2] = {"digital", "none"};
-  std::string memcards[2];
-  std::vector<std::pair<std::string, std::string>> shot_args;
-  bool expect_exit = false, quiet = false, realtime = false;
-  app.add_option("--exe", exe, "PS-X EXE to run")->type_name("FILE");
-  app.add_option("--disc", disc, "disc image (.cue, .iso or a raw .bin) to insert; without --exe it is booted\n"
-                                 "(with --bios by the BIOS itself from reset, as on the console)")->type_name("FILE");
-  app.add_option("--bios", bios, "BIOS image (exactly 512 KiB); without it the HLE kernel is used")->type_name("FILE");
-  app.add_option("--frames", frames_text, "stop after N frames (default 3600)")->type_name("N");
-  app.add_option("--cycles", cycles_text, "stop after N CPU cycles (instead of --frames)")->type_name("N");
-  app.add_flag("--expect-exit", expect_exit, "reaching the limit is a failure (exit 3): the program must exit itself");
-  app.add_flag("--quiet", quiet, "no summary or diagnostics on standard error");
-  app.add_flag("--realtime", realtime, "run no faster than the console (59.94 frames per second), to watch");
-  app.add_option("--pad1", pad_text[0], "controller in port 1: digital (default), dualshock or none")->type_name("TYPE");
-  app.add_option("--pad2", pad_text[1], "controller in port 2: none (default), digital or dualshock")->type_name("TYPE");
-  app.add_option("--memcard1", memcards[0], "memory card in slot 1 (raw 128 KiB image; created on the first write)")
-      ->type_name("FILE");
-  app.add_option("--memcard2", memcards[1], "memory card in slot 2")->type_name("FILE");
-  app.add_option("--screenshot", screenshot, "write the displayed picture as PNG at the end of the run")->type_name("FILE");
-  app.add_option("--vram", vram_png, "write all of VRAM (1024x512) as PNG at the end of the run")->type_name("FILE");
-  app.add_option("--wav", wav, "write the whole run's audio (stereo 16-bit, 44.1 kHz) to FILE")->type_name("FILE");
-  app.add_option("--input", input_path,
-                 "press port 1's buttons from a script: one line per press, FRAME BUTTONS [HOLD_FRAMES],\n"
-                 "frames counted from 0, BUTTONS joined by '+' from up down left right cross circle\n"
-                 "square triangle l1 l2 r1 r2 start select l3 r3, HOLD_FRAMES default 1, '#' comments")
-      ->type_name("FILE");
-  app.add_option("--screenshot-at", shot_args,
-                 "write the displayed picture as PNG when frame FRAME (counted from 0) ends;\n"
-                 "repeatable; needs --frames above FRAME")
-      ->type_name("FRAME FILE")
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  RunArgs a;
+  a.add_to(app);
   if (auto code = parse_args(app, args, kRunNeeds)) return *code;
+  const std::string &exe = a.exe, &bios = a.bios, &disc = a.disc, &screenshot = a.screenshot, &vram_png = a.vram_png,
+                    &wav = a.wav, &input_path = a.input_path;
+  const bool expect_exit = a.expect_exit, quiet = a.quiet, realtime = a.realtime;
 
   unsigned long long frames = 3600, cycles = 0;
-  if (!parse_count(frames_text, frames)) return usage_error(app, "--frames needs a whole number");
-  if (!cycles_text.empty() && (!parse_count(cycles_text, cycles) || cycles == 0))
+  if (!parse_count(a.frames_text, frames)) return usage_error(app, "--frames needs a whole number");
+  if (!a.cycles_text.empty() && (!parse_count(a.cycles_text, cycles) || cycles == 0))
     return usage_error(app, "--cycles needs a positive whole number");
   psx::Console::PadType pads[2];
   for (int i = 0; i < 2; ++i)
-    if (!parse_pad(pad_text[i], pads[i])) return usage_error(app, "--pad" + std::to_string(i + 1) + " needs " + kRunNeeds.at("--pad1"));
+    if (!parse_pad(a.pad_text[i], pads[i])) return usage_error(app, "--pad" + std::to_string(i + 1) + " needs " + kRunNeeds.at("--pad1"));
   std::vector<ScreenshotAt> shots;
-  for (const auto& [frame, path] : shot_args) {
+  for (const auto& [frame, path] : a.shot_args) {
     ScreenshotAt shot{0, path};
     if (!parse_count(frame, shot.frame)) return usage_error(app, "--screenshot-at needs a frame number and a file");
     shots.push_back(shot);
@@ -157,7 +169,7 @@ int run_command(const std::vector<std::string>& args) {
     else console.boot_bios();
     for (int port = 1; port <= 2; ++port) {
       console.plug_pad(port, pads[port - 1]);
-      if (!memcards[port - 1].empty()) console.insert_memory_card(port, memcards[port - 1]);
+      if (!a.memcards[port - 1].empty()) console.insert_memory_card(port, a.memcards[port - 1]);
     }
   } catch (const psx::InputError& e) {
     std::fprintf(stderr, "psxrl run: %s\n", e.what());

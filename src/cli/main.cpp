@@ -12,11 +12,14 @@ const char* kHelp =
     "\n"
     "commands:\n"
     "  run     run PlayStation software headless (see psxrl run --help)\n"
+    "  train   train an agent on a game level (see psxrl train --help)\n"
+    "  play    play a level with a saved policy, printing each episode's score (see psxrl play --help)\n"
     "\n"
     "exit codes:\n"
     "  0  success\n"
     "  1  usage error\n"
-    "  2  bad input file (disc, cue, EXE, BIOS, save state, memory card, manifest, script)\n"
+    "  2  bad input file (disc, cue, EXE, BIOS, save state, memory card, manifest, script,\n"
+    "     checkpoint or policy), unknown game, level, agent or observation, unwritable output\n"
     "  3  the emulated program failed or timed out\n"
     "  psxrl run also exits with the code a program writes to the debug port 0x1F802082\n";
 
@@ -31,6 +34,8 @@ int main(int argc, char** argv) {
   std::string cmd = args[0];
   args.erase(args.begin());
   if (cmd == "run") return psxrl::cli::run_command(args);
+  if (cmd == "train") return psxrl::cli::train_command(args);
+  if (cmd == "play") return psxrl::cli::play_command(args);
   std::fprintf(stderr, "psxrl: unknown command '%s'\n\n%s", cmd.c_str(), kHelp);
   return psxrl::cli::kUsage;
 }

@@ -4,12 +4,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "cli/cli.h"
 #include "cli/input_script.h"
+#include "cli/options.h"
 #include "cli/pacer.h"
 #include "core/console.h"
 
@@ -17,40 +19,8 @@ namespace psxrl::cli {
 
 namespace {
 
-const char* kRunHelp =
-    "usage: psxrl run --exe FILE | --disc FILE [--bios FILE] [--frames N | --cycles N] [--expect-exit] [--quiet]\n"
-    "                 [--pad1 TYPE] [--pad2 TYPE] [--memcard1 FILE] [--memcard2 FILE]\n"
-    "                 [--screenshot FILE] [--vram FILE] [--wav FILE]\n"
-    "                 [--input FILE] [--screenshot-at FRAME FILE]... [--realtime]\n"
-    "       psxrl run --bios FILE [the same options]   (the BIOS alone: no EXE, no disc)\n"
-    "\n"
-    "Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
-    "0x1F802080, DUART 0x1F802023, BIOS putchar).\n"
-    "\n"
-    "options:\n"
-    "  --exe FILE       PS-X EXE to run\n"
-    "  --disc FILE      disc image (.cue, .iso or a raw .bin) to insert; without --exe it is booted\n"
-    "                   (with --bios by the BIOS itself from reset, as on the console)\n"
-    "  --bios FILE      BIOS image (exactly 512 KiB); without it the HLE kernel is used; alone,\n"
-    "                   the BIOS starts from reset with no disc (its shell)\n"
-    "  --frames N       stop after N frames (default 3600)\n"
-    "  --cycles N       stop after N CPU cycles (instead of --frames)\n"
-    "  --expect-exit    reaching the limit is a failure (exit 3): the program must exit itself\n"
-    "  --quiet          no summary or diagnostics on standard error\n"
-    "  --realtime       run no faster than the console (59.94 frames per second), to watch\n"
-    "  --pad1 TYPE      controller in port 1: digital (default), dualshock or none\n"
-    "  --pad2 TYPE      controller in port 2: none (default), digital or dualshock\n"
-    "  --memcard1 FILE  memory card in slot 1 (raw 128 KiB image; created on the first write)\n"
-    "  --memcard2 FILE  memory card in slot 2\n"
-    "  --screenshot FILE  write the displayed picture as PNG at the end of the run\n"
-    "  --vram FILE      write all of VRAM (1024x512) as PNG at the end of the run\n"
-    "  --wav FILE       write the whole run's audio (stereo 16-bit, 44.1 kHz) to FILE\n"
-    "  --input FILE     press port 1's buttons from a script: one line per press,\n"
-    "                   FRAME BUTTONS [HOLD_FRAMES], frames counted from 0, BUTTONS joined\n"
-    "                   by '+' from up down left right cross circle square triangle l1 l2\n"
-    "                   r1 r2 start select l3 r3, HOLD_FRAMES default 1, '#' comments\n"
-    "  --screenshot-at FRAME FILE  write the displayed picture as PNG when frame FRAME\n"
-    "                   (counted from 0) ends; repeatable; needs --frames above FRAME\n"
+const char* kRunFooter =
+    "With --bios and no --exe or --disc, the BIOS starts from reset with no disc (its shell).\n"
     "\n"
     "exit codes:\n"
     "  the program's own exit code (written to 0x1F802082; values above 255 exit as 255)\n"
@@ -59,10 +29,13 @@ const char* kRunHelp =
     "  2  bad input file\n"
     "  3  the program failed (fatal guest error) or timed out under --expect-exit\n";
 
-int usage(const std::string& msg) {
-  std::fprintf(stderr, "psxrl run: %s\n\n%s", msg.c_str(), kRunHelp);
-  return kUsage;
-}
+// What each option's value must be, for the message when it is missing.
+const std::map<std::string, std::string> kRunNeeds = {
+    {"--exe", "a file"}, {"--disc", "a file"}, {"--bios", "a file"}, {"--frames", "a whole number"},
+    {"--cycles", "a positive whole number"}, {"--screenshot", "a file"}, {"--vram", "a file"},
+    {"--wav", "a file"}, {"--input", "a file"}, {"--screenshot-at", "a frame number and a file"},
+    {"--pad1", "digital, dualshock or none"}, {"--pad2", "digital, dualshock or none"},
+    {"--memcard1", "a file"}, {"--memcard2", "a file"}};
 
 bool parse_count(const std::string& s, unsigned long long& out) {
   if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos) return false;
@@ -103,65 +76,73 @@ void run_scripted(psx::Console& console, unsigned long long frames, const std::v
   }
 }
 
+// psxrl run's options as given on the command line, before they are checked.
+struct RunArgs {
+  std::string exe, bios, disc, screenshot, vram_png, wav, input_path;
+  std::string frames_text = "3600", cycles_text, pad_text[2] = {"digital", "none"};
+  std::string memcards[2];
+  std::vector<std::pair<std::string, std::string>> shot_args;
+  bool expect_exit = false, quiet = false, realtime = false;
+
+  void add_to(CLI::App& app) {
+    app.add_option("--exe", exe, "PS-X EXE to run")->type_name("FILE");
+    app.add_option("--disc", disc, "disc image (.cue, .iso or a raw .bin) to insert; without --exe it is booted\n"
+                                   "(with --bios by the BIOS itself from reset, as on the console)")->type_name("FILE");
+    app.add_option("--bios", bios, "BIOS image (exactly 512 KiB); without it the HLE kernel is used")->type_name("FILE");
+    app.add_option("--frames", frames_text, "stop after N frames (default 3600)")->type_name("N");
+    app.add_option("--cycles", cycles_text, "stop after N CPU cycles (instead of --frames)")->type_name("N");
+    app.add_flag("--expect-exit", expect_exit, "reaching the limit is a failure (exit 3): the program must exit itself");
+    app.add_flag("--quiet", quiet, "no summary or diagnostics on standard error");
+    app.add_flag("--realtime", realtime, "run no faster than the console (59.94 frames per second), to watch");
+    app.add_option("--pad1", pad_text[0], "controller in port 1: digital (default), dualshock or none")->type_name("TYPE");
+    app.add_option("--pad2", pad_text[1], "controller in port 2: none (default), digital or dualshock")->type_name("TYPE");
+    app.add_option("--memcard1", memcards[0], "memory card in slot 1 (raw 128 KiB image; created on the first write)")
+        ->type_name("FILE");
+    app.add_option("--memcard2", memcards[1], "memory card in slot 2")->type_name("FILE");
+    app.add_option("--screenshot", screenshot, "write the displayed picture as PNG at the end of the run")->type_name("FILE");
+    app.add_option("--vram", vram_png, "write all of VRAM (1024x512) as PNG at the end of the run")->type_name("FILE");
+    app.add_option("--wav", wav, "write the whole run's audio (stereo 16-bit, 44.1 kHz) to FILE")->type_name("FILE");
+    app.add_option("--input", input_path,
+                   "press port 1's buttons from a script: one line per press, FRAME BUTTONS [HOLD_FRAMES],\n"
+                   "frames counted from 0, BUTTONS joined by '+' from up down left right cross circle\n"
+                   "square triangle l1 l2 r1 r2 start select l3 r3, HOLD_FRAMES default 1, '#' comments")
+        ->type_name("FILE");
+    app.add_option("--screenshot-at", shot_args,
+                   "write the displayed picture as PNG when frame FRAME (counted from 0) ends;\n"
+                   "repeatable; needs --frames above FRAME")
+        ->type_name("FRAME FILE")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  }
+};
+
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
-  std::string exe, bios, disc, screenshot, vram_png, wav;
+  CLI::App app{"Runs a PlayStation program headless and prints what it writes to the TTY (debug port\n"
+               "0x1F802080, DUART 0x1F802023, BIOS putchar).",
+               "psxrl run"};
+  setup_app(app, kRunFooter);
+  RunArgs a;
+  a.add_to(app);
+  if (auto code = parse_args(app, args, kRunNeeds)) return *code;
+  const std::string &exe = a.exe, &bios = a.bios, &disc = a.disc, &screenshot = a.screenshot, &vram_png = a.vram_png,
+                    &wav = a.wav, &input_path = a.input_path;
+  const bool expect_exit = a.expect_exit, quiet = a.quiet, realtime = a.realtime;
+
   unsigned long long frames = 3600, cycles = 0;
-  bool expect_exit = false, quiet = false, realtime = false;
-  psx::Console::PadType pads[2] = {psx::Console::PadType::Digital, psx::Console::PadType::None};
-  std::string memcards[2];
-  std::string input_path;
+  if (!parse_count(a.frames_text, frames)) return usage_error(app, "--frames needs a whole number");
+  if (!a.cycles_text.empty() && (!parse_count(a.cycles_text, cycles) || cycles == 0))
+    return usage_error(app, "--cycles needs a positive whole number");
+  psx::Console::PadType pads[2];
+  for (int i = 0; i < 2; ++i)
+    if (!parse_pad(a.pad_text[i], pads[i])) return usage_error(app, "--pad" + std::to_string(i + 1) + " needs " + kRunNeeds.at("--pad1"));
   std::vector<ScreenshotAt> shots;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= args.size()) return false;
-      out = args[++i];
-      return true;
-    };
-    std::string v;
-    if (a == "--help" || a == "-h") {
-      std::fputs(kRunHelp, stdout);
-      return kSuccess;
-    } else if (a == "--exe") {
-      if (!value(exe)) return usage("--exe needs a file");
-    } else if (a == "--disc") {
-      if (!value(disc)) return usage("--disc needs a file");
-    } else if (a == "--bios") {
-      if (!value(bios)) return usage("--bios needs a file");
-    } else if (a == "--frames") {
-      if (!value(v) || !parse_count(v, frames)) return usage("--frames needs a whole number");
-    } else if (a == "--cycles") {
-      if (!value(v) || !parse_count(v, cycles) || cycles == 0) return usage("--cycles needs a positive whole number");
-    } else if (a == "--screenshot") {
-      if (!value(screenshot)) return usage("--screenshot needs a file");
-    } else if (a == "--vram") {
-      if (!value(vram_png)) return usage("--vram needs a file");
-    } else if (a == "--wav") {
-      if (!value(wav)) return usage("--wav needs a file");
-    } else if (a == "--input") {
-      if (!value(input_path)) return usage("--input needs a file");
-    } else if (a == "--screenshot-at") {
-      ScreenshotAt shot;
-      if (!value(v) || !parse_count(v, shot.frame) || !value(shot.path))
-        return usage("--screenshot-at needs a frame number and a file");
-      shots.push_back(shot);
-    } else if (a == "--expect-exit") {
-      expect_exit = true;
-    } else if (a == "--quiet") {
-      quiet = true;
-    } else if (a == "--realtime") {
-      realtime = true;
-    } else if (a == "--pad1" || a == "--pad2") {
-      if (!value(v) || !parse_pad(v, pads[a[5] - '1']))
-        return usage(a + " needs digital, dualshock or none");
-    } else if (a == "--memcard1" || a == "--memcard2") {
-      if (!value(memcards[a[9] - '1'])) return usage(a + " needs a file");
-    } else {
-      return usage("unknown option '" + a + "'");
-    }
+  for (const auto& [frame, path] : a.shot_args) {
+    ScreenshotAt shot{0, path};
+    if (!parse_count(frame, shot.frame)) return usage_error(app, "--screenshot-at needs a frame number and a file");
+    shots.push_back(shot);
   }
+  auto usage = [&](const std::string& msg) { return usage_error(app, msg); };
   if (exe.empty() && disc.empty() && bios.empty())
     return usage("--exe is required (or --disc to boot a disc, or --bios to start the BIOS alone)");
   const bool scripted = !input_path.empty() || !shots.empty() || realtime;
@@ -188,7 +169,7 @@ int run_command(const std::vector<std::string>& args) {
     else console.boot_bios();
     for (int port = 1; port <= 2; ++port) {
       console.plug_pad(port, pads[port - 1]);
-      if (!memcards[port - 1].empty()) console.insert_memory_card(port, memcards[port - 1]);
+      if (!a.memcards[port - 1].empty()) console.insert_memory_card(port, a.memcards[port - 1]);
     }
   } catch (const psx::InputError& e) {
     std::fprintf(stderr, "psxrl run: %s\n", e.what());

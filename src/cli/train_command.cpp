@@ -1,0 +1,142 @@
+// `psxrl train`: trains an agent on a game level (seed §4.2.1) with a live progress line, writing
+// a run folder (config.json, metrics.csv, metrics.jsonl, learning_curve.png, checkpoint.psxrl).
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/cli.h"
+#include "cli/game_options.h"
+#include "cli/options.h"
+#include "core/input_error.h"
+#include "rl/agents/trainer.h"
+
+namespace psxrl::cli {
+
+namespace {
+
+std::string duration(double seconds) {
+  auto s = static_cast<long long>(seconds);
+  char buf[32];
+  if (s >= 3600) std::snprintf(buf, sizeof buf, "%lldh%02lldm", s / 3600, s / 60 % 60);
+  else std::snprintf(buf, sizeof buf, "%lldm%02llds", s / 60, s % 60);
+  return buf;
+}
+
+std::string score(const std::optional<std::int64_t>& v) { return v ? std::to_string(*v) : "-"; }
+
+// The progress line: redrawn in place on a terminal at most 4 times a second, else one line per
+// finished episode.
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool quiet) : quiet_(quiet), tty_(isatty(2) != 0) {}
+  void operator()(const agents::TrainStatus& s) {
+    if (quiet_ || (!tty_ && !s.episode_end)) return;
+    auto now = std::chrono::steady_clock::now();
+    if (tty_ && !s.episode_end && now - last_ < std::chrono::milliseconds(250)) return;
+    last_ = now;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "episode %llu/%llu  moves %llu  train %s  test %s  best %s  eps %.3f  %.1f moves/s  ETA %s",
+                  static_cast<unsigned long long>(s.episode), static_cast<unsigned long long>(s.episodes),
+                  static_cast<unsigned long long>(s.moves), score(s.last_train).c_str(), score(s.last_test).c_str(),
+                  score(s.best_test).c_str(), s.epsilon, s.moves_per_second, duration(s.eta_seconds).c_str());
+    std::fprintf(stderr, tty_ ? "\r%-110s" : "%s\n", line);
+  }
+  void finish() {
+    if (!quiet_ && tty_) std::fputc('\n', stderr);
+  }
+
+ private:
+  bool quiet_, tty_;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs) {
+  agents::AgentOptions& o = c.options;
+  app.add_option("--game", c.env.game, "game integration (default tumble)")->type_name("NAME");
+  app.add_option("--level", c.level, "level to train on (default 1)")->type_name("N");
+  app.add_option("--agent", c.agent, "random, q (tabular Q-learning) or dqn (default)")->type_name("NAME");
+  app.add_option("--obs", obs, "observation: simple (q, random), local (dqn), episode, audio")->type_name("NAME");
+  app.add_option("--episodes", c.episodes, "episodes in all, test episodes included (default 1000)")->type_name("N");
+  app.add_option("--gamma", c.env.gamma, "discount; rewards are in units of 1 - gamma (default 0.9)")->type_name("G");
+  app.add_option("--seed", c.seed, "seed of the agent, exploration and episodes (default 0)")->type_name("S");
+  app.add_option("--out", c.out, "run folder (default runs/GAME-lLEVEL-AGENT-OBS-sSEED)")->type_name("DIR");
+  app.add_flag("--resume", c.resume, "continue the run in --out from its checkpoint (same options)");
+  app.add_option("--max-moves", c.env.max_moves, "move cap per episode (default: the game's)")->type_name("N");
+  app.add_option("--test-every", c.test_every, "every Nth episode is a greedy test (default 10: 9 train, 1 test)")
+      ->type_name("N");
+  app.add_option("--stop-score", c.stop_score, "stop after a test episode scoring at least S")->type_name("S");
+  app.add_option("--alpha", o.alpha, "q: learning rate of the table (default 0.5)")->type_name("A");
+  app.add_option("--lr", o.lr, "dqn: Adam learning rate (default 0.0025)")->type_name("LR");
+  app.add_option("--hidden", o.hidden, "dqn: width of the 4 hidden layers (default 32)")->type_name("N");
+  app.add_option("--epsilon-moves", o.epsilon_moves, "training moves over which epsilon falls 1.0 -> 0.1 (default 10000)")
+      ->type_name("N");
+  app.add_flag("--linear-output", o.linear_output, "dqn: linear output layer instead of tanh");
+  app.add_flag("--target-network", o.target_network, "dqn: bootstrap from a target network");
+  app.add_option("--target-sync", o.target_sync, "dqn: moves between target network syncs (default 500)")->type_name("N");
+  app.add_flag("--double-dqn", o.double_dqn, "dqn: Double DQN targets (implies --target-network)");
+  app.add_option("--reward", c.env.reward, "table (seed Table 3.3, default), score or script")->type_name("KIND");
+  add_user_file_options(app, c.env.files);
+}
+
+void print_summary(const agents::Trainer& t, const agents::TrainConfig& c, double seconds) {
+  std::optional<std::int64_t> best;
+  std::uint64_t best_at = 0;
+  for (const agents::EpisodeRecord& r : t.records())
+    if (r.test && (!best || r.score > *best)) best = r.score, best_at = r.episode;
+  std::printf("trained %zu episodes (%llu training moves) in %.1f s; best test score %s", t.records().size(),
+              static_cast<unsigned long long>(t.agent().moves()), seconds, score(best).c_str());
+  if (best) std::printf(" (first at episode %llu)", static_cast<unsigned long long>(best_at));
+  if (auto w = t.first_win()) std::printf("; first test win at episode %llu", static_cast<unsigned long long>(*w));
+  std::printf("\nrun folder: %s\n", c.out.c_str());
+}
+
+}  // namespace
+
+int train_command(const std::vector<std::string>& args) {
+  CLI::App app{"Trains an agent on a game level: nine epsilon-greedy training episodes, then one greedy\n"
+               "test episode (seed 4.2.1). Writes config.json, metrics.csv, metrics.jsonl,\n"
+               "learning_curve.png and checkpoint.psxrl (after every episode) to the run folder.",
+               "psxrl train"};
+  setup_app(app, kAgentExitCodes);
+  agents::TrainConfig c;
+  std::string obs;
+  bool quiet = false;
+  add_train_options(app, c, obs);
+  app.add_flag("--quiet", quiet, "no progress line");
+  if (auto code = parse_args(app, args)) return *code;
+  c.env.obs = obs.empty() ? agents::default_obs(c.agent) : obs;
+  if (c.out.empty())
+    c.out = "runs/" + c.env.game + "-l" + std::to_string(c.level) + "-" + c.agent + "-" + c.env.obs + "-s" +
+            std::to_string(c.seed);
+
+  std::unique_ptr<agents::Trainer> trainer;
+  try {
+    trainer = std::make_unique<agents::Trainer>(c);
+  } catch (const std::exception& e) {  // names, levels, game files, checkpoints, the run folder
+    std::fprintf(stderr, "psxrl train: %s\n", e.what());
+    return kBadInput;
+  }
+  ProgressLine progress(quiet);
+  auto start = std::chrono::steady_clock::now();
+  try {
+    trainer->run([&](const agents::TrainStatus& s) { progress(s); });
+  } catch (const psx::InputError& e) {
+    progress.finish();
+    std::fprintf(stderr, "psxrl train: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::exception& e) {
+    progress.finish();
+    std::fprintf(stderr, "psxrl train: %s (the last checkpoint in %s is intact)\n", e.what(), c.out.c_str());
+    return kProgramFailed;
+  }
+  progress.finish();
+  print_summary(*trainer, c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return kSuccess;
+}
+
+}  // namespace psxrl::cli

@@ -1,0 +1,99 @@
+// The agent interface's shared parts, the random agent and tabular Q-learning (seed §3.3.3).
+#include "rl/agents/agent.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "rl/agents/dqn_agent.h"
+#include "rl/agents/q_agent.h"
+
+namespace psxrl::agents {
+
+double linear_epsilon(std::uint64_t moves, double start, double end, std::uint64_t over) {
+  if (over == 0 || moves >= over) return end;
+  return start + (end - start) * static_cast<double>(moves) / static_cast<double>(over);
+}
+
+std::vector<float> features(const rl::Observation& obs) {
+  std::vector<float> out;
+  for (const rl::ObsPart& part : obs) {
+    size_t n = part.space->elements();
+    switch (part.space->dtype) {
+      case rl::DType::F32: {
+        const float* p = static_cast<const float*>(part.data);
+        out.insert(out.end(), p, p + n);
+        break;
+      }
+      case rl::DType::I64: {
+        const std::int64_t* p = static_cast<const std::int64_t*>(part.data);
+        for (size_t i = 0; i < n; ++i) out.push_back(static_cast<float>(p[i]));
+        break;
+      }
+      case rl::DType::U8: {
+        const std::uint8_t* p = static_cast<const std::uint8_t*>(part.data);
+        for (size_t i = 0; i < n; ++i) out.push_back(static_cast<float>(p[i]));
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+double Agent::epsilon() const {
+  return linear_epsilon(moves_, options_.epsilon_start, options_.epsilon_end, options_.epsilon_moves);
+}
+
+void Agent::save(ByteWriter& w) const {
+  w.u64(rng_.state());
+  w.u64(moves_);
+  save_state(w);
+}
+
+void Agent::load(ByteReader& r) {
+  rng_.set_state(r.u64());
+  moves_ = r.u64();
+  load_state(r);
+}
+
+namespace {
+
+// Uniformly random moves: the baseline every learner must beat (seed Fig. 4.6).
+class RandomAgent : public Agent {
+ public:
+  using Agent::Agent;
+  std::string name() const override { return "random"; }
+  std::string network() const override { return "none, " + std::to_string(actions_) + " actions"; }
+  int act(const std::vector<float>&, bool) override { return random_action(); }
+  void observe(const Transition&) override { ++moves_; }
+  double epsilon() const override { return 1.0; }
+
+ protected:
+  void save_state(ByteWriter&) const override {}
+  void load_state(ByteReader&) override {}
+};
+
+}  // namespace
+
+std::string default_obs(const std::string& agent) { return agent == "dqn" ? "local" : "simple"; }
+
+std::unique_ptr<Agent> make_agent(const std::string& name, rl::ObsKind obs, int inputs, int actions,
+                                  const AgentOptions& options) {
+  if (name == "random") return std::make_unique<RandomAgent>(options, actions);
+  if (name == "q") {
+    if (obs != rl::ObsKind::Simple)
+      throw std::invalid_argument("agent 'q' learns a table over the 'simple' observation, not '" +
+                                  std::string(rl::obs_kind_name(obs)) + "'");
+    return std::make_unique<QAgent>(options, actions);
+  }
+  if (name == "dqn") {
+    if (obs == rl::ObsKind::Visual || obs == rl::ObsKind::Multimodal || obs == rl::ObsKind::Ram)
+      throw std::invalid_argument("agent 'dqn' has the seed's fully connected network only: use --obs local, "
+                                  "episode, audio or simple (the multimodal network is not built yet)");
+    return make_dqn_agent(inputs, actions, options);
+  }
+  throw std::invalid_argument("unknown agent '" + name + "' (expected " + kAgentList + ")");
+}
+
+}  // namespace psxrl::agents

@@ -1,0 +1,298 @@
+// The training loop, run folder and resumption (see trainer.h).
+#include "rl/agents/trainer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "core/atomic_file.h"
+#include "rl/agents/learning_curve.h"
+#include "rl/vec_env.h"
+
+namespace psxrl::agents {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string flag(bool b) { return b ? "true" : "false"; }
+
+const char* kCsvHeader = "episode,kind,score,reward,moves,frames,outcome,epsilon,loss,total_moves,seconds\n";
+
+std::string csv_row(const EpisodeRecord& r) {
+  return std::to_string(r.episode) + "," + (r.test ? "test" : "train") + "," + std::to_string(r.score) + "," +
+         format_double(r.reward) + "," + std::to_string(r.moves) + "," + std::to_string(r.frames) + "," + r.outcome +
+         "," + format_double(r.epsilon) + "," + format_double(r.loss) + "," + std::to_string(r.total_moves) + "," +
+         format_double(r.seconds) + "\n";
+}
+
+std::string json_row(const EpisodeRecord& r) {
+  return "{\"episode\":" + std::to_string(r.episode) + ",\"kind\":\"" + (r.test ? "test" : "train") +
+         "\",\"score\":" + std::to_string(r.score) + ",\"reward\":" + format_double(r.reward) +
+         ",\"moves\":" + std::to_string(r.moves) + ",\"frames\":" + std::to_string(r.frames) + ",\"outcome\":\"" +
+         r.outcome + "\",\"epsilon\":" + format_double(r.epsilon) + ",\"loss\":" + format_double(r.loss) +
+         ",\"total_moves\":" + std::to_string(r.total_moves) + ",\"seconds\":" + format_double(r.seconds) + "}\n";
+}
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+  psx::write_file_atomically(path, std::vector<psx::u8>(text.begin(), text.end()));
+}
+
+void save_record(ByteWriter& w, const EpisodeRecord& r) {
+  w.u64(r.episode);
+  w.u64(r.test);
+  w.i64(r.score);
+  w.f64(r.reward);
+  w.u64(r.moves);
+  w.u64(r.frames);
+  w.str(r.outcome);
+  w.f64(r.epsilon);
+  w.f64(r.loss);
+  w.u64(r.total_moves);
+  w.f64(r.seconds);
+}
+
+EpisodeRecord load_record(ByteReader& r) {
+  EpisodeRecord e;
+  e.episode = r.u64();
+  e.test = r.u64() != 0;
+  e.score = r.i64();
+  e.reward = r.f64();
+  e.moves = static_cast<std::uint32_t>(r.u64());
+  e.frames = r.u64();
+  e.outcome = r.str();
+  e.epsilon = r.f64();
+  e.loss = r.f64();
+  e.total_moves = r.u64();
+  e.seconds = r.f64();
+  return e;
+}
+
+}  // namespace
+
+Settings run_settings(const TrainConfig& c) {
+  const AgentOptions& o = c.options;
+  return {{"game", c.env.game},
+          {"level", std::to_string(c.level)},
+          {"agent", c.agent},
+          {"obs", c.env.obs},
+          {"visual_gray", flag(c.env.visual_gray)},
+          {"reward", c.env.reward},
+          {"gamma", format_double(c.env.gamma)},
+          {"seed", std::to_string(c.seed)},
+          {"max_moves", c.env.max_moves ? std::to_string(*c.env.max_moves) : "game"},
+          {"test_every", std::to_string(c.test_every)},
+          {"alpha", format_double(o.alpha)},
+          {"lr", format_double(o.lr)},
+          {"hidden", std::to_string(o.hidden)},
+          {"replay", std::to_string(o.replay_capacity)},
+          {"batch", std::to_string(o.batch)},
+          {"epochs", std::to_string(o.epochs)},
+          {"epsilon_start", format_double(o.epsilon_start)},
+          {"epsilon_end", format_double(o.epsilon_end)},
+          {"epsilon_moves", std::to_string(o.epsilon_moves)},
+          {"linear_output", flag(o.linear_output)},
+          {"target_network", flag(o.target_network)},
+          {"target_sync", std::to_string(o.target_sync)},
+          {"double_dqn", flag(o.double_dqn)}};
+}
+
+void apply_settings(const Settings& s, TrainConfig& c) {
+  auto get = [&](const char* k) {
+    auto it = s.find(k);
+    if (it == s.end()) throw CorruptCheckpoint(std::string("checkpoint settings lack '") + k + "'");
+    return it->second;
+  };
+  try {
+    c.env.game = get("game");
+    c.level = std::stoi(get("level"));
+    c.agent = get("agent");
+    c.env.obs = get("obs");
+    c.env.visual_gray = get("visual_gray") == "true";
+    c.env.reward = get("reward");
+    c.env.gamma = std::stod(get("gamma"));
+    c.seed = std::stoull(get("seed"));
+    if (get("max_moves") != "game") c.env.max_moves = static_cast<std::uint32_t>(std::stoul(get("max_moves")));
+    c.test_every = std::stoi(get("test_every"));
+    AgentOptions& o = c.options;
+    o.alpha = std::stod(get("alpha"));
+    o.lr = std::stod(get("lr"));
+    o.hidden = std::stoi(get("hidden"));
+    o.replay_capacity = std::stoull(get("replay"));
+    o.batch = std::stoull(get("batch"));
+    o.epochs = std::stoi(get("epochs"));
+    o.epsilon_start = std::stod(get("epsilon_start"));
+    o.epsilon_end = std::stod(get("epsilon_end"));
+    o.epsilon_moves = std::stoull(get("epsilon_moves"));
+    o.linear_output = get("linear_output") == "true";
+    o.target_network = get("target_network") == "true";
+    o.target_sync = std::stoull(get("target_sync"));
+    o.double_dqn = get("double_dqn") == "true";
+  } catch (const std::logic_error& e) {  // stoi and friends on a damaged value
+    throw CorruptCheckpoint(std::string("checkpoint settings hold a value that is not a number: ") + e.what());
+  }
+  c.options.gamma = c.env.gamma;
+  c.options.seed = c.seed;
+}
+
+Trainer::Trainer(const TrainConfig& config) : config_(config) {
+  config_.options.gamma = config_.env.gamma;
+  config_.options.seed = config_.seed;
+  if (config_.test_every < 1) throw std::invalid_argument("--test-every must be at least 1");
+  env_ = std::make_unique<rl::Env>(config_.env);
+  if (config_.level < 1 || config_.level > env_->game().level_count)
+    throw std::invalid_argument("game '" + config_.env.game + "' has levels 1 to " +
+                                std::to_string(env_->game().level_count) + ", not " + std::to_string(config_.level));
+  size_t inputs = 0;
+  for (const rl::Space& s : env_->observation_spaces()) inputs += s.elements();
+  agent_ = make_agent(config_.agent, env_->obs_kind(), static_cast<int>(inputs), env_->action_count(), config_.options);
+  meta_ = run_settings(config_);
+  meta_["format"] = std::to_string(kCheckpointFormat);
+  meta_["psxrl_version"] = kPsxrlVersion;
+  meta_["integration_hash"] = integration_hash(env_->game());
+  meta_["network"] = agent_->network();
+
+  std::error_code ec;
+  fs::create_directories(config_.out, ec);
+  if (ec || !fs::is_directory(config_.out))
+    throw std::runtime_error(config_.out + ": cannot create the run folder (" + ec.message() + ")");
+  if (config_.resume) {
+    restore();
+    return;
+  }
+  if (fs::exists(file(kCheckpointFile)))
+    throw std::invalid_argument(config_.out + " already holds a run: pass --resume to continue it, or choose another --out");
+  std::string json = "{";
+  for (const auto& [k, v] : meta_) json += (json.size() > 1 ? ",\n \"" : "\n \"") + k + "\": \"" + v + "\"";
+  write_text_atomically(file("config.json"), json + "\n}\n");
+  write_metrics_from_records();
+}
+
+Trainer::~Trainer() = default;
+
+std::string Trainer::file(const char* name) const { return (fs::path(config_.out) / name).string(); }
+
+void Trainer::restore() {
+  Checkpoint c = read_checkpoint(file(kCheckpointFile));
+  for (const auto& [k, v] : meta_) {
+    auto it = c.meta.find(k);
+    std::string had = it == c.meta.end() ? "(none)" : it->second;
+    if (had != v)
+      throw std::invalid_argument(config_.out + " was trained with " + k + " = " + had + ", this command has " + k +
+                                  " = " + v + ": resume with the run's own settings");
+  }
+  ByteReader agent(c.agent, file(kCheckpointFile) + " (agent)");
+  agent_->load(agent);
+  if (!agent.done()) agent.fail("unexpected bytes after the agent state");
+  ByteReader t(c.trainer, file(kCheckpointFile) + " (trainer)");
+  std::uint64_t n = t.count(80);
+  for (std::uint64_t i = 0; i < n; ++i) records_.push_back(load_record(t));
+  if (!t.done()) t.fail("unexpected bytes after the metrics");
+  write_metrics_from_records();
+}
+
+void Trainer::save() const {
+  Checkpoint c;
+  c.meta = meta_;
+  ByteWriter agent, trainer;
+  agent_->save(agent);
+  trainer.u64(records_.size());
+  for (const EpisodeRecord& r : records_) save_record(trainer, r);
+  c.agent = agent.take_string();
+  c.trainer = trainer.take_string();
+  write_checkpoint(file(kCheckpointFile), c);
+  write_learning_curve(file("learning_curve.png"), records_);
+}
+
+// The metric files always match the checkpoint's records: a resumed run drops rows written after
+// its checkpoint.
+void Trainer::write_metrics_from_records() const {
+  std::string csv = kCsvHeader, jsonl;
+  for (const EpisodeRecord& r : records_) {
+    csv += csv_row(r);
+    jsonl += json_row(r);
+  }
+  write_text_atomically(file("metrics.csv"), csv);
+  write_text_atomically(file("metrics.jsonl"), jsonl);
+}
+
+void Trainer::append_metrics(const EpisodeRecord& r) const {
+  std::ofstream(file("metrics.csv"), std::ios::app) << csv_row(r);
+  std::ofstream(file("metrics.jsonl"), std::ios::app) << json_row(r);
+}
+
+EpisodeRecord Trainer::play_episode(std::uint64_t episode, bool test,
+                                    const std::function<void(const TrainStatus&)>& progress) {
+  auto start = std::chrono::steady_clock::now();
+  std::vector<float> s = features(env_->reset(config_.level, rl::episode_seed(config_.seed, 0, episode - 1)));
+  EpisodeRecord rec;
+  rec.episode = episode;
+  rec.test = test;
+  rl::StepResult r;
+  do {
+    int a = agent_->act(s, test);
+    r = env_->step(a);
+    std::vector<float> next = features(env_->observation());
+    if (!test) {
+      agent_->observe({s, a, r.reward, next, r.terminated});
+      agent_->learn();
+    }
+    s = std::move(next);
+    rec.frames += r.info.game_frames;
+    ++session_moves_;
+    if (progress) progress(status(episode, false));
+  } while (!r.terminated && !r.truncated);
+  rec.score = r.info.score;
+  rec.reward = r.info.episode_reward;
+  rec.moves = r.info.moves;
+  rec.outcome = r.info.outcome.empty() ? "truncated" : r.info.outcome;
+  rec.epsilon = agent_->epsilon();
+  rec.loss = agent_->last_loss();
+  rec.total_moves = agent_->moves();
+  rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  session_seconds_ += rec.seconds;
+  return rec;
+}
+
+void Trainer::run(const std::function<void(const TrainStatus&)>& progress) {
+  for (std::uint64_t ep = records_.size() + 1; ep <= config_.episodes; ++ep) {
+    bool test = ep % static_cast<std::uint64_t>(config_.test_every) == 0;
+    records_.push_back(play_episode(ep, test, progress));
+    ++session_episodes_;
+    append_metrics(records_.back());
+    save();
+    if (progress) progress(status(ep, true));
+    if (test && config_.stop_score && records_.back().score >= *config_.stop_score) break;
+  }
+}
+
+std::optional<std::uint64_t> Trainer::first_win() const {
+  for (const EpisodeRecord& r : records_)
+    if (r.test && r.outcome == "win") return r.episode;
+  return std::nullopt;
+}
+
+TrainStatus Trainer::status(std::uint64_t episode, bool episode_end) const {
+  TrainStatus s{};
+  s.episode = episode;
+  s.episode_end = episode_end;
+  s.episodes = config_.episodes;
+  s.moves = agent_->moves();
+  for (const EpisodeRecord& r : records_) {
+    if (r.test) {
+      s.last_test = r.score;
+      s.best_test = std::max(s.best_test.value_or(r.score), r.score);
+    } else {
+      s.last_train = r.score;
+    }
+  }
+  s.epsilon = agent_->epsilon();
+  s.moves_per_second = session_seconds_ > 0 ? static_cast<double>(session_moves_) / session_seconds_ : 0;
+  double per_episode = session_seconds_ / std::max<double>(1.0, static_cast<double>(session_episodes_));
+  s.eta_seconds = per_episode * static_cast<double>(config_.episodes - std::min(config_.episodes, records_.size()));
+  return s;
+}
+
+}  // namespace psxrl::agents

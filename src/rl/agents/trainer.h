@@ -1,0 +1,91 @@
+// `psxrl train` without the command line: the seed's training loop (§4.2.1: nine ε-greedy
+// training episodes, then one greedy test episode), per-episode metrics (CSV and JSON Lines), a
+// learning-curve PNG and a checkpoint after every episode, and exact resumption from it.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rl/agents/agent.h"
+#include "rl/agents/checkpoint.h"
+#include "rl/env.h"
+
+namespace psxrl::agents {
+
+struct TrainConfig {
+  rl::EnvConfig env;  // game, obs, gamma (also the agent's), max_moves, user files
+  int level = 1;
+  std::string agent = "dqn";
+  AgentOptions options;
+  std::uint64_t episodes = 1000;
+  std::uint64_t seed = 0;
+  int test_every = 10;  // every test_every-th episode is a greedy test
+  std::optional<std::int64_t> stop_score;  // stop after a test episode scoring at least this
+  std::string out;
+  bool resume = false;
+};
+
+// What the run is: everything that decides its results (not the episode count, the output
+// folder or the stop rule), as text; stored in checkpoints and config.json.
+Settings run_settings(const TrainConfig& c);
+// The agent options and environment settings a policy was trained with.
+void apply_settings(const Settings& s, TrainConfig& c);
+
+struct EpisodeRecord {
+  std::uint64_t episode = 0;  // 1-based
+  bool test = false;
+  std::int64_t score = 0;
+  double reward = 0;
+  std::uint32_t moves = 0;
+  std::uint64_t frames = 0;
+  std::string outcome;        // win, lose or truncated
+  double epsilon = 0;         // at the episode's end
+  double loss = 0;            // the last learner loss (dqn)
+  std::uint64_t total_moves = 0;  // training moves so far
+  double seconds = 0;         // host time of the episode; the one column runs do not reproduce
+};
+
+struct TrainStatus {
+  std::uint64_t episode, episodes, moves;
+  std::optional<std::int64_t> last_train, last_test, best_test;
+  double epsilon, moves_per_second, eta_seconds;
+  bool episode_end;  // reported once an episode is recorded (else after a move)
+};
+
+class Trainer {
+ public:
+  // Builds the environment and agent; with `resume`, loads the run's checkpoint and refuses one
+  // made with other settings. Throws std::invalid_argument (bad names), psx::InputError (bad
+  // game files), CorruptCheckpoint (bad checkpoint or mismatched run), std::runtime_error
+  // (unwritable folder).
+  explicit Trainer(const TrainConfig& config);
+  ~Trainer();
+
+  // Runs the remaining episodes; `progress` is called after every move and episode.
+  void run(const std::function<void(const TrainStatus&)>& progress);
+  const std::vector<EpisodeRecord>& records() const { return records_; }
+  std::optional<std::uint64_t> first_win() const;  // the first test episode at the stop score
+  const Agent& agent() const { return *agent_; }
+
+ private:
+  EpisodeRecord play_episode(std::uint64_t episode, bool test, const std::function<void(const TrainStatus&)>& progress);
+  void save() const;
+  void restore();
+  void write_metrics_from_records() const;
+  void append_metrics(const EpisodeRecord& r) const;
+  TrainStatus status(std::uint64_t episode, bool episode_end) const;
+  std::string file(const char* name) const;
+
+  TrainConfig config_;
+  std::unique_ptr<rl::Env> env_;
+  std::unique_ptr<Agent> agent_;
+  Settings meta_;
+  std::vector<EpisodeRecord> records_;
+  double session_seconds_ = 0;     // host time this process spent in episodes
+  std::uint64_t session_moves_ = 0, session_episodes_ = 0;
+};
+
+}  // namespace psxrl::agents

@@ -1,5 +1,5 @@
-// The seed's Fig. 4.4 and 4.5 on Tumble: for each delimiter delay (in frames, with no initial
-// delay so the delay alone decides), the share of moves delimited correctly and the frames a move
+// The seed's Fig. 4.4 and 4.5 on Tumble: for each delimiter delay (in frames; the integration's
+// initial delay covers the frames before a move shows anything), the share of moves delimited correctly and the frames a move
 // takes. A move is delimited correctly when, as step() returns, the game's own `move` word is 0
 // (the move is over) and the score has settled (score == score_target), the seed's test of
 // "the score is still increasing". Moves: the level-1 route with its coins, fruit and key, and
@@ -41,8 +41,9 @@ void table(bool sound) {
   EnvConfig config;
   config.watch_audio = sound;
   Env env(config);
+  const std::uint32_t initial = env.delimiter_settings().initial_delay;
   for (std::uint32_t delay : {1u, 2u, 3u, 4u, 6u, 8u, 12u}) {
-    env.set_delays(0, delay);
+    env.set_delays(initial, delay);
     Tally t;
     play(env, 1, "201000001001000002020000020000", t);
     play(env, 3, "300100220000", t);

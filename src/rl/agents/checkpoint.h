@@ -12,7 +12,7 @@
 namespace psxrl::agents {
 
 inline constexpr std::uint64_t kCheckpointFormat = 1;
-inline constexpr const char* kPsxrlVersion = "0.1.0";
+inline constexpr const char* kPsxrlVersion = PSXRL_VERSION;  // project(VERSION) in CMakeLists.txt
 inline constexpr const char* kCheckpointFile = "checkpoint.psxrl";
 
 using Settings = std::map<std::string, std::string>;

@@ -58,6 +58,10 @@ Env::Env(const EnvConfig& config) : config_(config) {
   lua_ = std::make_unique<lua::Host>(game_.folder);
   bind_script();
   if (!game_.script.empty()) lua_->run_file(game_.script);
+  // Looked up once: the move loop reads these every emulated frame.
+  for (const auto& w : game_.watch) watched_vars_.push_back(&game_.variable(w));
+  state_var_ = &game_.variable(game_.state_variable);
+  script_outcome_ = lua_->has_function("outcome");
   if (reward_kind_ == RewardKind::Script && !lua_->has_function("reward"))
     throw psx::InputError::whole(game_.manifest, "reward 'script' needs a reward() function in the script");
   bool positional = obs_kind_ == ObsKind::Simple || obs_kind_ == ObsKind::Local;

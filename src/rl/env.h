@@ -126,6 +126,9 @@ class Env {
   mutable std::vector<std::optional<LevelMap>> maps_;  // read on first use
   std::vector<std::uint8_t> boot_state_;
   DelimiterSettings delim_;
+  std::vector<const Variable*> watched_vars_;  // game_.watch resolved
+  const Variable* state_var_ = nullptr;
+  bool script_outcome_ = false;                // the script defines outcome()
   std::uint32_t max_moves_;
   double sticky_;
 

@@ -26,8 +26,8 @@ void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
   if (obs_kind_ == ObsKind::Audio || obs_kind_ == ObsKind::Multimodal)
     move_audio_.insert(move_audio_.end(), frame_audio_.begin(), frame_audio_.end());
   if (watched) {
-    for (size_t i = 0; i < game_.watch.size(); ++i) {
-      std::int64_t now = raw(game_.variable(game_.watch[i]));
+    for (size_t i = 0; i < watched_vars_.size(); ++i) {
+      std::int64_t now = raw(*watched_vars_[i]);
       active |= now != (*watched)[i];
       (*watched)[i] = now;
     }
@@ -37,7 +37,7 @@ void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
 
 std::uint32_t Env::run_move(const Action& a, bool& hit_bound) {
   std::vector<std::int64_t> watched;
-  for (const auto& w : game_.watch) watched.push_back(raw(game_.variable(w)));
+  for (const Variable* v : watched_vars_) watched.push_back(raw(*v));
   console_->press_for(1, a.buttons, a.hold);
   MoveDelimiter delimiter;
   delimiter.begin(delim_);
@@ -101,12 +101,12 @@ StepResult Env::step(int action) {
 }
 
 std::string Env::outcome() const {
-  if (lua_->has_function("outcome")) {
+  if (script_outcome_) {
     auto o = lua_->call_string("outcome", {});
     if (o && *o != "win" && *o != "lose") throw psx::InputError(game_.script + ": outcome() must return \"win\", \"lose\" or nil");
     return o.value_or("");
   }
-  std::int64_t state = raw(game_.variable(game_.state_variable));
+  std::int64_t state = raw(*state_var_);
   if (contains_value(game_.win_states, state)) return "win";
   if (contains_value(game_.lose_states, state)) return "lose";
   return "";
@@ -204,7 +204,7 @@ StepInfo Env::make_info(std::uint64_t frames, double seconds) const {
   i.real_seconds = seconds;
   i.score = game_.score_variable.empty() ? 0 : raw(game_.variable(game_.score_variable));
   i.time_left = game_.time_variable.empty() ? 0 : value(game_.time_variable);
-  i.state = raw(game_.variable(game_.state_variable));
+  i.state = raw(*state_var_);
   i.level = level_;
   i.moves = moves_;
   i.episode_reward = episode_reward_;

@@ -281,6 +281,7 @@ void Bus::do_state(StateIO& s) {
   update_read_cycles();  // derived from memctrl_
   set_cache_control(cache_control_);
   icache_.do_state(s);
+  s.end_section("BUS ");
 }
 
 }  // namespace psx

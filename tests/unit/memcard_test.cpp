@@ -331,7 +331,8 @@ TEST(MemcardState, ReadInProgressBeyondTheCardIsRefused) {
   StateIO w;
   a.do_state(w);
   V blob = w.buffer();
-  const size_t sector_at = 8 + MemoryCard::kSize + 7;  // after tag+version, data, flag, dirty, step, mode
+  // After the section header (tag, version, length), data, flag, dirty, step, mode.
+  const size_t sector_at = 12 + MemoryCard::kSize + 7;
   ASSERT_EQ(blob[sector_at], 0x00);
   ASSERT_EQ(blob[sector_at + 1], 0x02);
   blob[sector_at] = 0x00, blob[sector_at + 1] = 0x04;  // sector 0400h, one past the last

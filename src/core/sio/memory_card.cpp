@@ -257,6 +257,7 @@ void MemoryCard::do_state(StateIO& s) {
   if (s.loading() && mode_ == kCmdRead && step_ >= 10 && sector_ >= kSectors)
     s.fail("memory card: a read of sector " + std::to_string(sector_) + " is in progress, beyond the card's " +
            std::to_string(kSectors) + " sectors");
+  s.end_section("MCRD");
 }
 
 }  // namespace psx

@@ -46,7 +46,8 @@ void print_game(std::FILE* out, const psx::Console& c, const rl::Integration& g)
   std::string line = "psxrl run: " + g.name + ":";
   if (const rl::Variable* level = g.find_variable("level"))
     line += " level " + std::to_string(read_variable(c, *level)) + ",";
-  if (!g.score_variable.empty()) line += " score " + std::to_string(read_variable(c, g.variable(g.score_variable))) + ",";
+  if (!g.score_variable.empty())
+    line += " score " + std::to_string(read_variable(c, g.variable(g.score_variable))) + ",";
   std::string outcome = "none";
   if (!g.state_variable.empty()) {
     const std::int64_t state = read_variable(c, g.variable(g.state_variable));

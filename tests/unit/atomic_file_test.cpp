@@ -82,7 +82,8 @@ TEST_F(AtomicFile, UnwritableDirectoryLeavesTheOldFile) {
         }
         std::_Exit(read_all(p) == std::vector<u8>{1, 2, 3} && !test::temporary_files_left(p) ? 0 : 4);
       },
-      ::testing::ExitedWithCode(0), "out\\.bin: cannot create the temporary file .*out\\.bin\\.tmp\\..*Permission denied");
+      ::testing::ExitedWithCode(0),
+      "out\\.bin: cannot create the temporary file .*out\\.bin\\.tmp\\..*Permission denied");
   fs::permissions(locked, fs::perms::owner_all);
 }
 

@@ -193,6 +193,38 @@ TEST(SchedulerState, UnknownBookedEventIsRefusedByName) {
   }
 }
 
+// Version 1 (container format 1) saved the time of all 11 console events in registration order,
+// unbooked ones as "never"; the migration maps them to names (scheduler.cpp kVersion1Events).
+TEST(SchedulerState, Version1SectionIsReadByTheFrozenOrder) {
+  StateIO w;
+  w.section("SCHD", 1);
+  u64 now = 1000;
+  w.pod(now);
+  u32 n = 11;
+  w.pod(n);
+  for (u32 i = 0; i < n; ++i) {
+    u64 when = i == 6 ? 1500 : i == 7 ? 1768 : Scheduler::kNever;  // gpu.video, spu.sample
+    w.pod(when);
+  }
+  w.end_section("SCHD");
+  const std::vector<u8> v1(w.buffer().begin(), w.buffer().end());
+  // Format 1 had no length field: drop the 4 bytes after tag and version.
+  std::vector<u8> unsized(v1.begin(), v1.begin() + 8);
+  unsized.insert(unsized.end(), v1.begin() + 12, v1.end());
+
+  Scheduler s;
+  auto noop = [](Cycles) {};
+  Scheduler::Handle sample = s.add_event("spu.sample", noop), video = s.add_event("gpu.video", noop);
+  Scheduler::Handle dma = s.add_event("dma", noop);
+  StateIO r(unsized.data(), unsized.size(), StateIO::kUnsizedSections);
+  s.do_state(r);
+  r.finish();
+  EXPECT_EQ(s.now(), 1000u);
+  EXPECT_EQ(s.when(video), 1500u);
+  EXPECT_EQ(s.when(sample), 1768u);
+  EXPECT_FALSE(s.pending(dma));
+}
+
 TEST(SchedulerState, DuplicateEventNamesAreAProgrammingError) {
   Scheduler s;
   s.add_event("dma", [](Cycles) {});

@@ -35,7 +35,7 @@ const char* kMemsearchFooter =
 constexpr size_t kMaxListed = 200000;  // survivors beyond this are counted, not ranked
 
 struct MemsearchArgs {
-  std::string session, encodings, integration, name;
+  std::string session, encodings, integration, name, range;
   std::vector<std::string> queries, vars;
   size_t top = 20;
   bool verify = false;
@@ -48,6 +48,8 @@ struct MemsearchArgs {
                    "comma-separated encodings to search (default all: u32 s32 u16 s16 u8 s8,\n"
                    "their big-endian forms u32be.. s16be, and bcd32 bcd16 bcd8)")
         ->type_name("LIST");
+    app.add_option("--range", range, "search only addresses FIRST-LAST (e.g. 0x80010000-0x80020000; LAST excluded)")
+        ->type_name("A-B");
     app.add_flag("--verify", verify, "replay the session from its start state and check every snapshot");
     app.add_option("--integration", integration, "write found variables as DIR/game.toml (a new integration)")
         ->type_name("DIR");
@@ -72,6 +74,28 @@ std::vector<memsearch::Encoding> parse_encodings(const std::string& list) {
     start = comma + 1;
   }
   return out;
+}
+
+// --range FIRST-LAST as snapshot offsets (both addresses in RAM, or both in the scratchpad).
+std::pair<psx::u32, psx::u32> parse_range(const std::string& text) {
+  if (text.empty()) return {0, memsearch::kSnapshotBytes};
+  size_t dash = text.find('-');
+  psx::u32 first = 0, last = 0;
+  try {
+    size_t used = 0;
+    unsigned long a = std::stoul(text.substr(0, dash), &used, 0), b = 0;
+    if (dash == std::string::npos || used != dash) throw std::invalid_argument(text);
+    b = std::stoul(text.substr(dash + 1), &used, 0);
+    if (used != text.size() - dash - 1 || a > 0xFFFFFFFFul || b == 0 || b > 0x100000000ul) throw std::invalid_argument(text);
+    if (!memsearch::address_to_offset(static_cast<psx::u32>(a), first) ||
+        !memsearch::address_to_offset(static_cast<psx::u32>(b - 1), last))
+      throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw memsearch::QueryError("--range: expected FIRST-LAST addresses in RAM or the scratchpad, e.g. "
+                                "0x80010000-0x80020000, found '" + text + "'");
+  }
+  if (last < first) throw memsearch::QueryError("--range: LAST is below FIRST");
+  return {first, last + 1};
 }
 
 // Columns: the start, the marks (at most 10) and the end.
@@ -139,15 +163,16 @@ int memsearch_command(const std::vector<std::string>& args) {
     return kBadInput;
   }
   try {
-    memsearch::Search search(session, parse_encodings(a.encodings));
+    auto [first, last] = parse_range(a.range);
+    memsearch::Search search(session, parse_encodings(a.encodings), first, last);
     for (const std::string& q : a.queries) {
       search.apply(q);
       std::printf("%-40s %zu candidates\n", q.c_str(), search.count());
     }
-    if (search.count() > kMaxListed)
-      std::printf("%zu candidates: too many to rank, add queries\n", search.count());
-    else if (!a.queries.empty() || a.integration.empty())
-      print_table(search, a.top);
+    if (!a.queries.empty() || a.integration.empty()) {
+      if (search.count() > kMaxListed) std::printf("%zu candidates: too many to rank, add queries\n", search.count());
+      else print_table(search, a.top);
+    }
     if (!a.integration.empty()) {
       std::vector<memsearch::FoundVariable> vars;
       for (const std::string& v : a.vars) vars.push_back(memsearch::parse_found_variable(v));

@@ -118,13 +118,14 @@ std::vector<Encoding> Search::all_encodings() {
   return all;
 }
 
-Search::Search(const Session& session, std::vector<Encoding> encodings) : session_(session) {
+Search::Search(const Session& session, std::vector<Encoding> encodings, u32 first, u32 last) : session_(session) {
   if (session.snapshots.empty()) throw QueryError("the session has no snapshots");
+  if (first >= last || last > kSnapshotBytes) throw QueryError("the search range is empty or outside the snapshots");
   for (Encoding e : encodings) {
     Pool pool{e, {}, {}};
     u32 size = encoding_size(e);
     // Naturally aligned, and never straddling RAM's end and the scratchpad's start.
-    for (u32 off = 0; off + size <= kSnapshotBytes; off += size)
+    for (u32 off = (first + size - 1) / size * size; off + size <= last; off += size)
       if (off >= kRamBytes || off + size <= kRamBytes) pool.offsets.push_back(off);
     pools_.push_back(std::move(pool));
   }
@@ -297,16 +298,7 @@ void Search::apply(const std::string& query) {
 // Survivors at the same offset become one candidate (the first encoding in Encoding order, or its
 // signed twin where a value is negative); a narrower survivor inside a surviving wider word (the
 // u8 at 0x80010019 inside the u32 at 0x80010018) joins that word's candidate.
-std::vector<Candidate> Search::ranked(size_t limit) const {
-  std::map<u32, Candidate> by_offset;  // ordered: ties in score fall back to address order
-  for (const Pool& pool : pools_) {
-    for (size_t i = 0; i < pool.offsets.size(); ++i) {
-      u32 off = pool.offsets[i];
-      double score = pool.scores.empty() ? 0 : pool.scores[i];
-      auto [it, fresh] = by_offset.try_emplace(off, Candidate{off, pool.encoding, score, {}});
-      if (!fresh) merge(it->second, pool.encoding, score);
-    }
-  }
+void Search::group(std::map<u32, Candidate>& by_offset) const {
   for (u32 width : {4u, 2u}) {
     for (auto it = by_offset.begin(); it != by_offset.end();) {
       u32 word = it->first & ~(width - 1);
@@ -319,10 +311,44 @@ std::vector<Candidate> Search::ranked(size_t limit) const {
       }
     }
   }
+}
+
+void Search::add(std::map<u32, Candidate>& by_offset, const Pool& pool, size_t i) const {
+  u32 off = pool.offsets[i];
+  double score = pool.scores.empty() ? 0 : pool.scores[i];
+  auto [it, fresh] = by_offset.try_emplace(off, Candidate{off, pool.encoding, score, {}});
+  if (!fresh) merge(it->second, pool.encoding, score);
+}
+
+std::vector<Candidate> Search::ranked(size_t limit) const {
   std::vector<Candidate> out;
-  for (auto& [off, c] : by_offset) out.push_back(std::move(c));
-  std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
-  if (out.size() > limit) out.resize(limit);
+  bool scored = std::any_of(pools_.begin(), pools_.end(), [](const Pool& p) { return !p.scores.empty(); });
+  if (scored) {
+    std::map<u32, Candidate> by_offset;
+    for (const Pool& pool : pools_)
+      for (size_t i = 0; i < pool.offsets.size(); ++i) add(by_offset, pool, i);
+    group(by_offset);
+    for (auto& [off, c] : by_offset) out.push_back(std::move(c));
+    std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
+    if (out.size() > limit) out.resize(limit);
+    return out;
+  }
+  // Unscored: address order, so the 4-byte words are walked in order (each pool's offsets are
+  // ascending) and the walk stops at `limit`, however many candidates survive.
+  std::vector<size_t> cursor(pools_.size(), 0);
+  while (out.size() < limit) {
+    u32 word = UINT32_MAX;
+    for (size_t p = 0; p < pools_.size(); ++p)
+      if (cursor[p] < pools_[p].offsets.size()) word = std::min(word, pools_[p].offsets[cursor[p]] & ~3u);
+    if (word == UINT32_MAX) break;
+    std::map<u32, Candidate> in_word;
+    for (size_t p = 0; p < pools_.size(); ++p)
+      for (; cursor[p] < pools_[p].offsets.size() && (pools_[p].offsets[cursor[p]] & ~3u) == word; ++cursor[p])
+        add(in_word, pools_[p], cursor[p]);
+    group(in_word);
+    for (auto& [off, c] : in_word)
+      if (out.size() < limit) out.push_back(std::move(c));
+  }
   return out;
 }
 

@@ -8,6 +8,7 @@
 // `LABEL#N` (its Nth frame, from 1).
 #pragma once
 #include <cstdint>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -44,7 +45,10 @@ struct Candidate {
 
 class Search {
  public:
-  explicit Search(const Session& session, std::vector<Encoding> encodings = all_encodings());
+  // Candidates are the words of `encodings` at snapshot offsets [first, last) (session.h maps
+  // offsets to addresses); by default all of RAM and the scratchpad.
+  explicit Search(const Session& session, std::vector<Encoding> encodings = all_encodings(), psx::u32 first = 0,
+                  psx::u32 last = kSnapshotBytes);
   static std::vector<Encoding> all_encodings();
 
   // One query in the text form `psxrl memsearch` takes (docs/memsearch.md):
@@ -73,6 +77,9 @@ class Search {
   template <typename Keep>
   void filter(Keep keep);
   void merge(Candidate& c, Encoding e, double score) const;
+  struct Pool;
+  void add(std::map<psx::u32, Candidate>& by_offset, const Pool& pool, size_t i) const;
+  void group(std::map<psx::u32, Candidate>& by_offset) const;
 
   const Session& session_;
   struct Pool {

@@ -154,6 +154,10 @@ void decode_snapshots(const std::string& file, const std::vector<u8>& data, Sess
     u64 frame = r.u64le("a snapshot's frame");
     if (frame >= s.frames) r.fail("snapshot frame " + std::to_string(frame) + " is past the session's last frame");
     if (i && frame <= s.snapshot_frames.back()) r.fail("snapshot frames must increase");
+    bool marked = std::any_of(s.marks.begin(), s.marks.end(), [&](const Mark& m) { return m.frame == frame; });
+    bool periodic = s.snapshot_interval && frame % s.snapshot_interval == 0;
+    if (!marked && !periodic && frame != s.frames - 1)
+      r.fail("snapshot at frame " + std::to_string(frame) + " is neither periodic, at a mark, nor the last frame");
     u32 stored = r.u32le("a snapshot's stored size");
     std::vector<u8> snap = r.inflate(stored, kSnapshotBytes, "snapshot");
     if (i)

@@ -102,10 +102,17 @@ void bind_memsearch(py::module_& m) {
           },
           "Replays from the start state; None when every snapshot matches, else the first frame that differs.")
       .def(
-          "search", [](py::object self, std::optional<std::vector<std::string>> encodings) {
-            return std::make_unique<ms::Search>(self.cast<const ms::Session&>(), encodings_of(encodings));
+          "search",
+          [](py::object self, std::optional<std::vector<std::string>> encodings, std::optional<psx::u32> first,
+             std::optional<psx::u32> last) {
+            psx::u32 a = 0, b = ms::kSnapshotBytes - 1;
+            if (first.has_value() != last.has_value()) throw std::invalid_argument("give both first and last, or neither");
+            if (first && (!ms::address_to_offset(*first, a) || *last == 0 || !ms::address_to_offset(*last - 1, b) || b < a))
+              throw std::invalid_argument("first..last must be addresses in RAM or the scratchpad, first below last");
+            return std::make_unique<ms::Search>(self.cast<const ms::Session&>(), encodings_of(encodings), a, b + 1);
           },
-          py::arg("encodings") = py::none(), py::keep_alive<0, 1>());
+          py::arg("encodings") = py::none(), py::arg("first") = py::none(), py::arg("last") = py::none(),
+          py::keep_alive<0, 1>(), "Candidates in [first, last) (default: all of RAM and the scratchpad).");
 
   py::class_<ms::Search>(m, "Search", "Candidate words narrowed by queries (Session.search()).")
       .def("apply", &ms::Search::apply, py::arg("query"), "One query in psxrl memsearch's text form.")

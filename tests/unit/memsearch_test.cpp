@@ -22,6 +22,7 @@ namespace {
 ms::Session blank_session(size_t n) {
   ms::Session s;
   s.frames = n;
+  s.snapshot_interval = 1;
   s.pad1.assign(n, 0);
   s.pad2.assign(n, 0);
   s.start_state = {1, 2, 3};

@@ -123,7 +123,7 @@ void add_play_options(CLI::App& app, PlayOptions& p) {
   app.add_option("--seed", p.seed, "seed of the episodes' randomness (default 0)")->type_name("S");
   app.add_option("--max-moves", p.max_moves, "move cap per episode (default: the game's)")->type_name("N");
   app.add_flag("--headless", p.headless, "no window and no sound (also chosen when there is no display)");
-  app.add_option("--record", v.record, "record what play shows: FILE.mp4 (.mkv, .mov) with sound, or a folder of PNG pictures")
+  app.add_option("--record", v.record, "record what play shows: FILE.mp4 (.mkv, .mov) with sound, or a PNG folder")
       ->type_name("OUT");
   app.add_option("--record-every", v.record_every, "record 1 picture in N frames (default 1)")->type_name("N");
   app.add_option("--frames", v.max_frames, "stop after N emulated frames shown (default: no limit)")->type_name("N");

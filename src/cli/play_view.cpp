@@ -64,7 +64,8 @@ void PlayView::pace() {
   pacer_->wait_frame();
   // The sound device drains at its own clock: when the host clock runs ahead of it, wait for it
   // too, so the sound neither lags further and further nor is cut.
-  while (audio_ && audio_->queued_seconds() > kAudioAheadSeconds) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  while (audio_ && audio_->queued_seconds() > kAudioAheadSeconds)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
 void PlayView::wait_while_paused(frontend::WindowInput& in) {

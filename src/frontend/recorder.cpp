@@ -14,7 +14,8 @@ namespace psxrl::frontend {
 
 Recorder::Recorder(const std::string& target, int every, Rate rate)
     : target_(target), every_(every), rate_(rate), video_(is_video_path(target)) {
-  if (every < 1) throw std::invalid_argument("pictures are recorded 1 in N frames, N at least 1, not " + std::to_string(every));
+  if (every < 1)
+    throw std::invalid_argument("pictures are recorded 1 in N frames, N at least 1, not " + std::to_string(every));
   if (video_) {
     // The file is opened at the first picture, whose size it takes; an unwritable place is found
     // out now, before anything is played.
@@ -42,7 +43,8 @@ void Recorder::frame(const psx::u8* rgb, int width, int height, std::span<const 
     // lines, psx-spx "GPU Display Control") always are, so this rounds only odd custom ranges.
     width_ = (width + 1) & ~1;
     height_ = (height + 1) & ~1;
-    writer_ = std::make_unique<VideoWriter>(target_, VideoFormat{width_, height_, {rate_.num, rate_.den * every_}, true});
+    VideoFormat format{width_, height_, {rate_.num, rate_.den * every_}, true};
+    writer_ = std::make_unique<VideoWriter>(target_, format);
   }
   if (writer_) writer_->add_audio(audio);
   else audio_.insert(audio_.end(), audio.begin(), audio.end());

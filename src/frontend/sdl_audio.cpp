@@ -8,7 +8,8 @@
 namespace psxrl::frontend {
 
 SdlAudio::SdlAudio() {
-  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) throw std::runtime_error(std::string("cannot start SDL audio: ") + SDL_GetError());
+  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0)
+    throw std::runtime_error(std::string("cannot start SDL audio: ") + SDL_GetError());
   SDL_AudioSpec want{};
   want.freq = kRate;
   want.format = AUDIO_S16SYS;

@@ -12,6 +12,7 @@ extern "C" {
 }
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
@@ -21,7 +22,7 @@ namespace psxrl::frontend {
 
 bool is_video_path(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext == ".mp4" || ext == ".mkv" || ext == ".mov";
 }
 

@@ -40,7 +40,8 @@ TEST(Keymap, ArrowsAreTheDpadAndEveryButtonHasOneKey) {
 
 TEST(Keymap, AGamepadReachesEveryButton) {
   psx::u16 all = 0;
-  for (int i = 0; i < SDL_CONTROLLER_BUTTON_MAX; ++i) all |= controller_button(static_cast<SDL_GameControllerButton>(i));
+  for (int i = 0; i < SDL_CONTROLLER_BUTTON_MAX; ++i)
+    all |= controller_button(static_cast<SDL_GameControllerButton>(i));
   all |= controller_trigger(SDL_CONTROLLER_AXIS_TRIGGERLEFT) | controller_trigger(SDL_CONTROLLER_AXIS_TRIGGERRIGHT);
   EXPECT_EQ(all, 0xFFFF);
   EXPECT_EQ(controller_button(SDL_CONTROLLER_BUTTON_A), b::kCross);  // the bottom face button

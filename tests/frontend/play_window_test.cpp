@@ -122,7 +122,8 @@ TEST(PlayHeadless, HumanPlayWithoutADisplayIsRefused) {
 
 TEST(PlayHeadless, PngFoldersHoldEveryNthFrameAndTheSound) {
   fs::path d = fresh_dir("png");
-  auto r = run(kPsxrl + " play --headless --policy " + tiny_policy().string() + " --frames 30 --record-every 3 --record " +
+  auto r = run(kPsxrl + " play --headless --policy " + tiny_policy().string() +
+               " --frames 30 --record-every 3 --record " +
                (d / "frames").string());
   ASSERT_EQ(r.code, 0) << r.output;
   // Frames 1, 4, ..., 28: 10 pictures, named by the frame they show.

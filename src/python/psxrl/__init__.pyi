@@ -4,7 +4,8 @@ from typing import Any
 import gymnasium
 
 from ._psxrl import (BUTTONS as BUTTONS, Console as Console, InputError as InputError, StateError as StateError,
-                     WatchEvent as WatchEvent, episode_seed as episode_seed)
+                     WatchEvent as WatchEvent, Window as Window, display_problem as display_problem,
+                     episode_seed as episode_seed)
 from ._psxrl import Env as _Env
 from ._psxrl import VecEnv as _VecEnv
 

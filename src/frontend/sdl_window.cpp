@@ -41,7 +41,8 @@ SdlWindow::SdlWindow(const std::string& title, WindowSize size) {
   renderer_ = SDL_CreateRenderer(window_, -1, 0);
   if (!renderer_) fail("cannot create a renderer for the window");
   SDL_RenderSetLogicalSize(renderer_, size.width, size.height);
-  for (int i = 0; i < SDL_NumJoysticks(); ++i) open_controller(i);
+  // Gamepads are opened as SDL announces them: it sends SDL_CONTROLLERDEVICEADDED for those
+  // present at start too.
 }
 
 SdlWindow::~SdlWindow() {
@@ -55,6 +56,15 @@ SdlWindow::~SdlWindow() {
 void SdlWindow::open_controller(int joystick_index) {
   if (!SDL_IsGameController(joystick_index)) return;
   if (SDL_GameController* c = SDL_GameControllerOpen(joystick_index)) controllers_.push_back(c);
+}
+
+void SdlWindow::close_controller(SDL_JoystickID id) {
+  for (auto it = controllers_.begin(); it != controllers_.end(); ++it)
+    if (SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(*it)) == id) {
+      SDL_GameControllerClose(*it);
+      controllers_.erase(it);
+      return;
+    }
 }
 
 void SdlWindow::show(const psx::u8* rgb, int width, int height, bool read_back) {
@@ -86,6 +96,7 @@ WindowInput SdlWindow::poll() {
   while (SDL_PollEvent(&e)) {
     if (e.type == SDL_QUIT) in.quit = true;
     if (e.type == SDL_CONTROLLERDEVICEADDED) open_controller(e.cdevice.which);
+    if (e.type == SDL_CONTROLLERDEVICEREMOVED) close_controller(e.cdevice.which);
     if (e.type == SDL_KEYDOWN && !e.key.repeat) {
       KeyCommand c = key_command(e.key.keysym.sym);
       in.quit |= c == KeyCommand::Quit;

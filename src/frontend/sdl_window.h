@@ -52,6 +52,7 @@ class SdlWindow {
 
  private:
   void open_controller(int joystick_index);
+  void close_controller(SDL_JoystickID id);
 
   SDL_Window* window_ = nullptr;
   SDL_Renderer* renderer_ = nullptr;

@@ -5,6 +5,7 @@
 // expected video frame counts and rates arithmetic on psx-spx's video timing.
 #include <gtest/gtest.h>
 #include <png.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -71,12 +72,29 @@ TEST(PlayWindow, RecordsAVideoWhileShowingIt) {
 
 // A Q-table policy trained for one episode of one move: enough to drive play.
 fs::path tiny_policy() {
-  fs::path d = fs::path(PSXRL_TEST_OUT_DIR) / "tiny_policy";
+  // One per test process: CTest may run the window and headless tests at once.
+  static struct Folder {
+    fs::path d = fs::path(PSXRL_TEST_OUT_DIR) / ("tiny_policy_" + std::to_string(getpid()));
+    ~Folder() { fs::remove_all(d); }
+  } folder;
+  const fs::path& d = folder.d;
   if (fs::exists(d / "checkpoint.psxrl")) return d;
   fs::remove_all(d);
   auto r = run(kPsxrl + " train --agent q --episodes 1 --test-every 1 --max-moves 1 --quiet --out " + d.string());
   EXPECT_EQ(r.code, 0) << r.output;
   return d;
+}
+
+// The window only displays: a policy plays the same episode in it as headless.
+TEST(PlayWindow, APolicyPlaysTheSameInTheWindowAsHeadless) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run (CTest does)";
+  std::string args = " play --policy " + tiny_policy().string() + " --episodes 2 --max-moves 6";
+  auto window = run(kPsxrl + args);
+  auto headless = run(kPsxrl + args + " --headless");
+  ASSERT_EQ(window.code, 0) << window.output;
+  ASSERT_EQ(headless.code, 0) << headless.output;
+  EXPECT_NE(headless.output.find("episode 2: score"), std::string::npos) << headless.output;
+  EXPECT_EQ(window.output, headless.output);
 }
 
 TEST(PlayHeadless, Mp4HoldsEveryNthFrameAtTheConsoleRateWithItsSound) {

@@ -33,6 +33,15 @@ WindowSize window_size(int width, int height, int scale) {
 
 SdlWindow::SdlWindow(const std::string& title, WindowSize size) {
   if (SDL_InitSubSystem(SDL_INIT_VIDEO | SDL_INIT_GAMECONTROLLER) != 0) fail("cannot start SDL video");
+  try {
+    open(title, size);
+  } catch (...) {  // no destructor runs for a constructor that throws
+    release();
+    throw;
+  }
+}
+
+void SdlWindow::open(const std::string& title, WindowSize size) {
   // Nearest-pixel scaling: an integer scale shows every console pixel as an exact square.
   SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "nearest");
   window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, size.width, size.height,
@@ -45,7 +54,9 @@ SdlWindow::SdlWindow(const std::string& title, WindowSize size) {
   // present at start too.
 }
 
-SdlWindow::~SdlWindow() {
+SdlWindow::~SdlWindow() { release(); }
+
+void SdlWindow::release() {
   for (SDL_GameController* c : controllers_) SDL_GameControllerClose(c);
   if (texture_) SDL_DestroyTexture(texture_);
   if (renderer_) SDL_DestroyRenderer(renderer_);

@@ -51,6 +51,8 @@ class SdlWindow {
   void set_title(const std::string& title);
 
  private:
+  void open(const std::string& title, WindowSize size);
+  void release();
   void open_controller(int joystick_index);
   void close_controller(SDL_JoystickID id);
 

@@ -21,24 +21,31 @@ namespace {
 const std::string kPsxrl = std::string(PSXRL_BUILD_DIR) + "/psxrl";
 
 // Runs `play_args` (after "psxrl play") in the background, waits for its window, focuses it, runs
-// the xdotool commands in `keys` (one per line; "sleep S" lines pause) and waits for play to end.
+// the xdotool commands in `keys` (one per line; "sleep S" lines pause), waits for play to end and
+// runs the commands in `after` (to let go of held keys).
 psxrl::test::CommandResult play_with_keys(const fs::path& dir, const std::string& env, const std::string& play_args,
-                                          const std::string& keys) {
+                                          const std::string& keys, const std::string& after = "") {
   fs::create_directories(dir);
   std::ofstream script(dir / "keys.sh");
   script << env << " " << kPsxrl << " play " << play_args << " > " << (dir / "play.out") << " 2>&1 &\n"
          << "pid=$!\n"
          << "timeout 30 " << PSXRL_XDOTOOL << " search --sync --name 'psxrl: ' windowfocus --sync"
          << " || { kill $pid; exit 99; }\n";
-  std::istringstream lines(keys);
-  for (std::string line; std::getline(lines, line);)
-    script << (line.rfind("sleep", 0) == 0 ? line : std::string(PSXRL_XDOTOOL) + " " + line) << "\n";
-  script << "wait $pid\ncode=$?\ncat " << (dir / "play.out") << "\nexit $code\n";
+  auto commands = [&](const std::string& text) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+      script << (line.rfind("sleep", 0) == 0 ? line : std::string(PSXRL_XDOTOOL) + " " + line) << "\n";
+  };
+  commands(keys);
+  script << "wait $pid\ncode=$?\n";
+  commands(after);
+  script << "cat " << (dir / "play.out") << "\nexit $code\n";
   script.close();
   return run("sh " + (dir / "keys.sh").string());
 }
 
-// Pads are read once a frame (1/60 s): a key is held for several frames to be seen.
+// Pads are read once a frame (1/60 s): a key is held for several frames to be seen, and the
+// pauses between keys leave the game many frames to change screens even on a slow build.
 const char* kTap = "keydown %s\nsleep 0.25\nkeyup %s\n";
 std::string tap(const std::string& key) {
   char buf[96];
@@ -49,9 +56,9 @@ std::string tap(const std::string& key) {
 TEST(PlayWindow, HoldingUpRollsTheBallOffLevel1sNorthEdge) {
   ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run (CTest does)";
   // Level 1 (games/tumble/levels/level01.txt): the start faces north with five floor tiles and
-  // then nothing ahead; the 1800-frame cap is never reached.
-  auto r = play_with_keys(fs::path(PSXRL_TEST_OUT_DIR) / "keys_up", "", "--game tumble --level 1 --frames 1800",
-                          "sleep 0.3\nkeydown Up\nsleep 6\nkeyup Up");
+  // then nothing ahead; Up is held until play ends, the 3000-frame cap is never reached.
+  auto r = play_with_keys(fs::path(PSXRL_TEST_OUT_DIR) / "keys_up", "", "--game tumble --level 1 --frames 3000",
+                          "sleep 0.3\nkeydown Up", "keyup Up");
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("episode 1: score 0, lose, "), std::string::npos) << r.output;
 }
@@ -97,7 +104,7 @@ TEST(PlayWindow, F5SavesTheLevelStartStateThatTheNextPlayStartsFrom) {
   // No state yet: play starts at the game's boot (the title). Start, then Cross on level select
   // starts level 1; F5 saves it; Escape quits.
   auto r = play_with_keys(dir, env, args + " --frames 100000",
-                          "sleep 0.3\n" + tap("Return") + "sleep 1\n" + tap("x") + "sleep 1\nkey F5\nsleep 0.3\n" +
+                          "sleep 0.3\n" + tap("Return") + "sleep 2\n" + tap("x") + "sleep 2\nkey F5\nsleep 0.3\n" +
                               tap("Escape"));
   ASSERT_EQ(r.code, 0) << r.output;
   fs::path state = dir / "states" / "level01.state";

@@ -30,7 +30,7 @@ struct ViewOptions {
 };
 
 // The console's frames per second (psx-spx "GPU Timings": video clock / (cycles per line x lines
-// per frame), 53693175 / (3413 x 263) = 59.83 Hz NTSC, 53203425 / (3406 x 314) = 49.75 Hz PAL;
+// per frame), 53693175 / (3413 x 263) = 59.82 Hz NTSC, 53203425 / (3406 x 314) = 49.75 Hz PAL;
 // interlaced fields are half a line shorter, which this ignores).
 frontend::Rate frame_rate(psx::Console& console);
 

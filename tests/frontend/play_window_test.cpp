@@ -110,7 +110,7 @@ TEST(PlayHeadless, Mp4HoldsEveryNthFrameAtTheConsoleRateWithItsSound) {
   EXPECT_EQ(v.width, 320);
   EXPECT_EQ(v.height, 240);
   // psx-spx "GPU Timings": NTSC frames are 263 lines of 3413 video clock cycles at 53.693175 MHz,
-  // 59.826 frames per second; every second frame gives 29.913 pictures per second.
+  // 59.817 frames per second; every second frame gives 29.909 pictures per second.
   double fps = 53693175.0 / (3413.0 * 263.0);
   EXPECT_NEAR(v.frame_rate, fps / 2, 1e-6);
   EXPECT_EQ(v.video_codec == "h264" || v.video_codec == "mpeg4", true) << v.video_codec;
@@ -150,7 +150,7 @@ TEST(PlayHeadless, PngFoldersHoldEveryNthFrameAndTheSound) {
   EXPECT_EQ(pngs, 10u);
   EXPECT_TRUE(fs::exists(d / "frames" / "frame000028.png"));
   EXPECT_FALSE(fs::exists(d / "frames" / "frame000030.png"));
-  // audio.wav: a 44-byte header and 4 bytes per stereo sample (44100 Hz x 30 frames / 59.826 Hz).
+  // audio.wav: a 44-byte header and 4 bytes per stereo sample (44100 Hz x 30 frames / 59.817 Hz).
   double seconds = (static_cast<double>(fs::file_size(d / "frames" / "audio.wav")) - 44) / 4 / 44100;
   EXPECT_NEAR(seconds, 30 * 3413.0 * 263.0 / 53693175.0, 4.0 / 44100);
 }

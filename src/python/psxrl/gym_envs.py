@@ -49,7 +49,7 @@ class PsxrlEnv(gym.Env):
     """One game integration as a Gymnasium environment (actions: the integration's, Discrete)."""
 
     # "human" shows each step's last picture in the play window of `psxrl play` (psxrl.Window),
-    # held for as long as the move took in the game: the console's 59.83 frames per second.
+    # held for as long as the move took in the game: the console's 59.82 frames per second.
     metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 60}
     _CONSOLE_FPS = 53693175 / (3413 * 263)  # psx-spx "GPU Timings", NTSC
 

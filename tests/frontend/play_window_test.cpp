@@ -7,10 +7,13 @@
 #include <png.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -95,6 +98,35 @@ TEST(PlayWindow, APolicyPlaysTheSameInTheWindowAsHeadless) {
   ASSERT_EQ(headless.code, 0) << headless.output;
   EXPECT_NE(headless.output.find("episode 2: score"), std::string::npos) << headless.output;
   EXPECT_EQ(window.output, headless.output);
+}
+
+// Reads 16-bit little-endian samples from `path` after `skip` header bytes, leaving out zeros.
+std::vector<std::int16_t> sound_samples(const fs::path& path, size_t skip) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(skip));
+  std::vector<std::int16_t> out;
+  unsigned char b[2];
+  while (in.read(reinterpret_cast<char*>(b), 2))
+    if (std::int16_t v = static_cast<std::int16_t>(b[0] | b[1] << 8)) out.push_back(v);
+  return out;
+}
+
+// The window's sound is the SPU's, sample for sample: SDL's "disk" audio driver writes what the
+// device plays to a file, which must hold the recorded audio.wav's sound in order. Silence is left
+// out of both (the device plays silence whenever its queue runs dry), and what was still queued
+// when play ended is never played.
+TEST(PlayWindow, TheSpeakerGetsTheConsolesSoundSampleForSample) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run (CTest does)";
+  fs::path d = fresh_dir("window_sound");
+  auto r = run("SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE=" + (d / "device.raw").string() + " " + kPsxrl +
+               " play --policy " + tiny_policy().string() + " --frames 300 --record " + (d / "frames").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::vector<std::int16_t> recorded = sound_samples(d / "frames" / "audio.wav", 44);  // after the WAV header
+  std::vector<std::int16_t> played = sound_samples(d / "device.raw", 0);
+  ASSERT_GT(recorded.size(), 1000u) << "the policy's moves make sounds in Tumble";
+  EXPECT_GT(played.size(), recorded.size() / 2);
+  ASSERT_LE(played.size(), recorded.size());
+  EXPECT_TRUE(std::equal(played.begin(), played.end(), recorded.begin()));
 }
 
 TEST(PlayHeadless, Mp4HoldsEveryNthFrameAtTheConsoleRateWithItsSound) {

@@ -21,7 +21,8 @@ namespace {
 const std::string kPsxrl = std::string(PSXRL_BUILD_DIR) + "/psxrl";
 
 // Runs `play_args` (after "psxrl play") in the background, waits for its window, focuses it, runs
-// the xdotool commands in `keys` (one per line; "sleep S" lines pause), waits for play to end and
+// the xdotool commands in `keys` (one per line; "sleep S" lines pause, "!" starts a shell command;
+// $pid is play's process), waits for play to end and
 // runs the commands in `after` (to let go of held keys).
 psxrl::test::CommandResult play_with_keys(const fs::path& dir, const std::string& env, const std::string& play_args,
                                           const std::string& keys, const std::string& after = "") {
@@ -34,7 +35,9 @@ psxrl::test::CommandResult play_with_keys(const fs::path& dir, const std::string
   auto commands = [&](const std::string& text) {
     std::istringstream lines(text);
     for (std::string line; std::getline(lines, line);)
-      script << (line.rfind("sleep", 0) == 0 ? line : std::string(PSXRL_XDOTOOL) + " " + line) << "\n";
+      if (line.rfind("sleep", 0) == 0) script << line << "\n";
+      else if (line.rfind("!", 0) == 0) script << line.substr(1) << "\n";  // a shell command
+      else script << PSXRL_XDOTOOL << " " << line << "\n";
   };
   commands(keys);
   script << "wait $pid\ncode=$?\n";
@@ -69,6 +72,16 @@ TEST(PlayWindow, EscapeQuitsAtOnce) {
                           "sleep 0.3\n" + tap("Escape"));
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("episode 1: score 0, stopped, "), std::string::npos) << r.output;
+}
+
+TEST(PlayWindow, PStopsTheGameUntilPressedAgain) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run (CTest does)";
+  // 60 frames are one second of play: paused after 0.3 s, play is still there 3 s later.
+  auto r = play_with_keys(fs::path(PSXRL_TEST_OUT_DIR) / "keys_pause", "", "--game tumble --frames 60",
+                          "sleep 0.3\n" + tap("p") + "sleep 3\n!kill -0 $pid && echo still playing\n" + tap("p"));
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("still playing"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("episode 1: score 0, stopped, 60 frames"), std::string::npos) << r.output;
 }
 
 // Tumble made to start its levels from save states, as Kula World does: the same program and

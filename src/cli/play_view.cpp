@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <stdexcept>
 #include <thread>
 
 #include "gpu/png_writer.h"

@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 APT_PACKAGES=(
   cmake ninja-build g++ pkg-config
   libgtest-dev libpng-dev libsdl2-dev libosmesa6-dev libeigen3-dev
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev xvfb xauth xdotool
   libtorch-dev pybind11-dev liblua5.4-dev lua5.4 zlib1g-dev libtomlplusplus-dev libcli11-dev
   gcc-mipsel-linux-gnu binutils-mipsel-linux-gnu
   clang-16 libfuzzer-16-dev

@@ -1,5 +1,6 @@
-// `psxrl play`: plays greedy episodes of a level with a saved policy, headless, printing each
-// episode's score and outcome and optionally writing the picture after every move as PNG.
+// `psxrl play`: plays episodes of a level, by a saved policy (greedy) or by a person at the
+// keyboard or a gamepad, in an SDL window with sound or headless, printing each episode's score
+// and outcome and optionally recording a video or PNG pictures (docs/play.md).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -10,22 +11,16 @@
 #include "cli/cli.h"
 #include "cli/game_options.h"
 #include "cli/options.h"
+#include "cli/play.h"
 #include "core/console.h"
 #include "core/input_error.h"
+#include "frontend/keymap.h"
 #include "rl/agents/trainer.h"
 #include "rl/vec_env.h"
 
 namespace psxrl::cli {
 
 namespace {
-
-struct PlayOptions {
-  std::string game, obs, policy, frames_dir;
-  int level = 1;
-  std::uint64_t episodes = 1, seed = 0;
-  std::optional<std::uint32_t> max_moves;
-  bool headless = false;
-};
 
 // The policy's agent on an environment it was trained for; a mismatch throws
 // std::invalid_argument saying why.
@@ -60,71 +55,149 @@ LoadedPolicy load_policy(const PlayOptions& p, const rl::UserFiles& files) {
   return l;
 }
 
+// Human play needs no policy: the game (default Tumble) with an observation every game has.
+LoadedPolicy load_game(const PlayOptions& p, const rl::UserFiles& files) {
+  rl::EnvConfig env;
+  if (!p.game.empty()) env.game = p.game;
+  env.obs = p.obs.empty() ? "ram" : p.obs;
+  env.files = files;
+  LoadedPolicy l;
+  l.env = std::make_unique<rl::Env>(env);
+  return l;
+}
+
 std::string frame_path(const std::string& dir, std::uint64_t episode, std::uint32_t move) {
   char name[48];
   std::snprintf(name, sizeof name, "ep%03llu_move%04u.png", static_cast<unsigned long long>(episode), move);
   return (std::filesystem::path(dir) / name).string();
 }
 
-// One greedy episode; returns its last step and adds its emulated frames to `frames`.
-rl::StepResult play_episode(LoadedPolicy& l, const PlayOptions& p, std::uint64_t episode, std::uint64_t& frames) {
-  std::vector<float> s = agents::features(l.env->reset(p.level, rl::episode_seed(p.seed, 0, episode - 1)));
-  if (!p.frames_dir.empty()) l.env->console().save_screenshot(frame_path(p.frames_dir, episode, 0));
-  rl::StepResult r;
-  do {
-    r = l.env->step(l.agent->act(s, true));
-    s = agents::features(l.env->observation());
-    frames += r.info.game_frames;
-    if (!p.frames_dir.empty()) l.env->console().save_screenshot(frame_path(p.frames_dir, episode, r.info.moves));
-  } while (!r.terminated && !r.truncated);
-  return r;
+// Greedy episodes of the policy, every emulated frame going through the view; an episode ends
+// early when the view stops (the player closed the window, or --frames was reached).
+int play_policy(LoadedPolicy& l, const PlayOptions& p, PlayView& view) {
+  // Frames after the view stopped (the rest of the move under way) are emulated, not shown.
+  l.env->on_frame = [&view](std::span<const psx::StereoSample> audio) {
+    if (!view.stopped()) view.frame(audio);
+  };
+  for (std::uint64_t ep = 1; ep <= p.episodes && !view.stopped(); ++ep) {
+    std::uint64_t frames = 0;
+    rl::StepResult r;
+    std::vector<float> s = agents::features(l.env->reset(p.level, rl::episode_seed(p.seed, 0, ep - 1)));
+    if (!p.frames_dir.empty()) l.env->console().save_screenshot(frame_path(p.frames_dir, ep, 0));
+    do {
+      r = l.env->step(l.agent->act(s, true));
+      s = agents::features(l.env->observation());
+      frames += r.info.game_frames;
+      if (!p.frames_dir.empty()) l.env->console().save_screenshot(frame_path(p.frames_dir, ep, r.info.moves));
+    } while (!r.terminated && !r.truncated && !view.stopped());
+    std::string out = !r.info.outcome.empty() ? r.info.outcome : r.truncated ? "truncated" : "stopped";
+    print_episode(ep, r.info.score, out, r.info.moves, frames);
+  }
+  return kSuccess;
 }
 
 }  // namespace
 
-int play_command(const std::vector<std::string>& args) {
-  CLI::App app{"Plays a level with a saved policy (greedy: always the best-valued action), headless,\n"
-               "printing each episode's score, outcome, moves and emulated frames. The policy's own\n"
-               "observation is used; a policy made for another game, observation, network or\n"
-               "integration version is refused.",
-               "psxrl play"};
-  setup_app(app, kAgentExitCodes);
-  PlayOptions p;
-  rl::UserFiles files;
-  app.add_option("--policy", p.policy, "a run folder from psxrl train, or its checkpoint.psxrl")->type_name("PATH");
-  app.add_option("--game", p.game, "game integration (default: the policy's)")->type_name("NAME");
+void print_episode(std::uint64_t episode, std::int64_t score, const std::string& outcome,
+                   std::optional<std::uint32_t> moves, std::uint64_t frames) {
+  std::string m = moves ? std::to_string(*moves) + " moves, " : "";
+  std::printf("episode %llu: score %lld, %s, %s%llu frames\n", static_cast<unsigned long long>(episode),
+              static_cast<long long>(score), outcome.c_str(), m.c_str(), static_cast<unsigned long long>(frames));
+  std::fflush(stdout);
+}
+
+}  // namespace psxrl::cli
+
+namespace psxrl::cli {
+
+namespace {
+
+void add_play_options(CLI::App& app, PlayOptions& p) {
+  ViewOptions& v = p.view;
+  app.add_option("--policy", p.policy, "a run folder from psxrl train, or its checkpoint.psxrl; without it, you play")
+      ->type_name("PATH");
+  app.add_option("--game", p.game, "game integration (default: the policy's, else tumble)")->type_name("NAME");
   app.add_option("--level", p.level, "level to play (default 1)")->type_name("N");
   app.add_option("--obs", p.obs, "observation; must be the policy's (default: the policy's)")->type_name("NAME");
   app.add_option("--episodes", p.episodes, "episodes to play (default 1)")->type_name("N");
   app.add_option("--seed", p.seed, "seed of the episodes' randomness (default 0)")->type_name("S");
   app.add_option("--max-moves", p.max_moves, "move cap per episode (default: the game's)")->type_name("N");
-  app.add_option("--frames-dir", p.frames_dir, "write the picture after the reset and every move as PNG here")
+  app.add_flag("--headless", p.headless, "no window and no sound (also chosen when there is no display)");
+  app.add_option("--record", v.record, "record what play shows: FILE.mp4 (.mkv, .mov) with sound, or a PNG folder")
+      ->type_name("OUT");
+  app.add_option("--record-every", v.record_every, "record 1 picture in N frames (default 1)")->type_name("N");
+  app.add_option("--frames", v.max_frames, "stop after N emulated frames shown (default: no limit)")->type_name("N");
+  app.add_option("--scale", v.scale, "window height in multiples of the picture's (default 2 below 400 lines)")
+      ->type_name("K");
+  app.add_option("--window-screenshot", v.window_screenshot, "at the end, save the window's last picture as PNG")
+      ->type_name("FILE");
+  app.add_option("--frames-dir", p.frames_dir, "with --policy: the picture after the reset and every move as PNG")
       ->type_name("DIR");
-  app.add_flag("--headless", p.headless, "no window (the only mode so far: play is always headless)");
+}
+
+// Checks the options that need no game; returns a usage message or "".
+std::string check_options(const PlayOptions& p) {
+  if (p.view.record_every < 1) return "--record-every must be at least 1";
+  if (p.view.scale < 0) return "--scale must be at least 1";
+  if (p.policy.empty() && p.headless) return "human play (no --policy) needs the window: drop --headless";
+  if (p.policy.empty() && !p.frames_dir.empty()) return "--frames-dir counts a policy's moves: use --record DIR";
+  return "";
+}
+
+// Opens the view: the window unless --headless, falling back to headless (and saying so) when no
+// window can be opened. Human play without a window throws std::runtime_error.
+std::unique_ptr<PlayView> open_view(PlayOptions& p, rl::Env& env) {
+  p.view.title = "psxrl: " + env.game().title + ", level " + std::to_string(p.level);
+  p.view.window = !p.headless;
+  std::string problem = p.headless ? "" : frontend::display_problem();
+  if (problem.empty() && !p.headless) {
+    try {
+      return std::make_unique<PlayView>(p.view, env.console());
+    } catch (const std::runtime_error& e) {
+      problem = e.what();
+    }
+  }
+  if (!problem.empty()) {
+    if (p.policy.empty()) throw std::runtime_error("human play needs a window: " + problem);
+    std::fprintf(stderr, "psxrl play: %s: playing headless\n", problem.c_str());
+  }
+  p.view.window = false;
+  return std::make_unique<PlayView>(p.view, env.console());
+}
+
+}  // namespace
+
+int play_command(const std::vector<std::string>& args) {
+  CLI::App app{"Plays a level in a window with sound, or headless: with --policy, a saved policy plays greedily\n"
+               "(the policy's own observation; a policy made for another game, observation, network or\n"
+               "integration version is refused); without it, you play. Prints each episode's score and\n"
+               "outcome; --record writes a video or PNG pictures. Without a display, play runs headless.",
+               "psxrl play"};
+  setup_app(app, std::string(frontend::kControlsHelp) + "\n" + kAgentExitCodes);
+  PlayOptions p;
+  rl::UserFiles files;
+  add_play_options(app, p);
   add_user_file_options(app, files);
   if (auto code = parse_args(app, args)) return *code;
-  if (p.policy.empty()) return usage_error(app, "--policy is required (human play needs the window, not built yet)");
+  if (std::string why = check_options(p); !why.empty()) return usage_error(app, why);
 
   LoadedPolicy l;
+  std::unique_ptr<PlayView> view;
   try {
     if (!p.frames_dir.empty()) std::filesystem::create_directories(p.frames_dir);
-    l = load_policy(p, files);
+    l = p.policy.empty() ? load_game(p, files) : load_policy(p, files);
     if (p.level < 1 || p.level > l.env->game().level_count)
       throw std::invalid_argument("game '" + l.env->game().name + "' has levels 1 to " +
                                   std::to_string(l.env->game().level_count) + ", not " + std::to_string(p.level));
-  } catch (const std::exception& e) {  // the policy, names, game files, the frames folder
+    view = open_view(p, *l.env);
+  } catch (const std::exception& e) {  // the policy, names, game files, output folders, no window
     std::fprintf(stderr, "psxrl play: %s\n", e.what());
     return kBadInput;
   }
   try {
-    for (std::uint64_t ep = 1; ep <= p.episodes; ++ep) {
-      std::uint64_t frames = 0;
-      rl::StepResult r = play_episode(l, p, ep, frames);
-      std::printf("episode %llu: score %lld, %s, %u moves, %llu frames\n", static_cast<unsigned long long>(ep),
-                  static_cast<long long>(r.info.score), r.info.outcome.empty() ? "truncated" : r.info.outcome.c_str(),
-                  r.info.moves, static_cast<unsigned long long>(frames));
-      std::fflush(stdout);
-    }
+    int code = p.policy.empty() ? play_human(*l.env, p, *view) : play_policy(l, p, *view);
+    for (const std::string& line : view->finish()) std::printf("%s\n", line.c_str());
+    return code;
   } catch (const psx::InputError& e) {
     std::fprintf(stderr, "psxrl play: %s\n", e.what());
     return kBadInput;
@@ -132,7 +205,6 @@ int play_command(const std::vector<std::string>& args) {
     std::fprintf(stderr, "psxrl play: %s\n", e.what());
     return kProgramFailed;
   }
-  return kSuccess;
 }
 
 }  // namespace psxrl::cli

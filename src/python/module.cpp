@@ -17,4 +17,5 @@ PYBIND11_MODULE(_psxrl, m) {
   psxrl::python::bind_console(m);
   psxrl::python::bind_env(m);
   psxrl::python::bind_memsearch(m);
+  psxrl::python::bind_window(m);
 }

@@ -4,8 +4,10 @@
 // actions always give the same observations, rewards and flags. One thread at a time.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -100,6 +102,12 @@ class Env {
 
   // The console, for tools that show or record a game (play, record); agents never use it.
   psx::Console& console() { return *console_; }
+  // Called after every emulated frame of a step, with that frame's sound, for front ends that
+  // show or record the game (psxrl play); it must not use the environment.
+  std::function<void(std::span<const psx::StereoSample>)> on_frame;
+  // "win" or "lose" when the game is in one of those states now, else "" (human play checks it
+  // after every frame).
+  std::string outcome() const;
 
  private:
   void boot();
@@ -108,7 +116,6 @@ class Env {
   void bind_script();
   const LevelMap& map() const;
   void position(int& x, int& y, int& facing) const;
-  std::string outcome() const;
   double move_reward(std::int64_t score_delta, const std::string& outcome) const;
   std::uint32_t run_move(const Action& a, bool& hit_bound);
   std::uint32_t run_frames(int action);

@@ -13,6 +13,7 @@ namespace psxrl::rl {
 void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
   frame_audio_.clear();
   console_->take_audio(frame_audio_);
+  if (on_frame) on_frame(frame_audio_);
   if (!console_->fatal_error().empty())
     throw std::runtime_error("game '" + game_.name + "': the console stopped: " + console_->fatal_error());
   bool active = false;

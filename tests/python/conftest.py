@@ -1,6 +1,8 @@
 """Shared fixtures for the Python tests: the module under test comes from PYTHONPATH (CTest sets
 it to build/python), Tumble's program from the same build (or the installed package)."""
 import os
+import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -48,3 +50,31 @@ def level1_console():
     c = boot_tumble()
     start_level(c, 1)
     return c
+
+
+@pytest.fixture(scope="session")
+def x_display():
+    """An X display: the one set, else a private Xvfb for this test session (scripts/setup.sh
+    installs it; a missing Xvfb fails, it is not skipped: render_mode="human" must be tested)."""
+    if os.environ.get("DISPLAY"):
+        yield os.environ["DISPLAY"]
+        return
+    if shutil.which("Xvfb") is None:
+        pytest.fail("Xvfb is missing: run scripts/setup.sh (Debian package xvfb)")
+    read, write = os.pipe()
+    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1024x768x24", "-nolisten", "tcp"],
+                              pass_fds=(write,), stderr=subprocess.DEVNULL)
+    os.close(write)
+    with os.fdopen(read) as f:
+        number = f.readline().strip()  # Xvfb writes its display number once it accepts clients
+    assert number, "Xvfb did not start"
+    yield ":" + number
+    server.terminate()
+    server.wait()
+
+
+@pytest.fixture
+def display(x_display, monkeypatch):
+    """DISPLAY set for one test, for render_mode="human" and psxrl.Window."""
+    monkeypatch.setenv("DISPLAY", x_display)
+    return x_display

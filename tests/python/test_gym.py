@@ -21,7 +21,8 @@ def test_ids_are_registered_on_import():
 
 
 @pytest.mark.parametrize("obs", OBS_KINDS)
-def test_check_env(obs):
+def test_check_env(obs, display):
+    # display: check_env also renders in every mode of metadata["render_modes"], "human" included.
     env = gym.make("psxrl/Tumble-v0", obs=obs, render_mode="rgb_array").unwrapped
     check_env(env, skip_render_check=False)
     expected = gym.spaces.Dict if obs == "multimodal" else gym.spaces.Box

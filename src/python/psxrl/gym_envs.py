@@ -3,6 +3,8 @@
 Each ``step`` is one move of the game, delimited the seed's way in C++ (docs/environments.md);
 observations, rewards, flags and ``info`` are the C++ environment's, unchanged.
 """
+import time
+
 import gymnasium as gym
 import numpy as np
 from gymnasium import spaces
@@ -46,7 +48,10 @@ def _seed_for_cpp(env_rng, seed):
 class PsxrlEnv(gym.Env):
     """One game integration as a Gymnasium environment (actions: the integration's, Discrete)."""
 
-    metadata = {"render_modes": ["rgb_array"], "render_fps": 60}
+    # "human" shows each step's last picture in the play window of `psxrl play` (psxrl.Window),
+    # held for as long as the move took in the game: the console's 59.82 frames per second.
+    metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 60}
+    _CONSOLE_FPS = 53693175 / (3413 * 263)  # psx-spx "GPU Timings", NTSC
 
     def __init__(self, game="tumble", level=1, render_mode=None, **config):
         from . import Env
@@ -55,6 +60,9 @@ class PsxrlEnv(gym.Env):
             raise ValueError(f"render_mode must be one of {self.metadata['render_modes']}, got {render_mode!r}")
         self.render_mode = render_mode
         self.level = level
+        self.window = None  # the human-mode window, opened at the first picture
+        self._window_closed = False
+        self._due = 0.0  # host time when the picture shown may be replaced
         self.env = Env(game=game, **config)
         self.observation_space = observation_space(self.env.observation_spaces)
         self.action_space = spaces.Discrete(self.env.action_count)
@@ -63,16 +71,50 @@ class PsxrlEnv(gym.Env):
         super().reset(seed=seed)
         level = (options or {}).get("level", self.level)
         obs, info = self.env.reset(level, _seed_for_cpp(self.np_random, seed))
+        if self.render_mode == "human":
+            self._show(0)
         return obs, deterministic_info(info)
 
     def step(self, action):
         obs, reward, terminated, truncated, info = self.env.step(int(action))
+        if self.render_mode == "human":
+            self._show(info["game_frames"])
         return obs, reward, terminated, truncated, deterministic_info(info)
 
     def render(self):
         if self.render_mode == "rgb_array":
             return self.env.get_screen()
+        if self.render_mode == "human":
+            self._show(0)
         return None
+
+    def _show(self, frames):
+        """Human mode: shows the console's picture once the previous one has been up as long as the
+        move between them lasted in the game (``frames`` at the console's rate). Closing the window
+        (or Escape) stops showing; the environment goes on."""
+        from . import Window, display_problem
+
+        if self._window_closed:
+            return
+        picture = self.env.get_screen()
+        if self.window is None:
+            problem = display_problem()
+            if problem:
+                raise RuntimeError(f"render_mode='human' needs a display: {problem}")
+            title = f"psxrl: {self.spec.id if self.spec else type(self).__name__}"
+            self.window = Window(title, picture.shape[1], picture.shape[0])
+            self._due = time.monotonic()
+        self._due += frames / self._CONSOLE_FPS
+        time.sleep(max(0.0, self._due - time.monotonic()))
+        self.window.show(picture, read_back=True)  # window.picture() shows what the user saw
+        self._due = max(self._due, time.monotonic())  # a slow host does not bank time to rush later
+        if self.window.poll():
+            self.close()
+            self._window_closed = True
+
+    def close(self):
+        self.window = None  # the window closes when its last reference goes
+        super().close()
 
 
 class TumbleEnv(PsxrlEnv):

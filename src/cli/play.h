@@ -1,0 +1,30 @@
+// Shared pieces of `psxrl play`: its options, and the two ways to play a level (a saved policy
+// in play_command.cpp, a person in play_human.cpp), both through a PlayView.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "cli/play_view.h"
+#include "rl/env.h"
+
+namespace psxrl::cli {
+
+struct PlayOptions {
+  std::string game, obs, policy, frames_dir;
+  int level = 1;
+  std::uint64_t episodes = 1, seed = 0;
+  std::optional<std::uint32_t> max_moves;
+  bool headless = false;
+  ViewOptions view;
+};
+
+// Prints one episode's line: "episode N: score S, OUTCOME, M moves, F frames" (human play has
+// no moves and leaves them out).
+void print_episode(std::uint64_t episode, std::int64_t score, const std::string& outcome,
+                   std::optional<std::uint32_t> moves, std::uint64_t frames);
+
+// A person plays `p.level` of `env` in the view's window. Returns the exit code.
+int play_human(rl::Env& env, const PlayOptions& p, PlayView& view);
+
+}  // namespace psxrl::cli

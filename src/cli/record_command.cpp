@@ -1,6 +1,7 @@
 // `psxrl record`: records a play session for `psxrl memsearch`: every frame's pad input, RAM
-// snapshots at an interval and at marks, and the start state, into a session folder. Headless,
-// the input comes from an input script and the marks from a marks file.
+// snapshots at an interval and at marks, and the start state, into a session folder. A person
+// plays in psxrl play's window and sets marks with F1..F4; headless, the input comes from an
+// input script and the marks from a marks file.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "cli/game_options.h"
 #include "cli/input_script.h"
 #include "cli/options.h"
+#include "cli/play_view.h"
 #include "core/console.h"
 #include "core/input_error.h"
 #include "memsearch/marks.h"
@@ -24,6 +26,8 @@ namespace {
 const char* kRecordFooter =
     "Give either --game (booted as its integration boots it, to its ready point or a --level's\n"
     "start) or a program: --exe, --disc and/or --bios as psxrl run takes them.\n"
+    "Without --input you play in a window (psxrl play's controls); F1 to F4 set marks labelled by\n"
+    "--mark-labels; Escape or closing the window ends the recording, which is then written.\n"
     "\n"
     "exit codes:\n"
     "  0  the session was written\n"
@@ -33,7 +37,7 @@ const char* kRecordFooter =
     "  3  the program failed while recording\n";
 
 struct RecordArgs {
-  std::string game, exe, disc, out, input, marks;
+  std::string game, exe, disc, out, input, marks, mark_labels = "score,died,level_start,event";
   rl::UserFiles files;
   int level = 0;
   unsigned long long frames = 0;
@@ -50,7 +54,12 @@ struct RecordArgs {
     app.add_option("--input", input, "input script for port 1, as psxrl run --input takes it")->type_name("FILE");
     app.add_option("--marks", marks, "marks file: one 'FRAME LABEL' per line, set when frame FRAME ends")
         ->type_name("FILE");
-    app.add_option("--frames", frames, "frames to record (default: the script's last press plus 120)")->type_name("N");
+    app.add_option("--frames", frames,
+                   "frames to record (default: the script's last press plus 120; in the window, until you quit)")
+        ->type_name("N");
+    app.add_option("--mark-labels", mark_labels, "labels of the marks F1..F4 set in the window (default\n"
+                                                 "score,died,level_start,event)")
+        ->type_name("L1,L2,L3,L4");
     app.add_option("--interval", interval, "frames between RAM snapshots (default 60; 0: marks and the end only)")
         ->type_name("N");
   }
@@ -93,6 +102,43 @@ Booted boot(const RecordArgs& a) {
   return b;
 }
 
+std::vector<std::string> split_labels(const std::string& text) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : text + ",") {
+    if (c != ',') {
+      cur += c;
+      continue;
+    }
+    out.push_back(cur);
+    cur.clear();
+  }
+  return out;
+}
+
+// A person plays in the window; F1..F4 set marks. Ends at --frames or when the player quits.
+void record_in_window(psx::Console& console, memsearch::Recorder& rec, const RecordArgs& a,
+                      const std::vector<std::string>& labels) {
+  ViewOptions vo;
+  vo.title = "psxrl: record " + (a.game.empty() ? std::filesystem::path(a.exe.empty() ? a.files.disc : a.exe).filename().string() : a.game);
+  vo.max_frames = a.frames;
+  PlayView view(vo, console);
+  frontend::WindowInput in;
+  std::vector<psx::StereoSample> audio;
+  while (!view.stopped() && !console.stopped()) {
+    rec.run_frame(in.buttons, 0);
+    audio.clear();
+    console.take_audio(audio);
+    in = view.frame(audio);
+    if (in.mark) {
+      rec.mark(labels[static_cast<size_t>(in.mark - 1)]);
+      std::printf("mark '%s' at frame %llu\n", labels[static_cast<size_t>(in.mark - 1)].c_str(),
+                  static_cast<unsigned long long>(rec.frames() - 1));
+      std::fflush(stdout);
+    }
+  }
+}
+
 }  // namespace
 
 int record_command(const std::vector<std::string>& args) {
@@ -107,23 +153,47 @@ int record_command(const std::vector<std::string>& args) {
   if (a.game.empty() == (a.exe.empty() && a.files.disc.empty() && a.files.bios.empty()))
     return usage_error(app, "give either --game or a program (--exe, --disc or --bios)");
   if (a.level && a.game.empty()) return usage_error(app, "--level needs --game");
+  std::vector<std::string> labels = split_labels(a.mark_labels);
+  if (labels.size() != 4) return usage_error(app, "--mark-labels needs four labels separated by commas");
+  for (const std::string& l : labels) {
+    try {
+      memsearch::parse_marks("0 " + l + "\n", "--mark-labels");
+    } catch (const psx::InputError& e) {
+      return usage_error(app, std::string("--mark-labels: ") + e.what());
+    }
+  }
+  const bool window = a.input.empty() && a.marks.empty();
+  std::string no_display = window ? frontend::display_problem() : "";
+  if (!no_display.empty()) {
+    std::fprintf(stderr, "psxrl record: recording by hand needs a window: %s (record headless with --input)\n",
+                 no_display.c_str());
+    return kBadInput;
+  }
 
   try {
     std::vector<InputPress> presses = a.input.empty() ? std::vector<InputPress>{} : read_input_script(a.input);
     std::vector<memsearch::Mark> marks = a.marks.empty() ? std::vector<memsearch::Mark>{} : memsearch::read_marks(a.marks);
     unsigned long long frames = a.frames;
-    if (!frames) frames = (presses.empty() ? 0 : presses.back().frame + presses.back().hold) + 120;
+    if (!frames && !window) frames = (presses.empty() ? 0 : presses.back().frame + presses.back().hold) + 120;
     if (!marks.empty() && marks.back().frame >= frames)
       return usage_error(app, "mark at frame " + std::to_string(marks.back().frame) + " is past the last frame (" +
                                   std::to_string(frames - 1) + "): raise --frames");
     Booted booted = boot(a);
     psx::Console& console = booted.get();
     memsearch::Recorder rec(console, booted.source, a.interval);
-    std::vector<psx::u16> held = script_buttons(presses, frames);
-    size_t next_mark = 0;
-    for (unsigned long long f = 0; f < frames && !console.stopped(); ++f) {
-      rec.run_frame(held[f], 0);
-      for (; next_mark < marks.size() && marks[next_mark].frame == f; ++next_mark) rec.mark(marks[next_mark].label);
+    if (window) {
+      record_in_window(console, rec, a, labels);
+    } else {
+      std::vector<psx::u16> held = script_buttons(presses, frames);
+      size_t next_mark = 0;
+      for (unsigned long long f = 0; f < frames && !console.stopped(); ++f) {
+        rec.run_frame(held[f], 0);
+        for (; next_mark < marks.size() && marks[next_mark].frame == f; ++next_mark) rec.mark(marks[next_mark].label);
+      }
+    }
+    if (rec.frames() == 0) {
+      std::fprintf(stderr, "psxrl record: no frame was recorded: nothing written\n");
+      return kBadInput;
     }
     if (!console.fatal_error().empty()) {
       std::fprintf(stderr, "psxrl record: %s\n", console.fatal_error().c_str());

@@ -66,12 +66,23 @@ KeyCommand key_command(SDL_Keycode key) {
   }
 }
 
+int key_mark(SDL_Keycode key) {
+  switch (key) {
+    case SDLK_F1: return 1;
+    case SDLK_F2: return 2;
+    case SDLK_F3: return 3;
+    case SDLK_F4: return 4;
+    default: return 0;
+  }
+}
+
 const char* const kControlsHelp =
     "controls (human play, in the window):\n"
     "  arrows     d-pad             Z  Square      X  Cross      C  Circle     S  Triangle\n"
     "  Q  L1      W  R1             1  L2          2  R2\n"
     "  Enter      Start             Backspace  Select\n"
     "  P or Space pause/resume      F5  save the level-start state (levels that start from states)\n"
+    "  F1 to F4   set a mark (psxrl record: --mark-labels names them)\n"
     "  Escape or closing the window quits\n"
     "  a gamepad (SDL GameController): A Cross, B Circle, X Square, Y Triangle, shoulders L1/R1,\n"
     "  triggers L2/R2, Back Select, Start Start, d-pad, stick clicks L3/R3\n";

@@ -18,6 +18,8 @@ psx::u16 controller_button(SDL_GameControllerButton button);
 // The pad_button bit an analog trigger (L2/R2) presses when held past half way, or 0.
 psx::u16 controller_trigger(SDL_GameControllerAxis axis);
 KeyCommand key_command(SDL_Keycode key);
+// F1..F4 set marks 1..4 while recording a session (psxrl record); 0 for other keys.
+int key_mark(SDL_Keycode key);
 
 // The mapping as text, for `psxrl play --help`.
 extern const char* const kControlsHelp;

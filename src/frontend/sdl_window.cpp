@@ -113,6 +113,7 @@ WindowInput SdlWindow::poll() {
       in.quit |= c == KeyCommand::Quit;
       in.toggle_pause |= c == KeyCommand::Pause;
       in.save_state |= c == KeyCommand::SaveState;
+      if (int m = key_mark(e.key.keysym.sym)) in.mark = m;
     }
   }
   int count = 0;

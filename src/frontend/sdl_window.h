@@ -29,6 +29,7 @@ struct WindowInput {
   bool quit = false;
   bool toggle_pause = false;
   bool save_state = false;
+  int mark = 0;  // F1..F4 pressed: 1..4 (the last one when several were)
 };
 
 class SdlWindow {

@@ -54,6 +54,12 @@ TEST(Keymap, PlayerCommands) {
   EXPECT_EQ(key_command(SDLK_F5), KeyCommand::SaveState);
   EXPECT_EQ(key_button(SDLK_p), 0);  // no key is both
   EXPECT_EQ(key_button(SDLK_SPACE), 0);
+  // F1..F4 set marks 1..4 while recording (docs/play.md); they press no pad button.
+  EXPECT_EQ(key_mark(SDLK_F1), 1);
+  EXPECT_EQ(key_mark(SDLK_F4), 4);
+  EXPECT_EQ(key_mark(SDLK_F5), 0);
+  EXPECT_EQ(key_button(SDLK_F1), 0);
+  EXPECT_EQ(key_command(SDLK_F1), KeyCommand::None);
 }
 
 }  // namespace

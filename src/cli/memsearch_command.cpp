@@ -169,7 +169,7 @@ int memsearch_command(const std::vector<std::string>& args) {
       search.apply(q);
       std::printf("%-40s %zu candidates\n", q.c_str(), search.count());
     }
-    if (!a.queries.empty() || a.integration.empty()) {
+    if (!a.queries.empty() || (a.integration.empty() && !a.verify)) {
       if (search.count() > kMaxListed) std::printf("%zu candidates: too many to rank, add queries\n", search.count());
       else print_table(search, a.top);
     }

@@ -18,6 +18,7 @@
 #include "core/bus.h"
 #include "core/cdrom/cdrom.h"
 #include "core/cpu/cpu.h"
+#include "core/cpu/idle_skip.h"
 #include "core/dma.h"
 #include "core/gte/gte.h"
 #include "core/input_error.h"
@@ -74,6 +75,13 @@ class Console : private CpuHooks {
   bool stopped() const { return exit_code_.has_value() || !fatal_error_.empty(); }
   std::optional<u32> exit_code() const { return exit_code_; }
   const std::string& fatal_error() const { return fatal_error_; }
+
+  // Idle-loop skipping (core/cpu/idle_skip.h), on by default: loops that only wait for the next
+  // event are accounted for without executing them. The results are bit-identical either way;
+  // turning it off is for comparing that, and for measuring.
+  void set_idle_skip(bool on) { cpu_.set_idle_skip(on ? &idle_skip_ : nullptr); }
+  bool idle_skip() const { return cpu_.idle_skip_enabled(); }
+  const IdleSkip::Stats& idle_skip_stats() const { return idle_skip_.stats(); }
 
   Cycles cycles() const { return sched_.now(); }
   u64 frames() const { return frames_; }
@@ -182,6 +190,7 @@ class Console : private CpuHooks {
   Bus bus_;
   Gte gte_;
   Cpu cpu_;
+  IdleSkip idle_skip_;
   HleBios hle_;
   Cdrom cdrom_;
   Sio0 sio0_;

@@ -1,7 +1,10 @@
 // R3000A instruction semantics (psx-spx "CPU Specifications"), included by the translation units
 // that instantiate CpuT: cpu.cpp for the console's Bus, and the CPU unit tests for a test bus.
 #pragma once
+#include <type_traits>
+
 #include "core/cpu/cpu.h"
+#include "core/cpu/idle_skip.h"
 
 namespace psx {
 
@@ -41,7 +44,16 @@ void CpuT<BusT>::set_pc(u32 pc) {
 template <class BusT>
 void CpuT<BusT>::run() {
   stop_ = false;
-  while (!stop_ && sched_.now() < sched_.next_deadline()) step();
+  while (!stop_ && sched_.now() < sched_.next_deadline()) {
+    if constexpr (std::is_same_v<BusT, Bus>) {
+      if (pc_ == loop_head_ && idle_skip_) {
+        loop_head_ = kNoLoopHead;
+        idle_skip_->at_loop_head(*this);
+        continue;
+      }
+    }
+    step();
+  }
 }
 
 template <class BusT>

@@ -106,6 +106,22 @@ TEST(IdleSkip, EqualityExitOnAnUpCounterIsHonoured) {
   EXPECT_GE(on.s1, 1u);
 }
 
+// JOY_STAT: bits 0-10 hold still between events, bits 11-31 are the baud timer, which counts.
+TEST(IdleSkip, JoystatPollOnStableBitsIsSkipped) {
+  std::vector<u32> code = vblank_wait();
+  code[4] = lw(kT2, 0x1044, kT0);
+  code[6] = andi(kT2, kT2, 0x200);  // bit 9, the interrupt request (an /ACK that never comes here)
+  EXPECT_GT(compare(code).stats.skips, 0u);
+}
+
+TEST(IdleSkip, LoopKeepingTheBaudTimerIsNotSkipped) {
+  std::vector<u32> code = vblank_wait();
+  code[4] = lw(kT2, 0x1044, kT0);
+  code[6] = andi(kT4 + 1, kT2, 0x200);  // t5 = bit 9, t2 keeps the whole word, timer included
+  code[7] = bne(kT4 + 1, 0, 5);
+  EXPECT_EQ(compare(code).stats.skips, 0u);
+}
+
 TEST(IdleSkip, LoopThatStoresIsNotSkipped) {
   std::vector<u32> code = vblank_wait();
   code[5] = sw(kT2, 0x100, 0);  // the load delay slot now stores into RAM

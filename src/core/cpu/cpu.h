@@ -118,13 +118,10 @@ class CpuT {
     next_pc_ = target;
     arm_hook(target);
   }
-  // A branch that may close a loop: a taken one to a little before itself names a loop head,
-  // unless the idle skipper has already ruled that loop out.
+  // A branch that may close a loop: a taken one to a little before itself names a loop head.
   void loop_branch(u32 target, bool taken) {
     branch(target, taken);
-    if (taken && target <= current_pc_ && current_pc_ - target < kIdleLoopBytes &&
-        idle_rejected_[(target >> 2) % idle_rejected_.size()] != target)
-      loop_head_ = target;
+    if (taken && target <= current_pc_ && current_pc_ - target < kIdleLoopBytes) loop_head_ = target;
   }
   void arm_hook(u32 target) {
     u32 p = target & 0x1FFFFFFF;
@@ -167,12 +164,6 @@ class CpuT {
   // Host-side idle-skip bookkeeping (not machine state, not saved).
   IdleSkip* idle_skip_ = nullptr;
   u32 loop_head_ = kNoLoopHead;
-  std::array<u32, 64> idle_rejected_ = make_rejected();
-  static std::array<u32, 64> make_rejected() {
-    std::array<u32, 64> a;
-    a.fill(kNoLoopHead);
-    return a;
-  }
 };
 
 using Cpu = CpuT<Bus>;

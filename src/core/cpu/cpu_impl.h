@@ -100,11 +100,14 @@ void CpuT<BusT>::step() {
     execute(instr);
   }
   // The load issued by the previous instruction lands now; this instruction's load is pending.
+  // Without one the pipeline holds zero rather than an old value, so that what the state records
+  // depends only on the last instruction (idle skipping relies on it, idle_skip.h).
   regs_[load_reg_] = load_val_;
   regs_[0] = 0;
   load_reg_ = new_load_reg_;
   load_val_ = new_load_val_;
   new_load_reg_ = 0;
+  new_load_val_ = 0;
 }
 
 template <class BusT>

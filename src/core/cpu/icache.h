@@ -46,7 +46,6 @@ class ICache {
   void write_tag(u32 vaddr, u32 phys, u32 data) { tags_[line(vaddr)] = (phys & kTagMask) | (data & 0xF); }
 
   u32 tag(u32 line_index) const { return tags_[line_index]; }
-  bool operator==(const ICache&) const = default;
 
   void do_state(StateIO& s) {
     s.section("ICAC", 1);

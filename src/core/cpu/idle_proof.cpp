@@ -35,7 +35,7 @@ IdleProof::Kind IdleProof::classify(u32 instr) {
 }
 
 IdleProof::IdleProof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg, u32 load_val)
-    : after_(after), load_reg_(load_reg), load_val_(load_val), start_load_reg_(load_reg), start_load_val_(load_val) {
+    : after_(after), load_reg_(load_reg), load_val_(constant(load_val)), start_load_reg_(load_reg), start_load_val_(load_val) {
   for (u32 r = 0; r < 32; ++r) {
     steps_[r] = after[r] - before[r];
     regs_[r] = {after[r], steps_[r], true};
@@ -85,19 +85,26 @@ void IdleProof::write(u32 r, const Val& v) {
   if (load_reg_ == r) load_reg_ = 0;
 }
 
-void IdleProof::delayed_load(u32 r, u32 v) {
+void IdleProof::delayed_load(u32 r, const Val& v) {
   if (load_reg_ == r) load_reg_ = 0;
   new_reg_ = r;
   new_val_ = v;
 }
 
+// v AND mask: a constant when every bit the mask keeps is known.
+IdleProof::Val IdleProof::and_mask(const Val& v, u32 mask) {
+  if (v.known && v.step == 0 && (mask & ~v.bits) == 0) return constant(v.base & mask);
+  if (mask == 0) return constant(0);
+  return unknown();
+}
+
 IdleProof::Val IdleProof::add(const Val& a, const Val& b) {
-  if (!a.known || !b.known) return unknown();
+  if (!a.affine() || !b.affine()) return unknown();
   return {a.base + b.base, a.step + b.step, true};
 }
 
 IdleProof::Val IdleProof::compare(const Val& a, const Val& b, bool sign) {
-  if (!a.known || !b.known) return unknown();
+  if (!a.affine() || !b.affine()) return unknown();
   return constant(less(a, b, sign) ? 1 : 0);
 }
 
@@ -109,7 +116,7 @@ bool IdleProof::alu(u32 instr) {
     case 0x09: write(rt(instr), add(s, constant(simm(instr)))); break;      // ADDIU
     case 0x0A: write(rt(instr), compare(s, constant(simm(instr)), true)); break;   // SLTI
     case 0x0B: write(rt(instr), compare(s, constant(simm(instr)), false)); break;  // SLTIU
-    case 0x0C: write(rt(instr), s.constant() ? constant(s.base & i) : i == 0 ? constant(0) : unknown()); break;
+    case 0x0C: write(rt(instr), and_mask(s, i)); break;  // ANDI
     case 0x0D: write(rt(instr), s.constant() ? constant(s.base | i) : i == 0 ? s : unknown()); break;
     case 0x0E: write(rt(instr), s.constant() ? constant(s.base ^ i) : i == 0 ? s : unknown()); break;
     case 0x0F: write(rt(instr), constant(i << 16)); break;  // LUI
@@ -125,15 +132,15 @@ bool IdleProof::special(u32 instr) {
   const bool s0 = s.constant() && s.base == 0, t0 = t.constant() && t.base == 0;
   Val r;
   switch (instr & 63) {
-    case 0x00: r = t.known ? Val{t.base << sh, t.step << sh, true} : unknown(); break;  // SLL
+    case 0x00: r = t.affine() ? Val{t.base << sh, t.step << sh} : unknown(); break;  // SLL
     case 0x02: r = sh == 0 ? t : t.constant() ? constant(t.base >> sh) : unknown(); break;  // SRL
     case 0x03: r = sh == 0 ? t : t.constant() ? constant(u32(s32(t.base) >> sh)) : unknown(); break;  // SRA
     case 0x04: r = both ? constant(t.base << (s.base & 31)) : unknown(); break;                    // SLLV
     case 0x06: r = both ? constant(t.base >> (s.base & 31)) : unknown(); break;                    // SRLV
     case 0x07: r = both ? constant(u32(s32(t.base) >> (s.base & 31))) : unknown(); break;         // SRAV
     case 0x21: r = add(s, t); break;                                                               // ADDU
-    case 0x23: r = add(s, t.known ? Val{0u - t.base, 0u - t.step, true} : unknown()); break;       // SUBU
-    case 0x24: r = both ? constant(s.base & t.base) : (s0 || t0) ? constant(0) : unknown(); break;  // AND
+    case 0x23: r = add(s, t.affine() ? Val{0u - t.base, 0u - t.step} : unknown()); break;         // SUBU
+    case 0x24: r = t.constant() ? and_mask(s, t.base) : s.constant() ? and_mask(t, s.base) : unknown(); break;  // AND
     case 0x25: r = both ? constant(s.base | t.base) : s0 ? t : t0 ? s : unknown(); break;          // OR
     case 0x26: r = both ? constant(s.base ^ t.base) : s0 ? t : t0 ? s : unknown(); break;          // XOR
     case 0x27: r = both ? constant(~(s.base | t.base)) : unknown(); break;                         // NOR
@@ -163,7 +170,7 @@ bool IdleProof::control(const IdleStep* path, u32 n, u32 i) {
       if ((instr & 63) == 0x09) write(rd(instr), constant(pc + 8));
       break;
     case 0x01:
-      if (!s.known) return false;
+      if (!s.affine()) return false;
       taken = (rt(instr) & 1) ? !less(s, zero, true) : less(s, zero, true);  // BGEZ : BLTZ
       break;
     case 0x02: target = absolute; break;  // J
@@ -173,12 +180,12 @@ bool IdleProof::control(const IdleStep* path, u32 n, u32 i) {
       break;
     case 0x04:
     case 0x05:  // BEQ, BNE
-      if (!s.known || !t.known) return false;
+      if (!s.affine() || !t.affine()) return false;
       taken = equal(s, t) == ((instr >> 26) == 0x04);
       break;
     case 0x06:
     case 0x07:  // BLEZ, BGTZ
-      if (!s.known) return false;
+      if (!s.affine()) return false;
       taken = less(zero, s, true) == ((instr >> 26) == 0x07);
       break;
     default: return false;
@@ -190,13 +197,14 @@ bool IdleProof::run(const IdleStep* path, u32 n) {
   for (u32 i = 0; i < n; ++i) {
     const u32 instr = path[i].instr;
     new_reg_ = 0;
+    new_val_ = constant(0);
     bool ok = false;
     switch (classify(instr)) {
       case Kind::Alu: ok = alu(instr); break;
       case Kind::Load: {
         const Val addr = add(regs_[rs(instr)], constant(simm(instr)));
         ok = addr.constant() && addr.base == path[i].load_addr;
-        if (ok) delayed_load(rt(instr), path[i].load_value);
+        if (ok) delayed_load(rt(instr), partial(path[i].load_value, path[i].load_bits));
         break;
       }
       case Kind::Branch: ok = control(path, n, i); break;
@@ -204,15 +212,16 @@ bool IdleProof::run(const IdleStep* path, u32 n) {
     }
     if (!ok) return false;
     // As CpuT::step: the previous instruction's load lands, this one's is in flight.
-    regs_[load_reg_] = constant(load_val_);
+    regs_[load_reg_] = load_val_;
     regs_[0] = constant(0);
     load_reg_ = new_reg_;
     load_val_ = new_val_;
   }
-  if (load_reg_ != start_load_reg_ || (load_reg_ && load_val_ != start_load_val_)) return false;
+  // The pipeline at the head must be as it was, value included (a save state records it).
+  if (load_reg_ != start_load_reg_ || !load_val_.constant() || load_val_.base != start_load_val_) return false;
   for (u32 r = 1; r < 32; ++r) {
     const Val& v = regs_[r];
-    if (!v.known || v.step != steps_[r] || v.base != after_[r] + steps_[r]) return false;
+    if (!v.affine() || v.step != steps_[r] || v.base != after_[r] + steps_[r]) return false;
   }
   return true;
 }

@@ -18,6 +18,7 @@ struct IdleStep {
   u32 instr;
   u32 load_addr;   // loads: the address read
   u32 load_value;  // ... and the value the load delivered (memory cannot change before an event)
+  u32 load_bits;   // ... and which bits of it cannot (the others count time, e.g. JOY_STAT's baud timer)
 };
 
 class IdleProof {
@@ -35,14 +36,18 @@ class IdleProof {
   u64 max_k() const { return max_k_; }
 
  private:
+  // base + k*step when known; a constant (step 0) may have only some bits known.
   struct Val {
     u32 base = 0;
     u32 step = 0;
-    bool known = true;  // false: not of the form base + k*step
-    bool constant() const { return known && step == 0; }
+    bool known = true;
+    u32 bits = ~0u;  // the known bits of a constant
+    bool affine() const { return known && bits == ~0u; }
+    bool constant() const { return affine() && step == 0; }
   };
-  static Val unknown() { return {0, 0, false}; }
-  static Val constant(u32 v) { return {v, 0, true}; }
+  static Val unknown() { return {0, 0, false, 0}; }
+  static Val constant(u32 v) { return {v, 0, true, ~0u}; }
+  static Val partial(u32 v, u32 bits) { return {v & bits, 0, true, bits}; }
 
   void limit(u64 k) { max_k_ = k < max_k_ ? k : max_k_; }
   void no_wrap(const Val& v, bool sign);
@@ -55,13 +60,14 @@ class IdleProof {
   bool special(u32 instr);
   bool control(const IdleStep* path, u32 n, u32 i);
   void write(u32 r, const Val& v);
-  void delayed_load(u32 r, u32 v);
+  void delayed_load(u32 r, const Val& v);
+  Val and_mask(const Val& v, u32 mask);
 
   std::array<Val, 32> regs_{};
   std::array<u32, 32> after_{};
   std::array<u32, 32> steps_{};
-  u32 load_reg_ = 0, load_val_ = 0;   // the load landing after the current instruction
-  u32 new_reg_ = 0, new_val_ = 0;     // the load the current instruction issues
+  u32 load_reg_ = 0, new_reg_ = 0;  // the load landing after the current instruction, the one it issues
+  Val load_val_, new_val_;
   u32 start_load_reg_ = 0, start_load_val_ = 0;
   u64 max_k_ = ~u64{0};
 };

@@ -25,6 +25,7 @@
 #include <array>
 
 #include "core/cpu/idle_proof.h"
+#include "core/scheduler.h"
 #include "core/types.h"
 
 namespace psx {
@@ -48,16 +49,24 @@ class IdleSkip {
   const Stats& stats() const { return stats_; }
 
  private:
-  enum class Outcome { Skipped, Retry, Reject };
-  Outcome examine(CpuT<Bus>& cpu);
+  // Records and proves one iteration from the loop head; skips and returns true when it can.
+  bool examine(CpuT<Bus>& cpu);
 
-  // Backoff after a loop that could not be skipped this time (a dynamic reason: an event due
-  // within the iteration, a first iteration that filled the i-cache): examine it again only after
-  // a few visits, more the more often it failed.
-  u32 backoff_head_ = 1;
-  u32 backoff_visits_ = 0;
-  u32 backoff_failures_ = 0;
+  // A loop that could not be skipped (it stores, reads a timer, exits, or an event is due within
+  // its iteration) is examined again only after 2^failures - 1 more visits to its head, so loops
+  // that never qualify cost little.
+  static constexpr u32 kMaxBackoff = 8;
+  struct Backoff {
+    u32 head = 1;
+    u32 visits = 0;
+    u32 failures = 0;
+  };
+  std::array<Backoff, 64> backoff_{};
+  // The loop last proven and what one iteration of it costs.
+  u32 last_head_ = 1;
+  Cycles last_cost_ = 0;
   std::array<IdleStep, kMaxPath> path_{};
+  std::array<u32, kMaxPath> tags_{};  // i-cache tag of each step's line before its fetch
   u32 path_len_ = 0;
   Stats stats_;
 };

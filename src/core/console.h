@@ -116,6 +116,25 @@ class Console : private CpuHooks {
   void save_state_file(const std::string& path, bool compress = true);
   void load_state_file(const std::string& path);
 
+  // In-memory snapshots for fast resets (an environment returning to its start many times): the
+  // console's state as it serialises it, without the save-state container's copy, checksum and
+  // rollback copy. restore() accepts a snapshot of any console with the same BIOS and program
+  // (others throw StateError, the console unchanged) and leaves the console as load_state()
+  // would. The snapshot's buffer is reused when it is taken again.
+  class Snapshot {
+   public:
+    bool empty() const { return payload_.empty(); }
+    size_t size() const { return payload_.size(); }
+
+   private:
+    friend class Console;
+    std::vector<u8> payload_;
+    u64 bios_hash_ = 0;
+    u64 program_hash_ = 0;
+  };
+  void snapshot(Snapshot& out);
+  void restore(const Snapshot& snap);
+
   // Video and audio for the host, without per-pixel copies. The frame is the displayed area as
   // RGB888 at its real size (e.g. 320x240), refreshed at each VBlank; the VRAM view is the GPU's
   // 1024x512 16-bit memory. take_audio() hands over the 44.1 kHz stereo samples produced since
@@ -177,6 +196,7 @@ class Console : private CpuHooks {
 
  private:
   void on_reach(u32 pc) override;
+  void drop_stale_audio();
   u8* host_pointer(u32 addr, u32 width) const;
   static int port_index(int port);
   void release_timed_buttons();

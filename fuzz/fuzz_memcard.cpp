@@ -36,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, size_t size) {
     psx::StateIO writer;
     card->do_state(writer);
     std::vector<psx::u8> state = writer.buffer();
-    const size_t fields = 8 + MemoryCard::kSize;
+    const size_t fields = 12 + MemoryCard::kSize;  // section tag, version and length, then the image
     const size_t end = fields + std::min<size_t>(in.u16(), state.size() - fields);
     for (size_t i = fields; i < end; ++i) state[i] = in.byte();
     psx::StateIO reader(state.data(), state.size());

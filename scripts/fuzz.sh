@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_PER_TARGET=${1:-5}
-TARGETS=(cue disc exe state memcard cpu gpu input_script level_map integration)
+TARGETS=(cue disc exe state memcard cpu gpu input_script level_map integration memsearch)
 
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
 launcher=()

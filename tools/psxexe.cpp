@@ -7,7 +7,10 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <stdexcept>
 #include <vector>
+
+#include "core/atomic_file.h"
 
 namespace {
 
@@ -81,12 +84,11 @@ int main(int argc, char** argv) {
   const char* marker = "Sony Computer Entertainment Inc. for North America area";
   std::memcpy(&exe[0x4C], marker, std::strlen(marker));
 
-  std::string tmp = out + ".tmp";
-  {
-    std::ofstream o(tmp, std::ios::binary);
-    o.write(reinterpret_cast<const char*>(exe.data()), std::streamsize(exe.size()));
-    if (!o) return fail(tmp, "cannot write");
+  try {
+    psx::write_file_atomically(out, exe.data(), exe.size());
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "psxexe: %s\n", e.what());
+    return 2;
   }
-  if (std::rename(tmp.c_str(), out.c_str()) != 0) return fail(out, "cannot rename temporary file into place");
   return 0;
 }

@@ -17,5 +17,7 @@ enum ExitCode : int {
 int run_command(const std::vector<std::string>& args);
 int train_command(const std::vector<std::string>& args);
 int play_command(const std::vector<std::string>& args);
+int record_command(const std::vector<std::string>& args);
+int memsearch_command(const std::vector<std::string>& args);
 
 }  // namespace psxrl::cli

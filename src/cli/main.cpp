@@ -11,9 +11,11 @@ const char* kHelp =
     "usage: psxrl <command> [options]\n"
     "\n"
     "commands:\n"
-    "  run     run PlayStation software headless (see psxrl run --help)\n"
-    "  train   train an agent on a game level (see psxrl train --help)\n"
-    "  play    play a level with a saved policy, printing each episode's score (see psxrl play --help)\n"
+    "  run        run PlayStation software headless (see psxrl run --help)\n"
+    "  train      train an agent on a game level (see psxrl train --help)\n"
+    "  play       play a level with a saved policy, printing each episode's score (see psxrl play --help)\n"
+    "  record     record a play session (inputs, RAM snapshots, marks) for memsearch\n"
+    "  memsearch  find a game's variables in a recorded session's RAM (see docs/memsearch.md)\n"
     "\n"
     "exit codes:\n"
     "  0  success\n"
@@ -36,6 +38,8 @@ int main(int argc, char** argv) {
   if (cmd == "run") return psxrl::cli::run_command(args);
   if (cmd == "train") return psxrl::cli::train_command(args);
   if (cmd == "play") return psxrl::cli::play_command(args);
+  if (cmd == "record") return psxrl::cli::record_command(args);
+  if (cmd == "memsearch") return psxrl::cli::memsearch_command(args);
   std::fprintf(stderr, "psxrl: unknown command '%s'\n\n%s", cmd.c_str(), kHelp);
   return psxrl::cli::kUsage;
 }

@@ -1,6 +1,6 @@
 // `psxrl run`: boots a PS-X EXE (with a BIOS or the HLE kernel), a disc, or a BIOS alone headless,
 // prints the program's TTY output, and exits with the program's exit code or when the frame/cycle
-// limit is reached.
+// limit is reached, with a summary of the run on standard error (run_summary.h).
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -13,6 +13,7 @@
 #include "cli/input_script.h"
 #include "cli/options.h"
 #include "cli/pacer.h"
+#include "cli/run_summary.h"
 #include "core/console.h"
 
 namespace psxrl::cli {
@@ -61,10 +62,10 @@ struct ScreenshotAt {
 };
 
 // Runs `frames` frames one at a time, pressing the script's buttons on port 1 before the frame
-// each is due in and writing the screenshots due when a frame ends, paced to real time when a
-// pacer is given. A screenshot that cannot be written throws InputError.
+// each is due in and writing the screenshots due when a frame ends (adding them to `written`),
+// paced to real time when a pacer is given. A screenshot that cannot be written throws InputError.
 void run_scripted(psx::Console& console, unsigned long long frames, const std::vector<InputPress>& presses,
-                  const std::vector<ScreenshotAt>& shots, Pacer* pacer) {
+                  const std::vector<ScreenshotAt>& shots, Pacer* pacer, std::vector<std::string>& written) {
   size_t next_press = 0;
   for (unsigned long long f = 0; f < frames && !console.stopped(); ++f) {
     for (; next_press < presses.size() && presses[next_press].frame == f; ++next_press)
@@ -72,7 +73,10 @@ void run_scripted(psx::Console& console, unsigned long long frames, const std::v
     console.run_frame();
     if (pacer) pacer->wait_frame();
     for (const ScreenshotAt& shot : shots)
-      if (shot.frame == f) console.save_screenshot(shot.path);
+      if (shot.frame == f) {
+        console.save_screenshot(shot.path);
+        written.push_back(shot.path);
+      }
   }
 }
 
@@ -181,23 +185,32 @@ int run_command(const std::vector<std::string>& args) {
 
   if (!wav.empty()) console.keep_all_audio();
   Pacer pacer(60000.0 / 1001.0);  // NTSC frame rate
+  std::vector<std::string> written;
   try {
     if (cycles) console.run_cycles(cycles);
     else if (!scripted) console.run_frames(frames);
-    else run_scripted(console, frames, presses, shots, realtime ? &pacer : nullptr);
+    else run_scripted(console, frames, presses, shots, realtime ? &pacer : nullptr, written);
     std::fflush(stdout);
-    if (!screenshot.empty()) console.save_screenshot(screenshot);
-    if (!vram_png.empty()) console.save_vram_png(vram_png);
+    if (!screenshot.empty()) {
+      console.save_screenshot(screenshot);
+      written.push_back(screenshot);
+    }
+    if (!vram_png.empty()) {
+      console.save_vram_png(vram_png);
+      written.push_back(vram_png);
+    }
     if (!wav.empty()) {
       std::vector<psx::StereoSample> audio;
       console.take_audio(audio);
       psx::Console::save_wav(wav, audio);
+      written.push_back(wav);
     }
   } catch (const psx::InputError& e) {
     std::fflush(stdout);
     std::fprintf(stderr, "psxrl run: %s\n", e.what());
     return kBadInput;
   }
+  if (!quiet) print_run_summary(stderr, console, exe, written);
 
   if (!console.fatal_error().empty()) {
     std::fprintf(stderr, "psxrl run: %s\n", console.fatal_error().c_str());

@@ -1,25 +1,75 @@
-// Atomic file writing: temporary file, then rename.
+// Atomic file writing: exclusive temporary file, write, fsync, rename, directory fsync.
 #include "core/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 namespace psx {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what, int err) {
+  throw std::runtime_error(path + ": " + what + ": " + std::strerror(err));
+}
+
+// Creates a temporary file next to `path` that no other writer has: O_EXCL refuses a name that
+// exists, so a collision (another thread of this process, or a stale file) moves on to the next.
+int create_temporary(const std::string& path, std::string& tmp) {
+  const std::string stem = path + ".tmp." + std::to_string(::getpid()) + ".";
+  for (unsigned n = 0; n < 10000; ++n) {
+    tmp = stem + std::to_string(n);
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) return fd;
+    if (errno != EEXIST) fail(path, "cannot create the temporary file " + tmp, errno);
+  }
+  fail(path, "cannot create a temporary file (" + stem + "0 to 9999 all exist)", EEXIST);
+}
+
+bool write_all(int fd, const u8* data, size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    data += n;
+    size -= size_t(n);
+  }
+  return true;
+}
+
+// After a rename, the directory entry reaches the disk only when the directory is synced. A
+// failure here leaves the new file complete and in place, so it is not reported.
+void sync_directory(const std::string& path) {
+  std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const u8* data, size_t size) {
+  std::string tmp;
+  const int fd = create_temporary(path, tmp);
+  bool ok = write_all(fd, data, size) && ::fsync(fd) == 0;
+  int err = errno;
+  if (::close(fd) != 0 && ok) ok = false, err = errno;
+  if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) ok = false, err = errno;
+  if (!ok) {
+    ::unlink(tmp.c_str());
+    fail(path, "write failed", err);
+  }
+  sync_directory(path);
+}
 
 void write_file_atomically(const std::string& path, const std::vector<u8>& data) {
-  std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw std::runtime_error(path + ": cannot create " + tmp + ": " + std::strerror(errno));
-  // An empty vector's data() may be null, which fwrite must not be given even for 0 bytes.
-  bool ok = data.empty() || std::fwrite(data.data(), 1, data.size(), f) == data.size();
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int saved_errno = errno;
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": write failed: " + std::strerror(saved_errno));
-  }
+  write_file_atomically(path, data.data(), data.size());
 }
 
 }  // namespace psx

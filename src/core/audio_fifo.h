@@ -40,6 +40,7 @@ class AudioFifo {
     s.pod(head_);
     s.pod(count_);
     if (s.loading() && (head_ >= kCapacity || count_ > kCapacity)) s.fail("audio FIFO indices out of range");
+    s.end_section("AFIF");
   }
 
  private:

@@ -73,7 +73,15 @@ void Bus::load_bios(const std::vector<u8>& image) {
 }
 
 void Bus::report_unmapped(u32 vaddr, const char* what) {
-  if (unmapped_[vaddr]++ != 0 || !on_log) return;
+  // A program sweeping unmapped space would otherwise grow the set (and the log) per address.
+  if (unmapped_.size() >= kMaxUnmappedReported) {
+    if (!unmapped_capped_ && on_log)
+      on_log("further unmapped accesses not reported (" + std::to_string(kMaxUnmappedReported) +
+             " addresses reported)");
+    unmapped_capped_ = true;
+    return;
+  }
+  if (!unmapped_.insert(vaddr).second || !on_log) return;
   char msg[96];
   std::snprintf(msg, sizeof msg, "unmapped %s at 0x%08X (reported once)", what, vaddr);
   on_log(msg);
@@ -281,6 +289,7 @@ void Bus::do_state(StateIO& s) {
   update_read_cycles();  // derived from memctrl_
   set_cache_control(cache_control_);
   icache_.do_state(s);
+  s.end_section("BUS ");
 }
 
 }  // namespace psx

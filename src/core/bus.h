@@ -5,7 +5,7 @@
 #pragma once
 #include <array>
 #include <functional>
-#include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -83,8 +83,11 @@ class Bus {
   // Debug ports in expansion region 2 (DESIGN.md "Debug ports").
   std::function<void(char)> on_tty;
   std::function<void(u32 code)> on_exit_request;
-  // Where unmapped and not-yet-emulated accesses are reported (once per address).
+  // Where unmapped and not-yet-emulated accesses are reported (once per address, for the first
+  // kMaxUnmappedReported addresses; then one line says further ones are not reported).
   std::function<void(const std::string&)> on_log;
+  static constexpr size_t kMaxUnmappedReported = 64;
+  size_t unmapped_reported() const { return unmapped_.size(); }
   // An access that hangs the real bus (the console cannot go on).
   std::function<void(const std::string&)> on_fatal;
 
@@ -167,7 +170,8 @@ class Bus {
   static constexpr u32 kIoSlots = 0x2000 / 16;
   std::array<IoDevice*, kIoSlots> io_{};
   std::array<u32, kIoSlots> io_base_{};
-  std::map<u32, u32> unmapped_;
+  std::set<u32> unmapped_;  // addresses already reported
+  bool unmapped_capped_ = false;
   MemoryWatches* watches_ = nullptr;
   const u64* frame_ = nullptr;
 };

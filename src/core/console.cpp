@@ -233,6 +233,7 @@ void Console::do_state(StateIO& s) {
   gpu_.do_state(s);
   spu_.do_state(s);
   if (s.loading()) cpu_.set_hooks(this, hle_mode_ ? 0x80000080 : kShellEntry);
+  s.end_section("CONS");
 }
 
 }  // namespace psx

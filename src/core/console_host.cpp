@@ -70,6 +70,7 @@ void Console::unwatch(const std::string& key) {
 std::vector<u8> Console::save_state(bool compress) {
   StateIO w;
   do_state(w);
+  w.finish();
   SaveStateHeader h;
   h.compressed = compress;
   h.bios_hash = bios_hash_;
@@ -78,15 +79,16 @@ std::vector<u8> Console::save_state(bool compress) {
 }
 
 void Console::load_state(const std::vector<u8>& blob) {
-  std::vector<u8> payload = unpack_save_state(blob.data(), blob.size(), bios_hash_, program_hash_);
+  u32 format = 0;
+  std::vector<u8> payload = unpack_save_state(blob.data(), blob.size(), bios_hash_, program_hash_, &format);
   // A payload can still fail part-way (a block's section or range check): keep the current
   // state to put back, so a failed load leaves the console exactly as it was.
   StateIO backup;
   do_state(backup);
   try {
-    StateIO r(payload.data(), payload.size());
+    StateIO r(payload.data(), payload.size(), format);
     do_state(r);
-    if (!r.at_end()) r.fail("unexpected bytes after the last section");
+    r.finish();
   } catch (...) {
     StateIO restore(backup.buffer().data(), backup.buffer().size());
     do_state(restore);

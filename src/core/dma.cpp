@@ -288,6 +288,7 @@ void Dma::do_state(StateIO& s) {
   s.pod(dpcr_);
   s.pod(dicr_);
   s.pod(charge_frac_);
+  s.end_section("DMA ");
 }
 
 }  // namespace psx

@@ -36,6 +36,7 @@ class InterruptController {
     s.section("IRQC", 1);
     s.pod(stat_);
     s.pod(mask_);
+    s.end_section("IRQC");
   }
 
  private:

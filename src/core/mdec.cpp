@@ -248,6 +248,7 @@ void Mdec::do_state(StateIO& s) {
   s.pod(iq_y_);
   s.pod(iq_uv_);
   s.pod(scale_);
+  s.end_section("MDEC");
 }
 
 }  // namespace psx

@@ -50,13 +50,18 @@ std::vector<u8> pack_save_state(const SaveStateHeader& h, const std::vector<u8>&
   return out;
 }
 
-std::vector<u8> unpack_save_state(const u8* d, size_t size, u64 bios_hash, u64 program_hash) {
+std::vector<u8> unpack_save_state(const u8* d, size_t size, u64 bios_hash, u64 program_hash, u32* format) {
   if (size < 8 || std::memcmp(d, kMagic, 8) != 0) fail("not a psxrl save state (offset 0: expected \"PSXRLSAV\")");
   if (size < SaveStateHeader::kSize) fail("truncated header (" + std::to_string(size) + " of 56 bytes)");
   u32 version = u32(get(d + 8, 4)), flags = u32(get(d + 12, 4));
-  if (version != SaveStateHeader::kFormatVersion)
-    fail("format version " + std::to_string(version) + ", this build reads version " +
+  if (version > SaveStateHeader::kFormatVersion)
+    fail("format version " + std::to_string(version) + " was made by a newer psxrl; this build reads versions " +
+         std::to_string(SaveStateHeader::kOldestFormatVersion) + " to " +
          std::to_string(SaveStateHeader::kFormatVersion));
+  if (version < SaveStateHeader::kOldestFormatVersion)
+    fail("format version " + std::to_string(version) + " is older than this build reads (" +
+         std::to_string(SaveStateHeader::kOldestFormatVersion) + " to " +
+         std::to_string(SaveStateHeader::kFormatVersion) + ")");
   if (flags > 1) fail("offset 12: unknown flags " + std::to_string(flags));
   if (get(d + 16, 8) != bios_hash) fail("made with a different BIOS than the one loaded");
   if (get(d + 24, 8) != program_hash) fail("made with a different disc or EXE than the one loaded");
@@ -75,6 +80,7 @@ std::vector<u8> unpack_save_state(const u8* d, size_t size, u64 bios_hash, u64 p
     std::memcpy(payload.data(), body, payload_size);
   }
   if (fnv1a(payload.data(), payload.size()) != checksum) fail("corrupt payload (checksum mismatch)");
+  if (format) *format = version;
   return payload;
 }
 

@@ -22,7 +22,8 @@ class Scheduler {
   static constexpr Cycles kNever = std::numeric_limits<Cycles>::max();
 
   // Events are registered once, in a fixed order, when the console is built; the order is what
-  // makes two same-time events dispatch deterministically and what save states index by.
+  // makes two same-time events dispatch deterministically. Save states name each event, so every
+  // name must be unique (a second use is a programming error: std::logic_error).
   Handle add_event(std::string name, Callback cb);
 
   void schedule(Handle h, Cycles delay) { schedule_at(h, now_ + delay); }
@@ -30,6 +31,8 @@ class Scheduler {
   void cancel(Handle h);
   bool pending(Handle h) const { return events_[h].when != kNever; }
   Cycles when(Handle h) const { return events_[h].when; }
+  // The event registered under `name`, or -1.
+  Handle find(const std::string& name) const;
 
   Cycles now() const { return now_; }
   // Earliest booked time (kNever when nothing is booked).
@@ -40,6 +43,9 @@ class Scheduler {
   // callback may book new events, including ones due now; those run too.
   void run_due_events();
 
+  // Saves the time and each booked event by name. Loading refuses a booked name this build does
+  // not have (the state's future would lose that event's work); an event of this build that the
+  // state does not name was unbooked when the state was made (or did not exist) and stays so.
   void do_state(StateIO& s);
 
  private:
@@ -49,6 +55,7 @@ class Scheduler {
     Cycles when = kNever;
   };
   void recompute_next();
+  void read_bookings(StateIO& s, u32 version);
 
   std::vector<Event> events_;
   Cycles now_ = 0;

@@ -274,6 +274,7 @@ void Timers::do_state(StateIO& s) {
   s.boolean(vblank_);
   s.pod(video_hz_);
   s.pod(dot_divider_);
+  s.end_section("TMRS");
 }
 
 }  // namespace psx

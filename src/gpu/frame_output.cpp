@@ -52,6 +52,7 @@ void FrameOutput::do_state(StateIO& s) {
   if (s.loading() && (width_ == 0 || width_ > kMaxWidth || height_ == 0 || height_ > kMaxHeight))
     s.fail("display output size " + std::to_string(width_) + "x" + std::to_string(height_) + " out of range");
   s.bytes(rgb_.data(), size_t{width_} * height_ * 3);
+  s.end_section("GPUO");
 }
 
 }  // namespace psx::gpu

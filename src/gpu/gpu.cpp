@@ -210,7 +210,9 @@ bool Gpu::write_vram_png(const std::string& path, std::string& error) {
 }
 
 void Gpu::do_state(StateIO& s) {
-  s.section("GPU ", 1);
+  // Version 2 saves the polyline vertex field by field; version 1 saved the struct whole, with
+  // its padding bytes, which made equal consoles give unequal states.
+  const u32 version = s.section("GPU ", 2, 1);
   std::vector<u16> vram(renderer_->vram(), renderer_->vram() + gpu::kVramPixels);
   s.bytes(vram.data(), vram.size() * sizeof(u16));
   if (s.loading()) renderer_->load_vram(vram.data());
@@ -220,7 +222,12 @@ void Gpu::do_state(StateIO& s) {
   s.pod(fifo_len_);
   s.pod(fifo_needed_);
   if (s.loading() && (fifo_len_ > 16 || fifo_needed_ > 16)) s.fail("GP0 FIFO length out of range");
-  s.pod(polyline_last_);
+  if (version >= 2) {
+    gpu::Vertex& p = polyline_last_;
+    s.pod(p.x), s.pod(p.y), s.pod(p.r), s.pod(p.g), s.pod(p.b), s.pod(p.u), s.pod(p.v);
+  } else {
+    s.pod(polyline_last_);
+  }
   s.pod(polyline_colour_);
   s.boolean(polyline_shaded_);
   s.boolean(polyline_semi_);
@@ -244,6 +251,7 @@ void Gpu::do_state(StateIO& s) {
   timing_.do_state(s);
   output_.do_state(s);
   if (s.loading()) update_draw_state();
+  s.end_section("GPU ");
 }
 
 }  // namespace psx

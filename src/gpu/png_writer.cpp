@@ -1,19 +1,23 @@
-// PNG writer (libpng), atomic via temp file + rename.
+// PNG writer: libpng encodes into memory, the project's atomic file writer puts it on disk.
 #include "gpu/png_writer.h"
 
 #include <png.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
+#include <stdexcept>
 #include <vector>
+
+#include "core/atomic_file.h"
 
 namespace psx::gpu {
 namespace {
 
+void append(png_structp png, png_bytep data, png_size_t n) {
+  auto* out = static_cast<std::vector<u8>*>(png_get_io_ptr(png));
+  out->insert(out->end(), data, data + n);
+}
+
 // libpng reports errors by longjmp; everything that needs cleanup is owned outside this frame.
-bool encode(FILE* f, png_bytep* rows, u32 width, u32 height, std::string& error) {
+bool encode(std::vector<u8>& out, png_bytep* rows, u32 width, u32 height, std::string& error) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   if (!png) {
     error = "libpng could not start";
@@ -25,7 +29,7 @@ bool encode(FILE* f, png_bytep* rows, u32 width, u32 height, std::string& error)
     error = "libpng failed to encode";
     return false;
   }
-  png_init_io(png, f);
+  png_set_write_fn(png, &out, append, nullptr);
   png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                PNG_FILTER_TYPE_DEFAULT);
   png_set_rows(png, info, rows);
@@ -37,25 +41,18 @@ bool encode(FILE* f, png_bytep* rows, u32 width, u32 height, std::string& error)
 }  // namespace
 
 bool write_png_rgb(const std::string& path, const u8* rgb, u32 width, u32 height, std::string& error) {
-  std::string tmp = path + ".tmp";
-  FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) {
-    error = path + ": cannot create " + tmp + ": " + std::strerror(errno);
-    return false;
-  }
   std::vector<png_bytep> rows(height);
   for (u32 y = 0; y < height; ++y) rows[y] = const_cast<png_bytep>(rgb + size_t{y} * width * 3);
+  std::vector<u8> png;
   std::string why;
-  bool ok = encode(f, rows.data(), width, height, why);
-  if (std::fclose(f) != 0 && ok) {
-    ok = false;
-    why = std::strerror(errno);
+  if (!encode(png, rows.data(), width, height, why)) {
+    error = path + ": " + why;
+    return false;
   }
-  std::error_code ec;
-  if (ok) std::filesystem::rename(tmp, path, ec);
-  if (!ok || ec) {
-    error = path + ": " + (ok ? ec.message() : why);
-    std::filesystem::remove(tmp, ec);
+  try {
+    write_file_atomically(path, png);
+  } catch (const std::runtime_error& e) {
+    error = e.what();
     return false;
   }
   return true;

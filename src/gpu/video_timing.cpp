@@ -80,6 +80,7 @@ void VideoTiming::do_state(StateIO& s) {
   s.boolean(odd_field_);
   s.pod(edge_at_);
   s.pod(remainder_);
+  s.end_section("GPUT");
 }
 
 }  // namespace psx::gpu

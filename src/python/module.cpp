@@ -16,4 +16,5 @@ PYBIND11_MODULE(_psxrl, m) {
   py::register_exception<psx::StateError>(m, "StateError", PyExc_ValueError);
   psxrl::python::bind_console(m);
   psxrl::python::bind_env(m);
+  psxrl::python::bind_memsearch(m);
 }

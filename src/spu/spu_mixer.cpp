@@ -166,6 +166,7 @@ void Spu::do_state(StateIO& s) {
   s.pod(raw_);
   if (s.loading() && (fifo_count_ > kFifoSize || capture_pos_ > 0x1FF || transfer_addr_ >= kRamSize))
     s.fail("SPU transfer state out of range");
+  s.end_section("SPU ");
 }
 
 }  // namespace psx

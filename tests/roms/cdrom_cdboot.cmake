@@ -16,17 +16,14 @@ add_custom_command(OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue ${CMAKE_CU
   DEPENDS mkdisc cdboot_disc_check ${CMAKE_CURRENT_BINARY_DIR}/cdboot_disc_check.exe
           ${CMAKE_CURRENT_SOURCE_DIR}/cdrom_boot.cnf ${CDROM_DATA} VERBATIM)
 add_custom_target(cdboot_test_disc ALL DEPENDS ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue)
-add_test(NAME rom.cdboot_disc_check
-  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0
-          "-DEXPECT_OUTPUT=cdboot: psxrl disc boot ROM\ncdboot: GPU in 480-line interlace, fields followed\ncdboot: SYSTEM.CNF BOOT=\\BOOT.EXE"
-          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue|--frames|600|--expect-exit
-          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+# CHECKS: disc_check.c's CHECK_EQ call sites, each run once.
+psx_add_run_test(rom.cdboot_disc_check CODE 0 CHECKS 9
+  OUTPUT "cdboot: psxrl disc boot ROM\ncdboot: GPU in 480-line interlace, fields followed\ncdboot: SYSTEM.CNF BOOT=\\BOOT.EXE"
+  RUN --bios ${CDBOOT_ROM} --disc ${CMAKE_CURRENT_BINARY_DIR}/cdboot_test.cue --frames 600 --expect-exit)
 
-# The disc the HLE fast boot test uses boots through the ROM as well.
-add_test(NAME rom.cdboot_hle_disc
-  COMMAND ${CMAKE_COMMAND} -DEXPECT_CODE=0 "-DEXPECT_OUTPUT=booted from disc"
-          -DCOMMAND=$<TARGET_FILE:psxrl>|run|--bios|${CDBOOT_ROM}|--disc|${CMAKE_CURRENT_BINARY_DIR}/cdrom_boot.cue|--frames|600|--expect-exit
-          -P ${PROJECT_SOURCE_DIR}/tests/expect.cmake)
+# The disc the HLE fast boot test uses boots through the ROM as well (cdrom_boot.c: 1 check).
+psx_add_run_test(rom.cdboot_hle_disc CODE 0 CHECKS 1 OUTPUT "booted from disc"
+  RUN --bios ${CDBOOT_ROM} --disc ${CMAKE_CURRENT_BINARY_DIR}/cdrom_boot.cue --frames 600 --expect-exit)
 
 # A disc without SYSTEM.CNF or PSX.EXE: the ROM reports it and stops with code 3.
 add_test(NAME rom.cdboot_no_exe

@@ -230,8 +230,9 @@ TEST(XaZigZag, CorruptStateIsRejected) {
   StateIO w;
   a.do_state(w);
   std::vector<u8> blob = w.buffer();
-  // Layout after the 8-byte section header: hist (16 bytes), ring buffers (128), p (4), sixstep.
-  blob[8 + 16 + 128 + 4] = 7;  // six-step counter 7 (valid: 1..6)
+  // Layout after the 12-byte section header (tag, version, length): hist (16 bytes), ring buffers
+  // (128), p (4), sixstep.
+  blob[12 + 16 + 128 + 4] = 7;  // six-step counter 7 (valid: 1..6)
   XaAdpcm b;
   StateIO r(blob.data(), blob.size());
   EXPECT_THROW(b.do_state(r), StateError);

@@ -9,6 +9,7 @@
 #include "core/console.h"
 #include "core/hash.h"
 #include "core/save_state.h"
+#include "temp_files.h"
 
 namespace psx {
 namespace {
@@ -155,7 +156,7 @@ TEST_F(BadState, EachDefectHasItsOwnMessage) {
 TEST_F(BadState, FilesAreWrittenAtomicallyAndReadBack) {
   std::string path = ::testing::TempDir() + "/psxrl_state_test.sav";
   c.save_state_file(path);
-  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+  EXPECT_FALSE(test::temporary_files_left(path));
   u64 saved = console_hash(c);
   c.run_frames(2);
   c.load_state_file(path);

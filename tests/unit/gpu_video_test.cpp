@@ -8,6 +8,7 @@
 
 #include "gpu/png_writer.h"
 #include "gpu_test_util.h"
+#include "temp_files.h"
 
 namespace psx::test {
 namespace {
@@ -223,7 +224,7 @@ TEST_F(GpuTest, PngFilesAreWrittenAtomically) {
   char sig[8] = {};
   f.read(sig, 8);
   EXPECT_EQ(std::string(sig + 1, 3), "PNG");
-  EXPECT_FALSE(fs::exists(dir / "vram.png.tmp"));
+  EXPECT_FALSE(test::temporary_files_left(dir / "vram.png"));
   EXPECT_FALSE(gpu.write_display_png((dir / "missing" / "x.png").string(), err));
   EXPECT_NE(err.find("x.png"), std::string::npos);
 }

@@ -12,6 +12,7 @@
 
 #include "core/sio/memory_card.h"
 #include "sio_test_util.h"
+#include "temp_files.h"
 
 namespace psx {
 namespace {
@@ -261,7 +262,7 @@ TEST_F(MemcardFile, FileIsCreatedOnFirstWriteOnly) {
     ASSERT_TRUE(fs::exists(p));
     EXPECT_FALSE(card.dirty());
     EXPECT_EQ(read_file(p), card.data());
-    EXPECT_FALSE(fs::exists(dir_ / "new.mcd.tmp"));
+    EXPECT_FALSE(test::temporary_files_left(dir_ / "new.mcd"));
   }
   MemoryCard again(p);
   EXPECT_EQ(read_sector_data(again, 0x3F), pattern(0x44));
@@ -274,36 +275,34 @@ TEST_F(MemcardFile, CardWithoutReadsOrWritesLeavesNoFile) {
   EXPECT_FALSE(fs::exists(p));
 }
 
+// A write that fails part-way (here the file size limit, which binds root too, in a child
+// process) leaves the old image intact and no temporary file, names the card and the reason, and
+// the card stays dirty so that a later flush saves the change.
 TEST_F(MemcardFile, FailedWriteLeavesOldFileIntactAndRetries) {
   const fs::path p = dir_ / "card.mcd";
   V image(MemoryCard::kSize, 0x5A);
   write_file(p, image);
   MemoryCard card(p);
-  // A directory where the temporary file must go makes the write fail before the rename.
-  fs::create_directory(dir_ / "card.mcd.tmp");
-  command(card, write_bytes(0x10, pattern(0x55)));
-  EXPECT_TRUE(card.dirty());
-  EXPECT_EQ(read_file(p), image);
-  EXPECT_THROW(card.flush(), MemoryCardError);
-  fs::remove(dir_ / "card.mcd.tmp");
-  card.flush();
-  EXPECT_FALSE(card.dirty());
-  V on_disk = read_file(p);
-  EXPECT_EQ(V(on_disk.begin() + 0x10 * 128, on_disk.begin() + 0x11 * 128), pattern(0x55));
-}
-
-TEST_F(MemcardFile, ErrorNamesTheTemporaryFile) {
-  const fs::path p = dir_ / "card.mcd";
-  MemoryCard card(p);
-  fs::create_directory(dir_ / "card.mcd.tmp");
-  command(card, write_bytes(0x10, pattern(0x66)));
-  try {
-    card.flush();
-    FAIL() << "no error";
-  } catch (const MemoryCardError& e) {
-    EXPECT_NE(std::string(e.what()).find("card.mcd.tmp"), std::string::npos) << e.what();
-  }
-  fs::remove(dir_ / "card.mcd.tmp");
+  EXPECT_EXIT(
+      {
+        rlimit limit;
+        if (!test::limit_file_size(4096, limit)) std::_Exit(2);
+        command(card, write_bytes(0x10, pattern(0x55)));  // its save fails: the card stays dirty
+        try {
+          card.flush();
+          std::_Exit(3);
+        } catch (const MemoryCardError& e) {
+          std::fprintf(stderr, "%s\n", e.what());
+        }
+        if (!card.dirty() || read_file(p) != image || test::temporary_files_left(p)) std::_Exit(4);
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        card.flush();
+        V on_disk = read_file(p);
+        if (card.dirty() || V(on_disk.begin() + 0x10 * 128, on_disk.begin() + 0x11 * 128) != pattern(0x55))
+          std::_Exit(5);
+        std::_Exit(0);
+      },
+      ::testing::ExitedWithCode(0), "memory card .*card\\.mcd: write failed: File too large");
 }
 
 TEST(MemcardState, RoundTripKeepsContentsFlagAndDirty) {
@@ -331,7 +330,8 @@ TEST(MemcardState, ReadInProgressBeyondTheCardIsRefused) {
   StateIO w;
   a.do_state(w);
   V blob = w.buffer();
-  const size_t sector_at = 8 + MemoryCard::kSize + 7;  // after tag+version, data, flag, dirty, step, mode
+  // After the section header (tag, version, length), data, flag, dirty, step, mode.
+  const size_t sector_at = 12 + MemoryCard::kSize + 7;
   ASSERT_EQ(blob[sector_at], 0x00);
   ASSERT_EQ(blob[sector_at + 1], 0x02);
   blob[sector_at] = 0x00, blob[sector_at + 1] = 0x04;  // sector 0400h, one past the last

@@ -8,6 +8,7 @@
 #include "spu/capture.h"
 #include "spu/wav.h"
 #include "spu_test_util.h"
+#include "temp_files.h"
 
 using namespace psx;
 using namespace psx::spu;
@@ -79,7 +80,7 @@ TEST(SpuWav, WriteReadRoundTripAndErrors) {
   const std::string path = (dir / "out.wav").string();
   std::vector<StereoSample> s = {{1, -1}, {32767, -32768}, {100, 200}};
   write_wav(path, s.data(), s.size());
-  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+  EXPECT_FALSE(test::temporary_files_left(path));
   EXPECT_EQ(std::filesystem::file_size(path), 44u + 12u);
   WavData w = read_wav(path);
   EXPECT_EQ(w.sample_rate, 44100u);

@@ -11,7 +11,7 @@
 
 namespace {
 
-constexpr psx::u32 kContract = 0x10000;  // RAM offset of 0x80010000
+constexpr psx::u32 kContract = 0x80010000;
 
 // Offsets documented in README.md; a change to the struct must change the README too.
 static_assert(offsetof(TumbleContract, state) == 0x08);
@@ -34,14 +34,8 @@ struct TumbleConsole {
     if (bios) console.load_bios(bios);
     console.boot_exe(TUMBLE_EXE);
   }
-  psx::u32 word(psx::u32 offset) {
-    const psx::u8* ram = console.bus().ram() + kContract + offset;
-    return ram[0] | ram[1] << 8 | ram[2] << 16 | static_cast<psx::u32>(ram[3]) << 24;
-  }
-  void set_word(psx::u32 offset, psx::u32 v) {
-    psx::u8* ram = console.bus().ram() + kContract + offset;
-    for (int i = 0; i < 4; ++i) ram[i] = static_cast<psx::u8>(v >> (8 * i));
-  }
+  psx::u32 word(psx::u32 offset) { return console.read32(kContract + offset); }
+  void set_word(psx::u32 offset, psx::u32 v) { console.write32(kContract + offset, v); }
   // Runs emulated frames until the game has run `n` more frames of its own (bounded).
   bool run_game_frames(psx::u32 n) {
     psx::u32 target = word(offsetof(TumbleContract, frame)) + n;

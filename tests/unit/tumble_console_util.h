@@ -5,12 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
-#include <memory>
 #include <string>
 
 #include "contract.h"
 #include "core/console.h"
-#include "core/sio/dualshock.h"
 #include "core/sio/pad.h"
 
 namespace tumble_test {
@@ -26,7 +24,7 @@ struct TumbleConsole {
 
   explicit TumbleConsole(Boot boot = Boot::Exe, const char* bios = nullptr, bool dualshock = false) {
     if (bios) console.load_bios(bios);
-    if (dualshock) console.sio0().attach_pad(0, std::make_unique<psx::DualShock>());
+    if (dualshock) console.plug_pad(1, psx::Console::PadType::DualShock);
     if (boot == Boot::Exe) {
       console.boot_exe(TUMBLE_EXE);
     } else {
@@ -78,9 +76,7 @@ struct TumbleConsole {
 
   // Saves the displayed picture as build/tests/tumble_<name>.png (look at them).
   void screenshot(const std::string& name) {
-    std::string error;
-    EXPECT_TRUE(console.gpu().write_display_png(std::string(PSXRL_BUILD_DIR) + "/tests/tumble_" + name + ".png", error))
-        << error;
+    EXPECT_NO_THROW(console.save_screenshot(std::string(PSXRL_BUILD_DIR) + "/tests/tumble_" + name + ".png"));
   }
 };
 

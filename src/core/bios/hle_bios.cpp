@@ -242,6 +242,7 @@ void HleBios::do_state(StateIO& s) {
   s.boolean(pad_started_);
   s.pod(heap_), s.pod(kernel_heap_);
   s.pod(rand_seed_), s.pod(strtok_next_), s.pod(conf_);
+  s.end_section("HLEK");
 }
 
 }  // namespace psx

@@ -218,6 +218,7 @@ void Cdrom::do_state(StateIO& s) {
                       data_size_ > data_.size() || data_pos_ > data_size_ || static_cast<u8>(drive_) > 3 ||
                       static_cast<u8>(after_seek_) > 3 || static_cast<u8>(second_) > 7))
     s.fail("CD-ROM state out of range");
+  s.end_section("CDRM");
 }
 
 }  // namespace psx

@@ -121,6 +121,7 @@ void XaAdpcm::do_state(StateIO& s) {
   s.pod(sixstep_);
   if (s.loading() && (p_ >= kRingSize || sixstep_ < 1 || sixstep_ > kSixStep))
     s.fail("XA resampler position or six-step counter out of range");
+  s.end_section("XADP");
 }
 
 }  // namespace psx

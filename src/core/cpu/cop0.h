@@ -64,6 +64,7 @@ struct Cop0 {
     s.section("COP0", 1);
     s.pod(bpc), s.pod(bda), s.pod(jumpdest), s.pod(dcic), s.pod(badvaddr);
     s.pod(bdam), s.pod(bpcm), s.pod(sr), s.pod(cause), s.pod(epc);
+    s.end_section("COP0");
   }
 };
 

@@ -274,6 +274,7 @@ void CpuT<BusT>::do_state(StateIO& s) {
   s.boolean(hook_armed_), s.pod(hook_pc_);
   if (s.loading() && (load_reg_ > 31 || new_load_reg_ > 31)) s.fail("CPU load-delay register out of range");
   cop0_.do_state(s);
+  s.end_section("CPU ");
 }
 
 }  // namespace psx

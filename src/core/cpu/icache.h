@@ -50,6 +50,7 @@ class ICache {
   void do_state(StateIO& s) {
     s.section("ICAC", 1);
     s.pod(tags_);
+    s.end_section("ICAC");
   }
 
  private:

@@ -218,6 +218,7 @@ void Gte::do_state(StateIO& s) {
   s.pod(r_.zsf3);
   s.pod(r_.zsf4);
   s.pod(r_.flag);
+  s.end_section("GTE ");
 }
 
 }  // namespace psx

@@ -198,6 +198,7 @@ void DualShock::do_state(StateIO& s) {
   s.pod(reply_);
   s.pod(held_param_);
   if (s.loading() && reply_len_ > kReplyMax) s.fail("DualShock reply length out of range");
+  s.end_section("DSHK");
 }
 
 }  // namespace psx

@@ -1,12 +1,12 @@
 // Memory card command protocol, blank-card format and atomic image file handling.
 #include "core/sio/memory_card.h"
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <string>
+
+#include "core/atomic_file.h"
 
 namespace psx {
 
@@ -92,29 +92,10 @@ void MemoryCard::load() {
 
 void MemoryCard::flush() {
   if (!dirty_ || path_.empty()) return;
-  std::filesystem::path tmp = path_;
-  tmp += ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f)
-    throw MemoryCardError("memory card " + quoted(path_) + ": cannot create " + quoted(tmp) + ": " +
-                          std::strerror(errno));
-  bool ok = std::fwrite(data_.data(), 1, kSize, f) == kSize;
-  ok = std::fflush(f) == 0 && ok;
-  ok = ::fsync(::fileno(f)) == 0 && ok;
-  const int saved_errno = errno;
-  ok = std::fclose(f) == 0 && ok;
-  std::error_code ec;
-  if (!ok) {
-    std::filesystem::remove(tmp, ec);
-    throw MemoryCardError("memory card " + quoted(path_) + ": writing " + quoted(tmp) +
-                          " failed: " + std::strerror(saved_errno));
-  }
-  std::filesystem::rename(tmp, path_, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw MemoryCardError("memory card " + quoted(path_) + ": cannot replace it with " + quoted(tmp) + ": " +
-                          ec.message());
+  try {
+    write_file_atomically(path_.string(), data_.data(), kSize);
+  } catch (const std::runtime_error& e) {
+    throw MemoryCardError(std::string("memory card ") + e.what());
   }
   dirty_ = false;
 }
@@ -257,6 +238,7 @@ void MemoryCard::do_state(StateIO& s) {
   if (s.loading() && mode_ == kCmdRead && step_ >= 10 && sector_ >= kSectors)
     s.fail("memory card: a read of sector " + std::to_string(sector_) + " is in progress, beyond the card's " +
            std::to_string(kSectors) + " sectors");
+  s.end_section("MCRD");
 }
 
 }  // namespace psx

@@ -36,6 +36,7 @@ void DigitalPad::do_state(StateIO& s) {
   s.pod(pressed_);
   s.pod(step_);
   s.pod(switches_);
+  s.end_section("PADD");
 }
 
 }  // namespace psx

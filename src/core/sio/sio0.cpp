@@ -275,6 +275,7 @@ void Sio0::do_state(StateIO& s) {
     if (slot.pad) slot.pad->do_state(s);
     if (slot.card) slot.card->do_state(s);
   }
+  s.end_section("SIO0");
 }
 
 }  // namespace psx

@@ -52,6 +52,7 @@ void Sio1::do_state(StateIO& s) {
   s.section("SIO1", 1);
   s.pod(mode_), s.pod(ctrl_), s.pod(misc_), s.pod(baud_), s.pod(baud_reload_at_);
   s.boolean(tx_pending_);
+  s.end_section("SIO1");
 }
 
 }  // namespace psx

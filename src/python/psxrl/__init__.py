@@ -8,9 +8,10 @@ import os as _os
 from pathlib import Path as _Path
 
 from . import _psxrl
-from ._psxrl import BUTTONS, Console, InputError, StateError, WatchEvent, episode_seed
+from ._psxrl import BUTTONS, Console, InputError, QueryError, Search, Session, StateError, WatchEvent, episode_seed
 
-__all__ = ["BUTTONS", "Console", "Env", "InputError", "StateError", "VecEnv", "WatchEvent", "episode_seed", "make_vec"]
+__all__ = ["BUTTONS", "Console", "Env", "InputError", "QueryError", "Search", "Session", "StateError", "VecEnv", "WatchEvent",
+           "episode_seed", "make_vec"]
 
 # `pip install .` puts the integrations and Tumble's program in psxrl/games; a module imported from
 # the build tree has no such folder and uses the source tree's games/ and build/games, compiled in.

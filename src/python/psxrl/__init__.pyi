@@ -3,8 +3,9 @@ from typing import Any
 
 import gymnasium
 
-from ._psxrl import (BUTTONS as BUTTONS, Console as Console, InputError as InputError, StateError as StateError,
-                     WatchEvent as WatchEvent, episode_seed as episode_seed)
+from ._psxrl import (BUTTONS as BUTTONS, Console as Console, InputError as InputError, QueryError as QueryError,
+                     Search as Search, Session as Session, StateError as StateError, WatchEvent as WatchEvent,
+                     episode_seed as episode_seed)
 from ._psxrl import Env as _Env
 from ._psxrl import VecEnv as _VecEnv
 

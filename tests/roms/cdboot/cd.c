@@ -71,12 +71,19 @@ int cd_init(void) {
 
 static uint8_t to_bcd(uint32_t v) { return (uint8_t)((v / 10) << 4 | (v % 10)); }
 
+/* Interrupts Pause may see before its first response. That response comes after about 0xC4E1
+   cycles, 1.5 ms (psx-spx "CDROM - Response Timings", the first response most commands share),
+   in which a double-speed drive delivers at most one sector (150 a second, 6.7 ms apart) besides
+   one already waiting: 16 is ample, and a drive still streaming after them is broken. */
+#define CD_PAUSE_MAX_SECTORS 16
+
 /* Pause: sectors (INT1) and the end of the disc (INT4, DataEnd, when the file read last ends
-   where the disc does) that arrive before its first response are read past. */
+   where the disc does) that arrive before its first response are read past, a bounded number. */
 static int cd_pause(void) {
   cd_send(0x09, 0, 0);
-  int type;
+  int type, seen = 0;
   do {
+    if (seen++ > CD_PAUSE_MAX_SECTORS) return CD_NO_PAUSE;
     type = cd_wait();
     cd_ack();
   } while (type == 1 || type == 4);
@@ -180,6 +187,7 @@ const char *cd_error_text(int code) {
     case CD_NOT_ISO: return "no ISO 9660 primary volume descriptor at sector 16";
     case CD_BAD_DIR: return "malformed ISO 9660 directory record";
     case CD_NOT_FOUND: return "file not found";
+    case CD_NO_PAUSE: return "the drive kept sending sectors after Pause";
     default: return "unknown error";
   }
 }

@@ -16,6 +16,7 @@ enum {
   CD_NOT_ISO = -4,    /* sector 16 is not an ISO 9660 primary volume descriptor */
   CD_BAD_DIR = -5,    /* a directory record runs past its sector or is too short */
   CD_NOT_FOUND = -6,
+  CD_NO_PAUSE = -7,   /* sectors kept arriving after Pause, with no response to it */
 };
 
 /* The last response read, and its length. */

@@ -106,6 +106,7 @@ void Console::drop_stale_audio() {
 void Console::snapshot(Snapshot& out) {
   StateIO w;
   do_state(w);
+  w.finish();
   out.payload_ = w.buffer();
   out.bios_hash_ = bios_hash_;
   out.program_hash_ = program_hash_;
@@ -119,7 +120,7 @@ void Console::restore(const Snapshot& snap) {
     throw StateError("snapshot: taken with a different BIOS, disc or EXE than the one loaded");
   StateIO r(snap.payload_.data(), snap.payload_.size());
   do_state(r);
-  if (!r.at_end()) r.fail("unexpected bytes after the last section");
+  r.finish();
   drop_stale_audio();
 }
 

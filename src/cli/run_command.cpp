@@ -86,7 +86,7 @@ struct RunArgs {
   std::string frames_text = "3600", cycles_text, pad_text[2] = {"digital", "none"};
   std::string memcards[2];
   std::vector<std::pair<std::string, std::string>> shot_args;
-  bool expect_exit = false, quiet = false, realtime = false;
+  bool expect_exit = false, quiet = false, realtime = false, no_idle_skip = false;
 
   void add_to(CLI::App& app) {
     app.add_option("--exe", exe, "PS-X EXE to run")->type_name("FILE");
@@ -98,6 +98,8 @@ struct RunArgs {
     app.add_flag("--expect-exit", expect_exit, "reaching the limit is a failure (exit 3): the program must exit itself");
     app.add_flag("--quiet", quiet, "no summary or diagnostics on standard error");
     app.add_flag("--realtime", realtime, "run no faster than the console (59.94 frames per second), to watch");
+    app.add_flag("--no-idle-skip", no_idle_skip,
+                 "interpret loops that wait for the next event instead of skipping them (same results, slower)");
     app.add_option("--pad1", pad_text[0], "controller in port 1: digital (default), dualshock or none")->type_name("TYPE");
     app.add_option("--pad2", pad_text[1], "controller in port 2: none (default), digital or dualshock")->type_name("TYPE");
     app.add_option("--memcard1", memcards[0], "memory card in slot 1 (raw 128 KiB image; created on the first write)")
@@ -158,6 +160,7 @@ int run_command(const std::vector<std::string>& args) {
   std::vector<InputPress> presses;
 
   psx::Console console;
+  console.set_idle_skip(!a.no_idle_skip);
   console.on_tty = [](char c) { std::fputc(c, stdout); };
   console.on_log = [quiet](const std::string& m) {
     if (!quiet) std::fprintf(stderr, "psxrl: %s\n", m.c_str());

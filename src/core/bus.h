@@ -56,6 +56,8 @@ class Bus {
     }
   }
   const ICache& icache() const { return icache_; }
+  // BCC selects D-cache mode: loads from RAM also write the scratchpad (see dcache_fill()).
+  bool dcache_mode() const { return dcache_mode_; }
   bool read32(u32 vaddr, u32& v) { return read(vaddr, v, 4); }
   bool read16(u32 vaddr, u32& v) { return read(vaddr, v, 2); }
   bool read8(u32 vaddr, u32& v) { return read(vaddr, v, 1); }

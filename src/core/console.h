@@ -18,6 +18,7 @@
 #include "core/bus.h"
 #include "core/cdrom/cdrom.h"
 #include "core/cpu/cpu.h"
+#include "core/cpu/idle_skip.h"
 #include "core/dma.h"
 #include "core/gte/gte.h"
 #include "core/input_error.h"
@@ -75,6 +76,13 @@ class Console : private CpuHooks {
   std::optional<u32> exit_code() const { return exit_code_; }
   const std::string& fatal_error() const { return fatal_error_; }
 
+  // Idle-loop skipping (core/cpu/idle_skip.h), on by default: loops that only wait for the next
+  // event are accounted for without executing them. The results are bit-identical either way;
+  // turning it off is for comparing that, and for measuring.
+  void set_idle_skip(bool on) { cpu_.set_idle_skip(on ? &idle_skip_ : nullptr); }
+  bool idle_skip() const { return cpu_.idle_skip_enabled(); }
+  const IdleSkip::Stats& idle_skip_stats() const { return idle_skip_.stats(); }
+
   Cycles cycles() const { return sched_.now(); }
   u64 frames() const { return frames_; }
   u64 instructions() const { return cpu_.instructions(); }
@@ -107,6 +115,25 @@ class Console : private CpuHooks {
   void load_state(const std::vector<u8>& blob);
   void save_state_file(const std::string& path, bool compress = true);
   void load_state_file(const std::string& path);
+
+  // In-memory snapshots for fast resets (an environment returning to its start many times): the
+  // console's state as it serialises it, without the save-state container's copy, checksum and
+  // rollback copy. restore() accepts a snapshot of any console with the same BIOS and program
+  // (others throw StateError, the console unchanged) and leaves the console as load_state()
+  // would. The snapshot's buffer is reused when it is taken again.
+  class Snapshot {
+   public:
+    bool empty() const { return payload_.empty(); }
+    size_t size() const { return payload_.size(); }
+
+   private:
+    friend class Console;
+    std::vector<u8> payload_;
+    u64 bios_hash_ = 0;
+    u64 program_hash_ = 0;
+  };
+  void snapshot(Snapshot& out);
+  void restore(const Snapshot& snap);
 
   // Video and audio for the host, without per-pixel copies. The frame is the displayed area as
   // RGB888 at its real size (e.g. 320x240), refreshed at each VBlank; the VRAM view is the GPU's
@@ -169,6 +196,7 @@ class Console : private CpuHooks {
 
  private:
   void on_reach(u32 pc) override;
+  void drop_stale_audio();
   u8* host_pointer(u32 addr, u32 width) const;
   static int port_index(int port);
   void release_timed_buttons();
@@ -182,6 +210,7 @@ class Console : private CpuHooks {
   Bus bus_;
   Gte gte_;
   Cpu cpu_;
+  IdleSkip idle_skip_;
   HleBios hle_;
   Cdrom cdrom_;
   Sio0 sio0_;

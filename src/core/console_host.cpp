@@ -94,9 +94,34 @@ void Console::load_state(const std::vector<u8>& blob) {
     do_state(restore);
     throw;
   }
-  // Samples produced before the load belong to the abandoned timeline.
+  drop_stale_audio();
+}
+
+// Samples produced before a load belong to the abandoned timeline.
+void Console::drop_stale_audio() {
   std::vector<StereoSample> stale;
   spu_.take_samples(stale);
+}
+
+void Console::snapshot(Snapshot& out) {
+  StateIO w;
+  do_state(w);
+  w.finish();
+  out.payload_ = w.buffer();
+  out.bios_hash_ = bios_hash_;
+  out.program_hash_ = program_hash_;
+}
+
+// The payload was written by do_state of a console with this BIOS and program, so it reads back
+// completely (the section checks still guard against a snapshot that is not one).
+void Console::restore(const Snapshot& snap) {
+  if (snap.empty()) throw StateError("snapshot: empty (nothing was taken into it)");
+  if (snap.bios_hash_ != bios_hash_ || snap.program_hash_ != program_hash_)
+    throw StateError("snapshot: taken with a different BIOS, disc or EXE than the one loaded");
+  StateIO r(snap.payload_.data(), snap.payload_.size());
+  do_state(r);
+  r.finish();
+  drop_stale_audio();
 }
 
 void Console::save_state_file(const std::string& path, bool compress) {

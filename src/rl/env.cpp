@@ -129,7 +129,7 @@ void Env::boot() {
                                                        std::to_string(game_.boot_max_frames) + " frames" +
                                                        (console_->fatal_error().empty() ? "" : ": " + console_->fatal_error()));
   }
-  boot_state_ = console_->save_state(false);
+  console_->snapshot(boot_state_);
 }
 
 // A user's disc is the game the integration was written for when the SHA-1 of its first data
@@ -206,7 +206,7 @@ std::uint64_t Env::start_level(int level) {
                             game_.folder + "/README.md)");
     console_->load_state_file(expand(game_.state_pattern, level, game_, config_.files));
   } else {
-    console_->load_state(boot_state_);
+    console_->restore(boot_state_);
   }
   std::uint64_t f0 = console_->frames();
   if (lua_->has_function("on_reset")) lua_->call("on_reset", {double(level), double(rng_ & 0xFFFFFFFFu)}, 0);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/console.h"
 #include "rl/integration.h"
 #include "rl/move_delimiter.h"
 #include "rl/observation.h"
@@ -131,7 +132,7 @@ class Env {
   std::unique_ptr<psx::Console> console_;
   std::unique_ptr<lua::Host> lua_;
   mutable std::vector<std::optional<LevelMap>> maps_;  // read on first use
-  std::vector<std::uint8_t> boot_state_;
+  psx::Console::Snapshot boot_state_;
   DelimiterSettings delim_;
   std::vector<const Variable*> watched_vars_;  // game_.watch resolved
   const Variable* state_var_ = nullptr;

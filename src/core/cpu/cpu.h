@@ -14,6 +14,7 @@
 namespace psx {
 
 class Bus;
+class IdleSkip;
 
 // Called before the instruction at a hooked address runs (the BIOS call vectors A0h/B0h/C0h and
 // one extra address, e.g. the shell entry 0x80030000). A hook may redirect the CPU with set_pc().
@@ -76,7 +77,16 @@ class CpuT {
 
   void do_state(StateIO& s);
 
+  // Idle-loop skipping (idle_skip.h): on with a skipper, off (plain interpretation) with nullptr.
+  // Skipping is exact, so it changes how fast the console runs, never what it computes.
+  void set_idle_skip(IdleSkip* skip) { idle_skip_ = skip; }
+  bool idle_skip_enabled() const { return idle_skip_ != nullptr; }
+
  private:
+  friend class IdleSkip;
+  // A short backward branch or jump marks its target as a loop head worth examining.
+  static constexpr u32 kIdleLoopBytes = 256;
+  static constexpr u32 kNoLoopHead = 1;  // never equals an aligned pc
   void execute(u32 instr);
   void execute_special(u32 instr);
   void execute_bcondz(u32 instr);
@@ -107,6 +117,11 @@ class CpuT {
     if (!taken) return;
     next_pc_ = target;
     arm_hook(target);
+  }
+  // A branch that may close a loop: a taken one to a little before itself names a loop head.
+  void loop_branch(u32 target, bool taken) {
+    branch(target, taken);
+    if (taken && target <= current_pc_ && current_pc_ - target < kIdleLoopBytes) loop_head_ = target;
   }
   void arm_hook(u32 target) {
     u32 p = target & 0x1FFFFFFF;
@@ -146,6 +161,9 @@ class CpuT {
   bool stop_ = false;
   bool hook_armed_ = false;
   u32 hook_pc_ = 0;
+  // Host-side idle-skip bookkeeping (not machine state, not saved).
+  IdleSkip* idle_skip_ = nullptr;
+  u32 loop_head_ = kNoLoopHead;
 };
 
 using Cpu = CpuT<Bus>;

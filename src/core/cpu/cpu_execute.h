@@ -11,15 +11,15 @@ void CpuT<BusT>::execute(u32 instr) {
   switch (op(instr)) {
     case 0x00: execute_special(instr); break;
     case 0x01: execute_bcondz(instr); break;
-    case 0x02: branch((pc_ & 0xF0000000) | ((instr & 0x03FFFFFF) << 2), true); break;  // J
+    case 0x02: loop_branch((pc_ & 0xF0000000) | ((instr & 0x03FFFFFF) << 2), true); break;  // J
     case 0x03:                                                                          // JAL
       write_reg(31, next_pc_);
       branch((pc_ & 0xF0000000) | ((instr & 0x03FFFFFF) << 2), true);
       break;
-    case 0x04: branch(pc_ + (simm(instr) << 2), s == t); break;         // BEQ
-    case 0x05: branch(pc_ + (simm(instr) << 2), s != t); break;         // BNE
-    case 0x06: branch(pc_ + (simm(instr) << 2), s32(s) <= 0); break;    // BLEZ
-    case 0x07: branch(pc_ + (simm(instr) << 2), s32(s) > 0); break;     // BGTZ
+    case 0x04: loop_branch(pc_ + (simm(instr) << 2), s == t); break;         // BEQ
+    case 0x05: loop_branch(pc_ + (simm(instr) << 2), s != t); break;         // BNE
+    case 0x06: loop_branch(pc_ + (simm(instr) << 2), s32(s) <= 0); break;    // BLEZ
+    case 0x07: loop_branch(pc_ + (simm(instr) << 2), s32(s) > 0); break;     // BGTZ
     case 0x08: {                                                        // ADDI
       u32 r = s + simm(instr);
       if (((s ^ r) & (simm(instr) ^ r)) >> 31) exception(Exception::Overflow);
@@ -190,7 +190,7 @@ void CpuT<BusT>::execute_bcondz(u32 instr) {
   const u32 s = regs_[rs(instr)];
   const bool taken = ge ? s32(s) >= 0 : s32(s) < 0;
   if (link) write_reg(31, next_pc_);
-  branch(pc_ + (simm(instr) << 2), taken);
+  loop_branch(pc_ + (simm(instr) << 2), taken);
 }
 
 template <class BusT>

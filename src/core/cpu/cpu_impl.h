@@ -1,7 +1,10 @@
 // R3000A instruction semantics (psx-spx "CPU Specifications"), included by the translation units
 // that instantiate CpuT: cpu.cpp for the console's Bus, and the CPU unit tests for a test bus.
 #pragma once
+#include <type_traits>
+
 #include "core/cpu/cpu.h"
+#include "core/cpu/idle_skip.h"
 
 namespace psx {
 
@@ -41,7 +44,16 @@ void CpuT<BusT>::set_pc(u32 pc) {
 template <class BusT>
 void CpuT<BusT>::run() {
   stop_ = false;
-  while (!stop_ && sched_.now() < sched_.next_deadline()) step();
+  while (!stop_ && sched_.now() < sched_.next_deadline()) {
+    if constexpr (std::is_same_v<BusT, Bus>) {
+      if (pc_ == loop_head_ && idle_skip_) {
+        loop_head_ = kNoLoopHead;
+        idle_skip_->at_loop_head(*this);
+        continue;
+      }
+    }
+    step();
+  }
 }
 
 template <class BusT>
@@ -88,11 +100,14 @@ void CpuT<BusT>::step() {
     execute(instr);
   }
   // The load issued by the previous instruction lands now; this instruction's load is pending.
+  // Without one the pipeline holds zero rather than an old value, so that what the state records
+  // depends only on the last instruction (idle skipping relies on it, idle_skip.h).
   regs_[load_reg_] = load_val_;
   regs_[0] = 0;
   load_reg_ = new_load_reg_;
   load_val_ = new_load_val_;
   new_load_reg_ = 0;
+  new_load_val_ = 0;
 }
 
 template <class BusT>

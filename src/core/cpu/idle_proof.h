@@ -1,0 +1,75 @@
+// The proof behind idle-loop skipping (idle_skip.h): given one recorded iteration of a loop and
+// the registers before and after it, shows that iteration k (k = 0 is the one about to start)
+// begins with every register at after + k*step (step = after - before, modulo 2^32) and follows
+// the recorded path, for every k up to a bound. Register values are tracked as base + k*step:
+// addition, subtraction and left shifts keep that form exactly (modulo 2^32); other operations
+// keep it only for constants. A comparison of such values keeps its outcome while neither side
+// wraps and their difference does not change sign, which bounds k; equality likewise.
+#pragma once
+#include <array>
+
+#include "core/types.h"
+
+namespace psx {
+
+// One executed instruction of the recorded iteration.
+struct IdleStep {
+  u32 pc;
+  u32 instr;
+  u32 load_addr;   // loads: the address read
+  u32 load_value;  // ... and the value the load delivered (memory cannot change before an event)
+  u32 load_bits;   // ... and which bits of it cannot (the others count time, e.g. JOY_STAT's baud timer)
+};
+
+class IdleProof {
+ public:
+  // What the loop may contain: ALU operations without traps, loads, branches and jumps.
+  enum class Kind { Alu, Load, Branch, Other };
+  static Kind classify(u32 instr);
+
+  // `before`/`after`: the registers at the head before and after the recorded iteration;
+  // `load_reg`/`load_val`: the load in flight at the head (register 0 = none).
+  IdleProof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg, u32 load_val);
+
+  // Whether the path repeats; max_k() then bounds the iterations k = 0..max_k that provably do.
+  bool run(const IdleStep* path, u32 n);
+  u64 max_k() const { return max_k_; }
+
+ private:
+  // base + k*step when known; a constant (step 0) may have only some bits known.
+  struct Val {
+    u32 base = 0;
+    u32 step = 0;
+    bool known = true;
+    u32 bits = ~0u;  // the known bits of a constant
+    bool affine() const { return known && bits == ~0u; }
+    bool constant() const { return affine() && step == 0; }
+  };
+  static Val unknown() { return {0, 0, false, 0}; }
+  static Val constant(u32 v) { return {v, 0, true, ~0u}; }
+  static Val partial(u32 v, u32 bits) { return {v & bits, 0, true, bits}; }
+
+  void limit(u64 k) { max_k_ = k < max_k_ ? k : max_k_; }
+  void no_wrap(const Val& v, bool sign);
+  bool less(const Val& a, const Val& b, bool sign);
+  bool equal(const Val& a, const Val& b);
+
+  Val add(const Val& a, const Val& b);
+  Val compare(const Val& a, const Val& b, bool sign);
+  bool alu(u32 instr);
+  bool special(u32 instr);
+  bool control(const IdleStep* path, u32 n, u32 i);
+  void write(u32 r, const Val& v);
+  void delayed_load(u32 r, const Val& v);
+  Val and_mask(const Val& v, u32 mask);
+
+  std::array<Val, 32> regs_{};
+  std::array<u32, 32> after_{};
+  std::array<u32, 32> steps_{};
+  u32 load_reg_ = 0, new_reg_ = 0;  // the load landing after the current instruction, the one it issues
+  Val load_val_, new_val_;
+  u32 start_load_reg_ = 0, start_load_val_ = 0;
+  u64 max_k_ = ~u64{0};
+};
+
+}  // namespace psx

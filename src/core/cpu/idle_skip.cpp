@@ -1,0 +1,173 @@
+// Idle-loop skipping: recording one iteration, proving the next ones repeat it, skipping them.
+#include "core/cpu/idle_skip.h"
+
+#include <algorithm>
+
+#include "core/bus.h"
+#include "core/cpu/cpu.h"
+#include "core/cpu/idle_proof.h"
+
+namespace psx {
+
+// The CPU's members are instantiated once, in cpu.cpp.
+extern template class CpuT<Bus>;
+
+namespace {
+
+// The instruction word at `vaddr` as the interpreter would fetch it, without timing or i-cache.
+bool peek_code(Bus& bus, u32 vaddr, u32& word) {
+  const u32 p = Bus::physical(vaddr);
+  if (vaddr & 3) return false;
+  if (p < 0x00800000) {
+    word = load_le32(bus.ram() + (p & (Bus::kRamSize - 1)));
+    return true;
+  }
+  if (p >= 0x1FC00000 && p < 0x1FC00000 + Bus::kBiosSize) {
+    word = load_le32(bus.bios() + (p - 0x1FC00000));
+    return true;
+  }
+  return false;
+}
+
+// I/O registers whose read changes nothing and whose value changes only when an event runs or
+// the CPU writes somewhere (psx-spx register descriptions; the devices' io_read confirm it):
+// memory control, RAM_SIZE, I_STAT/I_MASK, every DMA register, the CD-ROM status and interrupt
+// enable/flag registers (not the response or data FIFOs), GPUSTAT (not GPUREAD), SPUCNT and
+// SPUSTAT; of JOY_STAT (pad/card port status) bits 0-10, bits 11-31 being its baud timer, which
+// counts between events. Returns those bits of the 32-bit word at p & ~3, or 0 for registers
+// with none: timer counters (they count), FIFOs, GPUREAD, JOY_DATA (a read pops).
+u32 pure_io_bits(u32 p, u32 width) {
+  if (p >= 0x1F801000 && p < 0x1F801024) return ~0u;
+  if (p >= 0x1F801060 && p < 0x1F801064) return ~0u;
+  if (p >= 0x1F801070 && p < 0x1F801078) return ~0u;
+  if (p >= 0x1F801080 && p < 0x1F801100) return ~0u;
+  if (p == 0x1F801800 || p == 0x1F801803) return ~0u;
+  if (p >= 0x1F801814 && p < 0x1F801818) return ~0u;
+  if ((p == 0x1F801DAA || p == 0x1F801DAE) && width <= 2) return ~0u;
+  if (p >= 0x1F801044 && p < 0x1F801048) return 0x7FF;
+  return 0;
+}
+
+// A load the loop may make: no exception, no side effect. Returns which bits of the value it
+// delivers (after sign or zero extension) cannot change before the next event; 0 = none, refused.
+u32 pure_load_bits(u32 sr, u32 vaddr, u32 width, bool sign) {
+  if (vaddr & (width - 1)) return 0;
+  if ((sr & Cop0::kKUc) && (vaddr & 0x80000000)) return 0;
+  if (vaddr >= 0xC0000000) return 0;
+  const u32 p = Bus::physical(vaddr);
+  if (p < 0x00800000) return ~0u;
+  if (p >= 0x1F800000 && p < 0x1F800000 + Bus::kScratchSize) return vaddr < 0xA0000000 ? ~0u : 0;
+  if (p >= 0x1FC00000 && p < 0x1FC00000 + Bus::kBiosSize) return ~0u;
+  u32 bits = pure_io_bits(p, width);
+  if (bits == ~0u || bits == 0 || width == 4) return bits;
+  // The bytes read, at the bottom of the value; the extension is known when its source bit is.
+  const u32 value_mask = (1u << (8 * width)) - 1, sign_bit = 1u << (8 * width - 1);
+  bits = (bits >> (8 * (p & 3))) & value_mask;
+  if (!sign || (bits & sign_bit)) bits |= ~value_mask;
+  return bits;
+}
+
+u32 load_width(u32 instr) {
+  switch (instr >> 26) {
+    case 0x20: case 0x24: return 1;  // LB, LBU
+    case 0x21: case 0x25: return 2;  // LH, LHU
+    case 0x23: return 4;             // LW
+    default: return 0;
+  }
+}
+
+}  // namespace
+
+void IdleSkip::at_loop_head(Cpu& cpu) {
+  const u32 head = cpu.pc_;
+  const u64 before = cpu.instructions_;
+  Backoff& b = backoff_[(head >> 2) % backoff_.size()];
+  if (head == last_head_ && cpu.sched_.now() + last_cost_ >= cpu.sched_.next_deadline()) {
+    // Right after a skip: the next event falls due within this iteration, which is interpreted.
+  } else if (b.head == head && b.visits > 0) {
+    --b.visits;
+  } else {
+    if (b.head != head) b = Backoff{head, 0, 0};
+    if (examine(cpu)) {
+      b.failures = 0;
+    } else {
+      b.failures = std::min<u32>(b.failures + 1, kMaxBackoff);
+      b.visits = (1u << b.failures) - 1;
+    }
+  }
+  // The run loop calls here only when it would step; make sure it does.
+  if (cpu.instructions_ == before) cpu.step();
+}
+
+bool IdleSkip::examine(Cpu& cpu) {
+  Bus& bus = cpu.bus_;
+  Scheduler& sched = cpu.sched_;
+  const u32 head = cpu.pc_;
+  if (cpu.next_in_delay_ || cpu.hook_armed_ || bus.dcache_mode() || cpu.interrupt_pending() ||
+      (cpu.cop0_.dcic & (Cop0::kDcicPCE | Cop0::kDcicDAE)))
+    return false;
+
+  // 1. Execute one iteration, vetting each instruction before it runs.
+  const Cycles deadline = sched.next_deadline();
+  const Cycles t0 = sched.now();
+  const u64 i0 = cpu.instructions_;
+  const std::array<u32, 32> regs0 = cpu.regs_;
+  const u32 load0[4] = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
+  const ICache& icache = bus.icache();
+  path_len_ = 0;
+  do {
+    if (cpu.stop_ || sched.now() >= deadline) return false;
+    if (path_len_ == kMaxPath) return false;
+    u32 instr;
+    if (!peek_code(bus, cpu.pc_, instr)) return false;
+    IdleStep& st = path_[path_len_++];
+    st = {cpu.pc_, instr, 0, 0, 0};
+    tags_[path_len_ - 1] = icache.tag(ICache::line(cpu.pc_));
+    const IdleProof::Kind kind = IdleProof::classify(instr);
+    if (kind == IdleProof::Kind::Other) return false;
+    if (kind == IdleProof::Kind::Branch && cpu.next_in_delay_) return false;
+    const u32 width = load_width(instr);
+    if (width) {
+      st.load_addr = cpu.regs_[(instr >> 21) & 31] + static_cast<u32>(static_cast<s16>(instr & 0xFFFF));
+      const bool sign = (instr >> 26) == 0x20 || (instr >> 26) == 0x21;  // LB, LH
+      st.load_bits = pure_load_bits(cpu.cop0_.sr, st.load_addr, width, sign);
+      if (st.load_bits == 0) return false;
+    }
+    cpu.step();
+    st.load_value = cpu.load_val_;
+    if (cpu.hook_armed_) return false;
+  } while (cpu.pc_ != head || cpu.next_in_delay_);
+
+  // The iteration ran without an event falling due (events only run at or after the deadline),
+  // filled no i-cache line (a fill changes its line's tag, and a later fill in the same iteration
+  // cannot restore it: both would be for addresses the iteration fetches, with one tag), and left
+  // the load pipeline as it was.
+  const Cycles t1 = sched.now();
+  if (t1 >= deadline) return false;
+  for (u32 i = 0; i < path_len_; ++i)
+    if (icache.tag(ICache::line(path_[i].pc)) != tags_[i]) return false;
+  const u32 load1[4] = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
+  if (!std::equal(load0, load0 + 4, load1)) return false;
+
+  // 2. Prove the following iterations repeat it, each adding the same step to the registers.
+  IdleProof proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_);
+  if (!proof.run(path_.data(), path_len_)) return false;
+
+  // 3. Skip whole iterations, ending before the deadline so the event's iteration is interpreted.
+  const Cycles cost = t1 - t0;
+  const u64 steps = cpu.instructions_ - i0;
+  const u64 by_time = (deadline - 1 - t1) / cost;
+  const u64 n = proof.max_k() < by_time ? proof.max_k() + 1 : by_time;
+  last_head_ = head;
+  last_cost_ = cost;
+  if (n == 0) return false;
+  for (u32 i = 1; i < 32; ++i) cpu.regs_[i] += static_cast<u32>(n) * (cpu.regs_[i] - regs0[i]);
+  sched.advance(n * cost);
+  cpu.instructions_ += n * steps;
+  ++stats_.skips;
+  stats_.iterations += n;
+  stats_.cycles += n * cost;
+  return true;
+}
+
+}  // namespace psx

@@ -1,0 +1,74 @@
+// Idle-loop skipping: a program waiting for something (VBlank by polling I_STAT or GPUSTAT, a
+// CD-ROM or DMA status bit, a RAM flag an interrupt handler sets, a countdown delay loop) spends
+// most of its host time executing the same few instructions. Between two scheduled events nothing
+// outside the CPU changes, so when one iteration of a loop provably leaves the machine as it found
+// it (up to counters that advance by a fixed step), the iterations until the next event can be
+// accounted for at once: time and the instruction count advance by whole iterations, the counters
+// by their steps, and the interpreter resumes at the loop head before the event is due, exactly
+// where it would have been. Skipping is therefore bit-identical to interpreting.
+//
+// How a loop qualifies, at its head (the target of a short backward branch):
+//  1. One iteration is executed normally, instruction by instruction, and recorded. Before each
+//     instruction it is vetted: stores, multiply/divide, coprocessor, trapping and system
+//     instructions disqualify the loop, as does a load from anything but RAM, the scratchpad, the
+//     BIOS ROM or an I/O register whose read has no side effect and whose value changes only at
+//     events or CPU writes (no timer counters, FIFOs, GPUREAD, SIO). No event may fall due, no
+//     i-cache line may be filled (so every iteration costs the same cycles), no hook may fire.
+//  2. The recorded path is re-evaluated symbolically with every register as base + k*step (the
+//     step is what the recorded iteration added), proving that iteration k+1 starts from the
+//     registers of iteration k plus one step, and bounding k so that every branch decision and
+//     load address along the path stays the same (loads return what they returned, as memory and
+//     the allowed registers cannot change before the next event).
+//  3. The largest whole number of iterations that ends before the next event and within that bound
+//     is skipped.
+#pragma once
+#include <array>
+
+#include "core/cpu/idle_proof.h"
+#include "core/scheduler.h"
+#include "core/types.h"
+
+namespace psx {
+
+class Bus;
+template <class BusT>
+class CpuT;
+
+class IdleSkip {
+ public:
+  static constexpr u32 kMaxPath = 64;  // instructions per iteration examined at most
+
+  struct Stats {
+    u64 skips = 0;       // times iterations were skipped
+    u64 iterations = 0;  // loop iterations skipped in all
+    u64 cycles = 0;      // CPU cycles they took
+  };
+
+  // Called by the CPU's run loop with pc at a loop head; executes at least one instruction.
+  void at_loop_head(CpuT<Bus>& cpu);
+  const Stats& stats() const { return stats_; }
+
+ private:
+  // Records and proves one iteration from the loop head; skips and returns true when it can.
+  bool examine(CpuT<Bus>& cpu);
+
+  // A loop that could not be skipped (it stores, reads a timer, exits, or an event is due within
+  // its iteration) is examined again only after 2^failures - 1 more visits to its head, so loops
+  // that never qualify cost little.
+  static constexpr u32 kMaxBackoff = 8;
+  struct Backoff {
+    u32 head = 1;
+    u32 visits = 0;
+    u32 failures = 0;
+  };
+  std::array<Backoff, 64> backoff_{};
+  // The loop last proven and what one iteration of it costs.
+  u32 last_head_ = 1;
+  Cycles last_cost_ = 0;
+  std::array<IdleStep, kMaxPath> path_{};
+  std::array<u32, kMaxPath> tags_{};  // i-cache tag of each step's line before its fetch
+  u32 path_len_ = 0;
+  Stats stats_;
+};
+
+}  // namespace psx

@@ -1,0 +1,107 @@
+// In-memory snapshots (Console::snapshot/restore) are the environments' fast reset: restoring one
+// must leave the console exactly as loading the equivalent save state does, so that a reset
+// followed by N frames or moves equals the first run, bit for bit (compared as whole save
+// states). A snapshot of another program is refused without touching the console.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "core/console.h"
+#include "core/state.h"
+#include "rl/env.h"
+
+namespace {
+
+using psx::Console;
+
+TEST(ConsoleSnapshot, RestoreThenRunRepeatsTheRunExactly) {
+  Console c;
+  c.boot_exe(TUMBLE_EXE);
+  c.run_frames(90);
+  Console::Snapshot snap;
+  c.snapshot(snap);
+  const std::vector<psx::u8> at_snapshot = c.save_state(false);
+  c.press_for(1, psx::pad_button::kStart, 4);
+  c.run_frames(60);
+  const std::vector<psx::u8> first = c.save_state(false);
+
+  c.restore(snap);
+  EXPECT_TRUE(c.save_state(false) == at_snapshot);
+  c.press_for(1, psx::pad_button::kStart, 4);
+  c.run_frames(60);
+  EXPECT_TRUE(c.save_state(false) == first);
+
+  // Taking a snapshot again into the same object replaces it.
+  c.snapshot(snap);
+  c.run_frames(5);
+  c.restore(snap);
+  EXPECT_TRUE(c.save_state(false) == first);
+}
+
+TEST(ConsoleSnapshot, RestoreMatchesLoadState) {
+  Console a, b;
+  a.boot_exe(TUMBLE_EXE);
+  b.boot_exe(TUMBLE_EXE);
+  a.run_frames(40);
+  Console::Snapshot snap;
+  a.snapshot(snap);
+  const std::vector<psx::u8> blob = a.save_state(false);
+  b.run_frames(7);
+  a.run_frames(3);
+  a.restore(snap);
+  b.load_state(blob);
+  a.run_frames(30);
+  b.run_frames(30);
+  EXPECT_TRUE(a.save_state(false) == b.save_state(false));
+}
+
+TEST(ConsoleSnapshot, OtherProgramOrEmptySnapshotIsRefused) {
+  Console tumble, other;
+  tumble.boot_exe(TUMBLE_EXE);
+  other.boot_exe(PSXRL_BUILD_DIR "/tests/roms/hello.exe");
+  tumble.run_frames(5);
+  other.run_frames(5);
+  Console::Snapshot snap;
+  EXPECT_THROW(tumble.restore(snap), psx::StateError);
+  other.snapshot(snap);
+  const std::vector<psx::u8> before = tumble.save_state(false);
+  EXPECT_THROW(tumble.restore(snap), psx::StateError);
+  EXPECT_TRUE(tumble.save_state(false) == before);
+}
+
+// An environment's reset restores its boot snapshot: a reset after an episode and the same
+// actions end in the same machine as a fresh environment's first episode: RAM, VRAM, CPU
+// registers, cycle and instruction counts. (Whole save-state bytes are not compared here: the
+// GPU's state holds a struct's padding bytes, whose content depends on the host's memory
+// history, and the two environments have different histories.)
+TEST(ConsoleSnapshot, EnvResetThenStepsEqualsFreshEnv) {
+  psxrl::rl::EnvConfig config;
+  config.obs = "simple";
+  psxrl::rl::Env used(config), fresh(config);
+  const int actions[] = {0, 1, 1, 2, 3, 0, 2, 1};
+  used.reset(1, 5);
+  for (int a : actions)
+    if (!used.episode_over()) used.step(a);
+  used.reset(1, 9);
+  fresh.reset(1, 9);
+  int steps = 0;
+  for (int a : actions) {
+    if (fresh.episode_over()) break;
+    const psxrl::rl::StepResult r1 = used.step(a), r2 = fresh.step(a);
+    EXPECT_EQ(r1.reward, r2.reward);
+    EXPECT_EQ(r1.terminated, r2.terminated);
+    ++steps;
+  }
+  EXPECT_GE(steps, 2);
+  Console &u = used.console(), &f = fresh.console();
+  EXPECT_EQ(u.cycles(), f.cycles());
+  EXPECT_EQ(u.instructions(), f.instructions());
+  EXPECT_EQ(u.frames(), f.frames());
+  EXPECT_TRUE(std::equal(u.ram().begin(), u.ram().end(), f.ram().begin()));
+  EXPECT_TRUE(std::equal(u.vram(), u.vram() + Console::kVramWidth * Console::kVramHeight, f.vram()));
+  for (psx::u32 r = 0; r < 32; ++r) EXPECT_EQ(u.cpu().reg(r), f.cpu().reg(r)) << "r" << r;
+  EXPECT_EQ(u.cpu().pc(), f.cpu().pc());
+}
+
+}  // namespace

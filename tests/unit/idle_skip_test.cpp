@@ -1,0 +1,194 @@
+// Idle-loop skipping (core/cpu/idle_skip.h) must be invisible: every program run with skipping
+// on ends in exactly the state it ends in with skipping off (the interpreter is the reference),
+// compared as whole save states (RAM, VRAM, CPU registers, cycle counter, every device). The
+// hand-written loops check which loops are skipped and which must not be (stores, timer counter
+// reads); the programs check whole workloads: Tumble's title and a level, the cdboot ROM booting
+// Tumble's disc, and test ROMs.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/console.h"
+#include "tumble_console_util.h"
+
+namespace {
+
+using psx::u32;
+using psx::Console;
+
+// MIPS I encodings (psx-spx "CPU Opcode Encoding"); registers by number.
+constexpr u32 kT0 = 8, kT1 = 9, kT2 = 10, kT3 = 11, kT4 = 12, kS0 = 16, kS1 = 17;
+u32 itype(u32 op, u32 rs, u32 rt, u32 imm) { return op << 26 | rs << 21 | rt << 16 | (imm & 0xFFFF); }
+u32 lui(u32 rt, u32 imm) { return itype(0x0F, 0, rt, imm); }
+u32 ori(u32 rt, u32 rs, u32 imm) { return itype(0x0D, rs, rt, imm); }
+u32 addiu(u32 rt, u32 rs, int imm) { return itype(0x09, rs, rt, u32(imm)); }
+u32 andi(u32 rt, u32 rs, u32 imm) { return itype(0x0C, rs, rt, imm); }
+u32 lw(u32 rt, int off, u32 base) { return itype(0x23, base, rt, u32(off)); }
+u32 sw(u32 rt, int off, u32 base) { return itype(0x2B, base, rt, u32(off)); }
+u32 bne(u32 rs, u32 rt, int off) { return itype(0x05, rs, rt, u32(off)); }
+u32 beq(u32 rs, u32 rt, int off) { return itype(0x04, rs, rt, u32(off)); }
+u32 bgtz(u32 rs, int off) { return itype(0x07, rs, 0, u32(off)); }
+u32 sltu(u32 rd, u32 rs, u32 rt) { return rs << 21 | rt << 16 | rd << 11 | 0x2B; }
+u32 j(u32 target) { return 0x02u << 26 | ((target >> 2) & 0x03FFFFFF); }
+constexpr u32 kNop = 0;
+
+struct Outcome {
+  std::vector<psx::u8> state;
+  psx::IdleSkip::Stats stats;
+  u32 s1;
+};
+
+// Runs `code` placed at `base` (interrupts off, no BIOS) for `frames` frames.
+Outcome run_code(const std::vector<u32>& code, u32 base, bool skip, int frames = 6) {
+  Console c;
+  c.set_idle_skip(skip);
+  for (u32 i = 0; i < code.size(); ++i) c.write32(base + 4 * i, code[i]);
+  c.cpu().set_pc(base);
+  c.run_frames(frames);
+  return {c.save_state(false), c.idle_skip_stats(), c.cpu().reg(kS1)};
+}
+
+// Both ways; returns the skipping run's outcome after checking the states are equal.
+Outcome compare(const std::vector<u32>& code, u32 base = 0x80010000) {
+  Outcome off = run_code(code, base, false);
+  Outcome on = run_code(code, base, true);
+  EXPECT_EQ(off.stats.skips, 0u);
+  EXPECT_TRUE(on.state == off.state) << "state differs with idle skipping";
+  EXPECT_EQ(on.s1, off.s1);
+  return on;
+}
+
+// Tumble's hw_wait_vblank: poll I_STAT bit 0 with a bounded spin counter, then acknowledge it and
+// count the frame in s1 (4 instructions to set up, the loop at index 4).
+std::vector<u32> vblank_wait() {
+  return {lui(kT0, 0x1F80), addiu(kT1, 0, 0), lui(kT3, 0x0002), ori(kT3, kT3, 0x49F0),  // 150000
+          lw(kT2, 0x1070, kT0), kNop, andi(kT2, kT2, 1), bne(kT2, 0, 5), kNop,
+          addiu(kT1, kT1, 1), sltu(kT4, kT1, kT3), bne(kT4, 0, -8), kNop,
+          sw(0, 0x1070, kT0), addiu(kS1, kS1, 1), j(0x80010004), kNop};
+}
+
+TEST(IdleSkip, VBlankPollWithSpinCounterIsSkippedExactly) {
+  Outcome on = compare(vblank_wait());
+  EXPECT_GT(on.stats.skips, 0u);
+  // One frame is 263 lines of 3413 video cycles, 564480 CPU cycles at 33.8688/53.693175 MHz; a
+  // spin iteration costs at least 9 cycles (8 instructions, an I/O read of 3), so a frame has
+  // far more than 10000 iterations to skip.
+  EXPECT_GT(on.stats.iterations, 6u * 10000);
+  EXPECT_GE(on.s1, 5u);
+}
+
+TEST(IdleSkip, UncachedCodeIsSkippedExactly) {
+  std::vector<u32> code = vblank_wait();
+  code[15] = j(0xA0010004);
+  EXPECT_GT(compare(code, 0xA0010000).stats.skips, 0u);
+}
+
+TEST(IdleSkip, CountdownDelayLoopIsSkippedToItsEnd) {
+  // s1 counts completed delays of 200000 iterations; the exit test is t0 == 0 after a decrement.
+  std::vector<u32> code = {lui(kT0, 0x0003), ori(kT0, kT0, 0x0D40),  // 200000
+                           addiu(kT0, kT0, -1), bne(kT0, 0, -2), kNop,
+                           addiu(kS1, kS1, 1), j(0x80010000), kNop};
+  Outcome on = compare(code);
+  EXPECT_GT(on.stats.skips, 0u);
+  EXPECT_GE(on.s1, 1u);
+}
+
+TEST(IdleSkip, EqualityExitOnAnUpCounterIsHonoured) {
+  // Count t1 up to t3 = 70001 by 1 (BNE), then down by 3 while positive (BGTZ).
+  std::vector<u32> code = {addiu(kT1, 0, 0), lui(kT3, 1), ori(kT3, kT3, 0x1171),
+                           addiu(kT1, kT1, 1), bne(kT1, kT3, -2), kNop,
+                           addiu(kT1, kT1, -3), bgtz(kT1, -2), kNop,
+                           addiu(kS1, kS1, 1), j(0x80010000), kNop};
+  Outcome on = compare(code);
+  EXPECT_GT(on.stats.skips, 0u);
+  EXPECT_GE(on.s1, 1u);
+}
+
+// JOY_STAT: bits 0-10 hold still between events, bits 11-31 are the baud timer, which counts.
+TEST(IdleSkip, JoystatPollOnStableBitsIsSkipped) {
+  std::vector<u32> code = vblank_wait();
+  code[4] = lw(kT2, 0x1044, kT0);
+  code[6] = andi(kT2, kT2, 0x200);  // bit 9, the interrupt request (an /ACK that never comes here)
+  EXPECT_GT(compare(code).stats.skips, 0u);
+}
+
+TEST(IdleSkip, LoopKeepingTheBaudTimerIsNotSkipped) {
+  std::vector<u32> code = vblank_wait();
+  code[4] = lw(kT2, 0x1044, kT0);
+  code[6] = andi(kT4 + 1, kT2, 0x200);  // t5 = bit 9, t2 keeps the whole word, timer included
+  code[7] = bne(kT4 + 1, 0, 5);
+  EXPECT_EQ(compare(code).stats.skips, 0u);
+}
+
+TEST(IdleSkip, LoopThatStoresIsNotSkipped) {
+  std::vector<u32> code = vblank_wait();
+  code[5] = sw(kT2, 0x100, 0);  // the load delay slot now stores into RAM
+  EXPECT_EQ(compare(code).stats.skips, 0u);
+}
+
+TEST(IdleSkip, TimerCounterPollIsNotSkipped) {
+  // Root counter 0 counts between events: waiting for it to pass 0x8000 cannot jump to an event.
+  std::vector<u32> code = {lui(kT0, 0x1F80), lw(kT2, 0x1100, kT0), kNop, andi(kT2, kT2, 0x8000),
+                           beq(kT2, 0, -4), kNop, addiu(kS1, kS1, 1), j(0x80010000), kNop};
+  EXPECT_EQ(compare(code).stats.skips, 0u);
+}
+
+TEST(IdleSkip, GpureadPollIsNotSkipped) {
+  std::vector<u32> code = vblank_wait();
+  code[4] = lw(kT2, 0x1810, kT0);  // GPUREAD: a read may advance a VRAM download
+  EXPECT_EQ(compare(code).stats.skips, 0u);
+}
+
+// Whole programs: the same calls with skipping off and on end in the same save state.
+void expect_same(const std::function<void(Console&)>& boot, const std::function<void(Console&)>& play,
+                 bool expect_skips = true) {
+  Console off, on;
+  off.set_idle_skip(false);
+  boot(off);
+  boot(on);
+  play(off);
+  play(on);
+  EXPECT_EQ(off.cycles(), on.cycles());
+  EXPECT_EQ(off.instructions(), on.instructions());
+  EXPECT_TRUE(off.save_state(false) == on.save_state(false)) << "state differs with idle skipping";
+  if (expect_skips) EXPECT_GT(on.idle_skip_stats().skips, 0u);
+}
+
+TEST(IdleSkipPrograms, TumbleTitle) {
+  expect_same([](Console& c) { c.boot_exe(TUMBLE_EXE); }, [](Console& c) { c.run_frames(240); });
+}
+
+TEST(IdleSkipPrograms, TumbleLevelWithMoves) {
+  auto play = [](Console& c) {
+    c.run_frames(200);
+    c.write32(tumble_test::kContractAddress + TUMBLE_FIELD(request_level), 1);
+    for (int i = 0; i < 6; ++i) {
+      c.press_for(1, psx::pad_button::kRight, 8);
+      c.run_frames(30);
+      c.press_for(1, psx::pad_button::kUp, 8);
+      c.run_frames(30);
+    }
+  };
+  expect_same([](Console& c) { c.boot_exe(TUMBLE_EXE); }, play);
+}
+
+TEST(IdleSkipPrograms, CdbootRomBootsTumbleDisc) {
+  auto boot = [](Console& c) {
+    c.load_bios(PSXRL_BUILD_DIR "/tests/roms/cdboot_rom.bin");
+    c.insert_disc(TUMBLE_CUE);
+    c.boot_disc();
+  };
+  expect_same(boot, [](Console& c) { c.run_frames(300); });
+}
+
+TEST(IdleSkipPrograms, TestRoms) {
+  for (const char* name : {"gpu_polygons", "dma_modes", "cdrom_controller", "timers_video", "spu_voices", "sio_pad"}) {
+    SCOPED_TRACE(name);
+    const std::string exe = std::string(PSXRL_BUILD_DIR "/tests/roms/") + name + ".exe";
+    expect_same([&](Console& c) { c.boot_exe(exe); }, [](Console& c) { c.run_frames(120); }, false);
+  }
+}
+
+}  // namespace

@@ -66,6 +66,8 @@ class RandomAgent : public Agent {
   std::string name() const override { return "random"; }
   std::string network() const override { return "none, " + std::to_string(actions_) + " actions"; }
   int act(const std::vector<float>&, bool) override { return random_action(); }
+  std::vector<double> q_values(const std::vector<float>&) override { return std::vector<double>(actions_, 0.0); }
+  std::uint64_t parameter_count() const override { return 0; }
   void observe(const Transition&) override { ++moves_; }
   double epsilon() const override { return 1.0; }
 
@@ -78,8 +80,10 @@ class RandomAgent : public Agent {
 
 std::string default_obs(const std::string& agent) { return agent == "dqn" ? "local" : "simple"; }
 
-std::unique_ptr<Agent> make_agent(const std::string& name, rl::ObsKind obs, int inputs, int actions,
-                                  const AgentOptions& options) {
+double default_lr(const std::string& obs) { return obs == "visual" || obs == "multimodal" ? 0.004 : 0.0025; }
+
+std::unique_ptr<Agent> make_agent(const std::string& name, rl::ObsKind obs, const std::vector<rl::Space>& spaces,
+                                  int actions, const AgentOptions& options) {
   if (name == "random") return std::make_unique<RandomAgent>(options, actions);
   if (name == "q") {
     if (obs != rl::ObsKind::Simple)
@@ -88,12 +92,22 @@ std::unique_ptr<Agent> make_agent(const std::string& name, rl::ObsKind obs, int 
     return std::make_unique<QAgent>(options, actions);
   }
   if (name == "dqn") {
-    if (obs == rl::ObsKind::Visual || obs == rl::ObsKind::Multimodal || obs == rl::ObsKind::Ram)
-      throw std::invalid_argument("agent 'dqn' has the seed's fully connected network only: use --obs local, "
-                                  "episode, audio or simple (the multimodal network is not built yet)");
-    return make_dqn_agent(inputs, actions, options);
+    if (obs == rl::ObsKind::Ram)
+      throw std::invalid_argument("agent 'dqn' has no network for the 2 MiB 'ram' observation: use --obs local, "
+                                  "visual, multimodal, episode, audio or simple");
+    bool interpret = obs == rl::ObsKind::Visual || obs == rl::ObsKind::Multimodal;
+    return make_dqn_agent(spaces, interpret, actions, options);
   }
   throw std::invalid_argument("unknown agent '" + name + "' (expected " + kAgentList + ")");
+}
+
+std::unique_ptr<Agent> make_agent(const std::string& name, rl::ObsKind obs, int inputs, int actions,
+                                  const AgentOptions& options) {
+  if (name == "dqn" && (obs == rl::ObsKind::Visual || obs == rl::ObsKind::Multimodal))
+    throw std::invalid_argument("the dqn agent's " + std::string(rl::obs_kind_name(obs)) +
+                                " network needs the observation's shapes, not only its length");
+  rl::Space flat{"features", {inputs}, rl::DType::F32, 0, 0};
+  return make_agent(name, obs, std::vector<rl::Space>{flat}, actions, options);
 }
 
 }  // namespace psxrl::agents

@@ -22,7 +22,7 @@ struct AgentOptions {
   std::uint64_t epsilon_moves = 10000;
   double alpha = 0.5;  // tabular learning rate (the seed does not state one)
   // DQN (§3.3.4, §4.2.1).
-  double lr = 0.0025;
+  double lr = 0.0025;  // default_lr(): 0.004 for the visual and multimodal networks
   int hidden = 32;  // width of the 4 hidden layers (the seed's Appendix C figure is lost)
   std::size_t replay_capacity = 5000, batch = 80;
   int epochs = 15;
@@ -58,6 +58,10 @@ class Agent {
   virtual std::string network() const = 0;
   // An action for `state`: the best known when `greedy`, else ε-greedy.
   virtual int act(const std::vector<float>& state, bool greedy) = 0;
+  // Q(state, a) for every action (all 0 for an agent that learns none).
+  virtual std::vector<double> q_values(const std::vector<float>& state) = 0;
+  // How many numbers the agent learns (network parameters or table entries).
+  virtual std::uint64_t parameter_count() const = 0;
   // A training move's transition; counts the move for the ε schedule.
   virtual void observe(const Transition& t) = 0;
   // The update after a training move (DQN trains one replay batch; tabular Q learns in observe).
@@ -83,11 +87,18 @@ class Agent {
 };
 
 inline constexpr const char* kAgentList = "random, q, dqn";
-// `name` is random, q or dqn; `inputs` the length of features() for the environment's
-// observation. Throws std::invalid_argument for an unknown agent or an observation it cannot use.
+// `name` is random, q or dqn; `spaces` the environment's observation arrays. Throws
+// std::invalid_argument for an unknown agent or an observation it cannot use.
+std::unique_ptr<Agent> make_agent(const std::string& name, rl::ObsKind obs, const std::vector<rl::Space>& spaces,
+                                  int actions, const AgentOptions& options);
+// The same for an observation known only by its length (features()): one float array, so not
+// the visual or multimodal observation, whose networks need the arrays' shapes.
 std::unique_ptr<Agent> make_agent(const std::string& name, rl::ObsKind obs, int inputs, int actions,
                                   const AgentOptions& options);
 // The observation an agent uses unless told otherwise: q and random simple, dqn local.
 std::string default_obs(const std::string& agent);
+// The seed's Adam learning rate (§4.2.1): 0.004 for the complex (visual, multimodal) networks,
+// 0.0025 for the others.
+double default_lr(const std::string& obs);
 
 }  // namespace psxrl::agents

@@ -24,6 +24,12 @@ class QAgent : public Agent {
     return static_cast<int>(std::max_element(q->begin(), q->end()) - q->begin());
   }
 
+  std::vector<double> q_values(const std::vector<float>& state) override {
+    const std::vector<double>* q = find(key(state));
+    return q ? *q : std::vector<double>(static_cast<size_t>(actions_), 0.0);
+  }
+  std::uint64_t parameter_count() const override { return table_.size() * static_cast<std::uint64_t>(actions_); }
+
   // Q(s,a) <- (1 - alpha) Q(s,a) + alpha (r + gamma max_a' Q(s',a')), no future past a win or loss.
   void observe(const Transition& t) override {
     ++moves_;

@@ -145,9 +145,8 @@ Trainer::Trainer(const TrainConfig& config) : config_(config) {
   if (config_.level < 1 || config_.level > env_->game().level_count)
     throw std::invalid_argument("game '" + config_.env.game + "' has levels 1 to " +
                                 std::to_string(env_->game().level_count) + ", not " + std::to_string(config_.level));
-  size_t inputs = 0;
-  for (const rl::Space& s : env_->observation_spaces()) inputs += s.elements();
-  agent_ = make_agent(config_.agent, env_->obs_kind(), static_cast<int>(inputs), env_->action_count(), config_.options);
+  agent_ = make_agent(config_.agent, env_->obs_kind(), env_->observation_spaces(), env_->action_count(),
+                      config_.options);
   meta_ = run_settings(config_);
   meta_["format"] = std::to_string(kCheckpointFormat);
   meta_["psxrl_version"] = kPsxrlVersion;

@@ -55,7 +55,7 @@ class ProgressLine {
   std::chrono::steady_clock::time_point last_{};
 };
 
-void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs) {
+void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, std::string& exploration) {
   agents::AgentOptions& o = c.options;
   app.add_option("--game", c.env.game, "game integration (default tumble)")->type_name("NAME");
   app.add_option("--level", c.level, "level to train on (default 1)")->type_name("N");
@@ -77,6 +77,9 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs) 
   app.add_option("--hidden", o.hidden, "dqn: width of the 4 hidden layers (default 32)")->type_name("N");
   app.add_option("--epsilon-moves", o.epsilon_moves, "training moves over which epsilon falls 1.0 -> 0.1 (default 10000)")
       ->type_name("N");
+  app.add_option("--exploration", exploration,
+                 "exploratory moves: epsilon (uniform, default) or q-weighted (seed Eq. 4.1)")
+      ->type_name("KIND");
   app.add_flag("--linear-output", o.linear_output, "dqn: linear output layer instead of tanh");
   app.add_flag("--target-network", o.target_network, "dqn: bootstrap from a target network");
   app.add_option("--target-sync", o.target_sync, "dqn: moves between target network syncs (default 500)")->type_name("N");
@@ -106,9 +109,9 @@ int train_command(const std::vector<std::string>& args) {
                "psxrl train"};
   setup_app(app, kAgentExitCodes);
   agents::TrainConfig c;
-  std::string obs;
+  std::string obs, exploration = "epsilon";
   bool quiet = false;
-  add_train_options(app, c, obs);
+  add_train_options(app, c, obs, exploration);
   app.add_flag("--quiet", quiet, "no progress line");
   if (auto code = parse_args(app, args)) return *code;
   c.env.obs = obs.empty() ? agents::default_obs(c.agent) : obs;
@@ -119,6 +122,7 @@ int train_command(const std::vector<std::string>& args) {
 
   std::unique_ptr<agents::Trainer> trainer;
   try {
+    c.options.exploration = agents::parse_exploration(exploration);
     trainer = std::make_unique<agents::Trainer>(c);
   } catch (const std::exception& e) {  // names, levels, game files, checkpoints, the run folder
     std::fprintf(stderr, "psxrl train: %s\n", e.what());

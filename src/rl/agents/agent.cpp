@@ -11,6 +11,25 @@
 
 namespace psxrl::agents {
 
+Exploration parse_exploration(const std::string& name) {
+  if (name == "epsilon") return Exploration::Epsilon;
+  if (name == "q-weighted") return Exploration::QWeighted;
+  throw std::invalid_argument("unknown exploration '" + name + "' (expected " + kExplorationList + ")");
+}
+
+const char* exploration_name(Exploration e) { return e == Exploration::QWeighted ? "q-weighted" : "epsilon"; }
+
+std::vector<double> q_weighted_probabilities(const std::vector<double>& q, const std::vector<double>& noise) {
+  if (q.empty()) return {};
+  auto [lo, hi] = std::minmax_element(q.begin(), q.end());
+  double range = *hi - *lo;
+  std::vector<double> p(q.size());
+  double sum = 0;
+  for (size_t a = 0; a < q.size(); ++a) sum += p[a] = std::max(0.0, q[a] + noise.at(a) * range);
+  for (double& v : p) v = sum > 0 ? v / sum : 1.0 / static_cast<double>(q.size());
+  return p;
+}
+
 double linear_epsilon(std::uint64_t moves, double start, double end, std::uint64_t over) {
   if (over == 0 || moves >= over) return end;
   return start + (end - start) * static_cast<double>(moves) / static_cast<double>(over);
@@ -43,6 +62,19 @@ std::vector<float> features(const rl::Observation& obs) {
 
 double Agent::epsilon() const {
   return linear_epsilon(moves_, options_.epsilon_start, options_.epsilon_end, options_.epsilon_moves);
+}
+
+int Agent::exploratory_action(const std::vector<float>& state) {
+  if (options_.exploration == Exploration::Epsilon) return random_action();
+  std::vector<double> noise(static_cast<size_t>(actions_));
+  for (double& n : noise) n = rng_.uniform() - 0.5;
+  std::vector<double> p = q_weighted_probabilities(q_values(state), noise);
+  double u = rng_.uniform();
+  for (int a = 0; a < actions_ - 1; ++a) {
+    if (u < p[static_cast<size_t>(a)]) return a;
+    u -= p[static_cast<size_t>(a)];
+  }
+  return actions_ - 1;  // what rounding leaves of the sum
 }
 
 void Agent::save(ByteWriter& w) const {

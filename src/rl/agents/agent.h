@@ -13,6 +13,13 @@
 
 namespace psxrl::agents {
 
+// How an ε-greedy agent picks its exploratory moves: uniformly (§3.3.1), or in proportion to the
+// seed's Eq. 4.1 (§4.2.4).
+enum class Exploration { Epsilon, QWeighted };
+inline constexpr const char* kExplorationList = "epsilon, q-weighted";
+Exploration parse_exploration(const std::string& name);  // throws std::invalid_argument
+const char* exploration_name(Exploration e);
+
 // Every option any agent takes; each agent reads the ones it needs. Defaults are the seed's.
 struct AgentOptions {
   double gamma = 0.9;
@@ -20,6 +27,7 @@ struct AgentOptions {
   // ε-greedy (§3.3.1, §4.2.1): linear from start to end over `epsilon_moves` training moves.
   double epsilon_start = 1.0, epsilon_end = 0.1;
   std::uint64_t epsilon_moves = 10000;
+  Exploration exploration = Exploration::Epsilon;
   double alpha = 0.5;  // tabular learning rate (the seed does not state one)
   // DQN (§3.3.4, §4.2.1).
   double lr = 0.0025;  // default_lr(): 0.004 for the visual and multimodal networks
@@ -34,6 +42,12 @@ struct AgentOptions {
 
 // ε after `moves` training moves: linear from start to end, then constant.
 double linear_epsilon(std::uint64_t moves, double start, double end, std::uint64_t over);
+
+// Eq. 4.1: the probability of each exploratory action a is proportional to
+// K(a) = Q(s|a) + noise[a] * range_a'(Q(s|a')), noise[a] one draw of rand(-0.5, 0.5) per action.
+// The seed does not say what a negative K means; a probability cannot be negative, so such an
+// action weighs 0, and when no action weighs more than 0 the choice is uniform.
+std::vector<double> q_weighted_probabilities(const std::vector<double>& q, const std::vector<double>& noise);
 
 // One move's experience (s, a, r, s'), the observations flattened to floats (features()).
 struct Transition {
@@ -56,7 +70,7 @@ class Agent {
   // The shape of what the agent learns (inputs, layers, outputs): a policy refuses to load into
   // an agent whose network() differs.
   virtual std::string network() const = 0;
-  // An action for `state`: the best known when `greedy`, else ε-greedy.
+  // An action for `state`: the best known when `greedy`, else ε-greedy (options.exploration).
   virtual int act(const std::vector<float>& state, bool greedy) = 0;
   // Q(state, a) for every action (all 0 for an agent that learns none).
   virtual std::vector<double> q_values(const std::vector<float>& state) = 0;
@@ -79,6 +93,9 @@ class Agent {
   virtual void load_state(ByteReader& r) = 0;
   bool explore() { return rng_.uniform() < epsilon(); }
   int random_action() { return static_cast<int>(rng_.below(static_cast<std::uint64_t>(actions_))); }
+  // An ε-greedy agent's move once explore() said so: uniform, or Eq. 4.1 (one noise draw per
+  // action, then one to pick).
+  int exploratory_action(const std::vector<float>& state);
 
   AgentOptions options_;
   int actions_;

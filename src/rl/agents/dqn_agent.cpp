@@ -111,7 +111,7 @@ class DqnAgent : public Agent {
   }
 
   int act(const std::vector<float>& state, bool greedy) override {
-    if (!greedy && explore()) return random_action();
+    if (!greedy && explore()) return exploratory_action(state);
     torch::NoGradGuard no_grad;
     return static_cast<int>(net_->forward(row(state)).argmax().item<std::int64_t>());
   }

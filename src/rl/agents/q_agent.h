@@ -18,7 +18,7 @@ class QAgent : public Agent {
   std::string network() const override { return "q-table over the simple index, " + std::to_string(actions_) + " actions"; }
 
   int act(const std::vector<float>& state, bool greedy) override {
-    if (!greedy && explore()) return random_action();
+    if (!greedy && explore()) return exploratory_action(state);
     const std::vector<double>* q = find(key(state));
     if (!q) return 0;  // every value is 0: the first action is the first best
     return static_cast<int>(std::max_element(q->begin(), q->end()) - q->begin());

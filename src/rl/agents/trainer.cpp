@@ -19,6 +19,17 @@ namespace {
 
 std::string flag(bool b) { return b ? "true" : "false"; }
 
+// Settings added after the first checkpoints, with the value every run before them had: an older
+// checkpoint without them still resumes and plays.
+const Settings kLaterSettings = {{"exploration", "epsilon"}};
+
+std::string setting(const Settings& s, const std::string& key) {
+  auto it = s.find(key);
+  if (it != s.end()) return it->second;
+  auto later = kLaterSettings.find(key);
+  return later == kLaterSettings.end() ? "(none)" : later->second;
+}
+
 const char* kCsvHeader = "episode,kind,score,reward,moves,frames,outcome,epsilon,loss,total_moves,seconds\n";
 
 std::string csv_row(const EpisodeRecord& r) {
@@ -96,14 +107,15 @@ Settings run_settings(const TrainConfig& c) {
           {"linear_output", flag(o.linear_output)},
           {"target_network", flag(o.target_network)},
           {"target_sync", std::to_string(o.target_sync)},
-          {"double_dqn", flag(o.double_dqn)}};
+          {"double_dqn", flag(o.double_dqn)},
+          {"exploration", exploration_name(o.exploration)}};
 }
 
 void apply_settings(const Settings& s, TrainConfig& c) {
   auto get = [&](const char* k) {
-    auto it = s.find(k);
-    if (it == s.end()) throw CorruptCheckpoint(std::string("checkpoint settings lack '") + k + "'");
-    return it->second;
+    std::string v = setting(s, k);
+    if (v == "(none)") throw CorruptCheckpoint(std::string("checkpoint settings lack '") + k + "'");
+    return v;
   };
   try {
     c.env.game = get("game");
@@ -130,8 +142,9 @@ void apply_settings(const Settings& s, TrainConfig& c) {
     o.target_network = get("target_network") == "true";
     o.target_sync = std::stoull(get("target_sync"));
     o.double_dqn = get("double_dqn") == "true";
-  } catch (const std::logic_error& e) {  // stoi and friends on a damaged value
-    throw CorruptCheckpoint(std::string("checkpoint settings hold a value that is not a number: ") + e.what());
+    o.exploration = parse_exploration(get("exploration"));
+  } catch (const std::logic_error& e) {  // stoi and friends on a damaged value, an unknown name
+    throw CorruptCheckpoint(std::string("checkpoint settings hold a value psxrl cannot read: ") + e.what());
   }
   c.options.gamma = c.env.gamma;
   c.options.seed = c.seed;
@@ -176,8 +189,7 @@ std::string Trainer::file(const char* name) const { return (fs::path(config_.out
 void Trainer::restore() {
   Checkpoint c = read_checkpoint(file(kCheckpointFile));
   for (const auto& [k, v] : meta_) {
-    auto it = c.meta.find(k);
-    std::string had = it == c.meta.end() ? "(none)" : it->second;
+    std::string had = setting(c.meta, k);
     if (had != v)
       throw std::invalid_argument(config_.out + " was trained with " + k + " = " + had + ", this command has " + k +
                                   " = " + v + ": resume with the run's own settings");

@@ -70,6 +70,9 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, 
   app.add_option("--max-moves", c.env.max_moves, "move cap per episode (default: the game's)")->type_name("N");
   app.add_option("--test-every", c.test_every, "every Nth episode is a greedy test (default 10: 9 train, 1 test)")
       ->type_name("N");
+  app.add_option("--envs", c.envs,
+                 "environments collecting experience in parallel (default 1; more cannot --resume)")
+      ->type_name("K");
   app.add_option("--stop-score", c.stop_score, "stop after a test episode scoring at least S")->type_name("S");
   app.add_option("--alpha", o.alpha, "q: learning rate of the table (default 0.5)")->type_name("A");
   app.add_option("--lr", o.lr, "dqn: Adam learning rate (default 0.004 visual/multimodal, else 0.0025)")

@@ -73,6 +73,9 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, 
   app.add_option("--envs", c.envs,
                  "environments collecting experience in parallel (default 1; more cannot --resume)")
       ->type_name("K");
+  app.add_option("--start-states", c.start_states,
+                 "probability that a training episode starts from a state saved in earlier ones (default 0)")
+      ->type_name("P");
   app.add_option("--stop-score", c.stop_score, "stop after a test episode scoring at least S")->type_name("S");
   app.add_option("--alpha", o.alpha, "q: learning rate of the table (default 0.5)")->type_name("A");
   app.add_option("--lr", o.lr, "dqn: Adam learning rate (default 0.004 visual/multimodal, else 0.0025)")

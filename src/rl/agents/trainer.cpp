@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "rl/agents/learning_curve.h"
+#include "rl/vec_env.h"
 
 namespace psxrl::agents {
 
@@ -20,7 +21,7 @@ std::string flag(bool b) { return b ? "true" : "false"; }
 
 // Settings added after the first checkpoints, with the value every run before them had: an older
 // checkpoint without them still resumes and plays.
-const Settings kLaterSettings = {{"envs", "1"}, {"exploration", "epsilon"}};
+const Settings kLaterSettings = {{"envs", "1"}, {"exploration", "epsilon"}, {"start_states", "0"}};
 
 std::string setting(const Settings& s, const std::string& key) {
   auto it = s.find(key);
@@ -95,6 +96,7 @@ Settings run_settings(const TrainConfig& c) {
           {"max_moves", c.env.max_moves ? std::to_string(*c.env.max_moves) : "game"},
           {"test_every", std::to_string(c.test_every)},
           {"envs", std::to_string(c.envs)},
+          {"start_states", format_double(c.start_states)},
           {"alpha", format_double(o.alpha)},
           {"lr", format_double(o.lr)},
           {"hidden", std::to_string(o.hidden)},
@@ -129,6 +131,7 @@ void apply_settings(const Settings& s, TrainConfig& c) {
     if (get("max_moves") != "game") c.env.max_moves = static_cast<std::uint32_t>(std::stoul(get("max_moves")));
     c.test_every = std::stoi(get("test_every"));
     c.envs = std::stoi(get("envs"));
+    c.start_states = std::stod(get("start_states"));
     AgentOptions& o = c.options;
     o.alpha = std::stod(get("alpha"));
     o.lr = std::stod(get("lr"));
@@ -151,7 +154,8 @@ void apply_settings(const Settings& s, TrainConfig& c) {
   c.options.seed = c.seed;
 }
 
-Trainer::Trainer(const TrainConfig& config) : config_(config) {
+// The saved-state generator: its own stream, so runs without --start-states draw nothing new.
+Trainer::Trainer(const TrainConfig& config) : config_(config), start_rng_(rl::episode_seed(config.seed, -1, 0)) {
   config_.options.gamma = config_.env.gamma;
   config_.options.seed = config_.seed;
   if (config_.test_every < 1) throw std::invalid_argument("--test-every must be at least 1");
@@ -161,6 +165,11 @@ Trainer::Trainer(const TrainConfig& config) : config_(config) {
     throw std::invalid_argument("--resume needs --envs 1: a checkpoint of a run with " + std::to_string(config_.envs) +
                                 " environments does not hold the episodes still running in the others, so the run "
                                 "could not continue exactly");
+  if (!(config_.start_states >= 0 && config_.start_states <= 1))
+    throw std::invalid_argument("--start-states is a probability, 0 to 1, not " + format_double(config_.start_states));
+  if (config_.resume && config_.start_states > 0)
+    throw std::invalid_argument("--resume needs --start-states 0: the saved states are kept in memory, not in the "
+                                "checkpoint, so the run could not continue exactly");
   slots_.resize(static_cast<size_t>(config_.envs));
   // Booting is the slow part: the environments boot in parallel, as the vector environment's do.
   unsigned threads = std::max(1u, std::min(std::thread::hardware_concurrency(), static_cast<unsigned>(config_.envs)));
@@ -170,6 +179,11 @@ Trainer::Trainer(const TrainConfig& config) : config_(config) {
   if (config_.level < 1 || config_.level > env.game().level_count)
     throw std::invalid_argument("game '" + config_.env.game + "' has levels 1 to " +
                                 std::to_string(env.game().level_count) + ", not " + std::to_string(config_.level));
+  bool needs_position = env.obs_kind() == rl::ObsKind::Simple || env.obs_kind() == rl::ObsKind::Local;
+  if (config_.start_states > 0 && needs_position && env.game().position_x.empty())
+    throw std::invalid_argument("game '" + config_.env.game + "' follows the ball's position in its script, which a " +
+                                "saved state does not hold: --start-states needs an observation without the position "
+                                "(visual, multimodal, episode, audio)");
   agent_ = make_agent(config_.agent, env.obs_kind(), env.observation_spaces(), env.action_count(), config_.options);
   meta_ = run_settings(config_);
   meta_["format"] = std::to_string(kCheckpointFormat);

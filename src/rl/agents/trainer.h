@@ -19,6 +19,8 @@
 namespace psxrl::agents {
 
 inline constexpr int kMaxEnvs = 64;
+// Saved states kept for --start-states: a uniform sample (reservoir) of every training move's.
+inline constexpr size_t kSavedStates = 32;
 
 struct TrainConfig {
   rl::EnvConfig env;  // game, obs, gamma (also the agent's), max_moves, user files
@@ -29,6 +31,7 @@ struct TrainConfig {
   std::uint64_t seed = 0;
   int test_every = 10;  // every test_every-th episode of each environment is a greedy test
   int envs = 1;         // environments stepped in parallel (docs/agents.md: how episodes count)
+  double start_states = 0;  // probability that a training episode starts from a saved state
   std::optional<std::int64_t> stop_score;  // stop after a test episode scoring at least this
   std::string out;
   bool resume = false;
@@ -52,6 +55,7 @@ struct EpisodeRecord {
   double loss = 0;            // the last learner loss (dqn)
   std::uint64_t total_moves = 0;  // training moves so far
   double seconds = 0;         // host time from the episode's start to its end; runs do not reproduce it
+  bool saved_start = false;   // started from a saved state (--start-states); not in the metric files
 };
 
 struct TrainStatus {
@@ -83,6 +87,7 @@ class Trainer {
     std::unique_ptr<rl::Env> env;
     std::uint64_t episodes = 0;  // episodes this environment has started
     bool test = false;
+    std::ptrdiff_t from = -1;    // the saved state the next episode starts from, -1: the level's start
     std::vector<float> state, next;
     int action = 0;
     rl::StepResult result;
@@ -91,7 +96,9 @@ class Trainer {
   };
   using Progress = std::function<void(const TrainStatus&)>;
 
+  void plan_episode(size_t i);
   void begin_episode(size_t i);
+  void offer_state(Slot& s);
   bool learn_from_move(Slot& s, const Progress& progress);
   bool end_episode(Slot& s, const Progress& progress);
   void save() const;
@@ -109,6 +116,9 @@ class Trainer {
   std::vector<EpisodeRecord> records_;
   std::chrono::steady_clock::time_point run_start_;  // host time of this process's run()
   std::uint64_t session_moves_ = 0, session_episodes_ = 0;
+  Rng start_rng_;                            // which states are kept and which episodes use them
+  std::vector<rl::Env::Snapshot> saved_;     // at most kSavedStates
+  std::uint64_t offered_ = 0;                // training moves offered to saved_
 };
 
 }  // namespace psxrl::agents

@@ -1,0 +1,113 @@
+// Training from saved states (--start-states, the seed's §5 "resume play from a previous state"):
+// an environment started from a snapshot shows the snapshot's picture, not the level start's, and
+// plays on exactly as the original episode did; a trainer with --start-states starts some
+// training episodes (never a test) from saved states, the same ones on every run.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "rl/agents/trainer.h"
+
+using namespace psxrl::agents;
+namespace rl = psxrl::rl;
+
+namespace {
+
+std::string run_dir(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("psxrl_agent_starts_" + name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+TrainConfig tiny(const std::string& out, double start_states) {
+  TrainConfig c;
+  c.agent = "q";
+  c.env.obs = "simple";
+  c.env.max_moves = 5;
+  c.episodes = 10;
+  c.test_every = 5;
+  c.seed = 8;
+  c.start_states = start_states;
+  c.out = out;
+  return c;
+}
+
+std::vector<std::string> rows(const std::vector<EpisodeRecord>& records) {
+  std::vector<std::string> out;
+  for (const EpisodeRecord& r : records)
+    out.push_back(std::to_string(r.episode) + " " + std::to_string(r.saved_start) + " " + std::to_string(r.score) +
+                  " " + std::to_string(r.moves) + " " + std::to_string(r.frames) + " " + r.outcome + " " +
+                  std::to_string(r.total_moves));
+  return out;
+}
+
+// Tumble's actions: 0 FORWARD, 1 LOOKRIGHT, 2 LOOKLEFT, 3 JUMPFORWARD.
+constexpr int kLookRight = 1;
+
+}  // namespace
+
+TEST(StartStates, SnapshotStartsWhereTheEpisodeWasAndPlaysOnTheSame) {
+  rl::EnvConfig config;
+  config.obs = "visual";
+  rl::Env env(config);
+  std::vector<float> start = features(env.reset(1, 5));
+  env.step(kLookRight);  // the camera turns: another picture, on the same square
+  std::vector<float> turned = features(env.observation());
+  ASSERT_NE(turned, start);
+  rl::Env::Snapshot snap = env.snapshot();
+  rl::StepResult original = env.step(kLookRight);
+  std::vector<float> after = features(env.observation());
+
+  env.reset(1, 5);
+  EXPECT_EQ(features(env.reset_to(snap, 5)), turned);  // the saved picture, not the level start's
+  rl::StepResult replay = env.step(kLookRight);
+  EXPECT_EQ(features(env.observation()), after);
+  EXPECT_EQ(replay.info.game_frames, original.info.game_frames);
+  EXPECT_EQ(replay.info.score, original.info.score);
+  EXPECT_EQ(replay.info.moves, 1u);  // a new episode: its counters restart
+  EXPECT_EQ(original.info.moves, 2u);
+}
+
+TEST(StartStates, SomeTrainingEpisodesStartFromSavedStatesTheSameOnEveryRun) {
+  std::string a = run_dir("a"), b = run_dir("b"), none = run_dir("none");
+  TrainConfig short_plain = tiny(none, 0);
+  short_plain.episodes = 3;
+  Trainer first(tiny(a, 0.5)), second(tiny(b, 0.5)), plain(short_plain);
+  first.run(nullptr);
+  second.run(nullptr);
+  plain.run(nullptr);
+  EXPECT_EQ(rows(first.records()), rows(second.records()));
+  int saved = 0;
+  for (const EpisodeRecord& r : first.records()) {
+    saved += r.saved_start;
+    if (r.test) {
+      EXPECT_FALSE(r.saved_start) << "test episode " << r.episode;
+    }
+  }
+  EXPECT_GT(saved, 0);
+  EXPECT_LT(saved, 8);  // 8 training episodes, the first of which has no saved state to start from
+  EXPECT_FALSE(first.records()[0].saved_start);
+  for (const EpisodeRecord& r : plain.records()) EXPECT_FALSE(r.saved_start);
+  for (const auto& d : {a, b, none}) std::filesystem::remove_all(d);
+}
+
+TEST(StartStates, RefusesResumeAndBadProbabilities) {
+  std::string dir = run_dir("refuse");
+  TrainConfig c = tiny(dir, 0.5);
+  c.episodes = 1;
+  {
+    Trainer t(c);
+    t.run(nullptr);
+  }
+  c.resume = true;
+  try {
+    Trainer t(c);
+    ADD_FAILURE() << "resumed with saved states";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--resume needs --start-states 0"), std::string::npos) << e.what();
+  }
+  c.resume = false;
+  c.start_states = 1.5;
+  EXPECT_THROW(Trainer{c}, std::invalid_argument);
+  std::filesystem::remove_all(dir);
+}

@@ -1,5 +1,5 @@
-// Deep Q-learning with LibTorch (seed §3.3.4, §3.3.5, §4.2.1); the only file that includes torch
-// is dqn_agent.cpp, so nothing else in the project compiles against it.
+// Deep Q-learning with LibTorch (seed §3.3.4, §3.3.5, §4.2.1); torch is included by dqn_agent.cpp
+// and the q_networks.h it alone includes, so nothing else in the project compiles against it.
 #pragma once
 #include <cstdint>
 #include <memory>

@@ -76,7 +76,6 @@ class Trainer {
 
   // Runs the remaining episodes; `progress` is called after every move and episode.
   void run(const std::function<void(const TrainStatus&)>& progress);
-  const rl::Env& env(int i = 0) const { return *slots_[static_cast<size_t>(i)].env; }
   const std::vector<EpisodeRecord>& records() const { return records_; }
   std::optional<std::uint64_t> first_win() const;  // the first test episode at the stop score
   const Agent& agent() const { return *agent_; }

@@ -55,12 +55,13 @@ class ProgressLine {
   std::chrono::steady_clock::time_point last_{};
 };
 
-void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs) {
+void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, std::string& exploration) {
   agents::AgentOptions& o = c.options;
   app.add_option("--game", c.env.game, "game integration (default tumble)")->type_name("NAME");
   app.add_option("--level", c.level, "level to train on (default 1)")->type_name("N");
   app.add_option("--agent", c.agent, "random, q (tabular Q-learning) or dqn (default)")->type_name("NAME");
-  app.add_option("--obs", obs, "observation: simple (q, random), local (dqn), episode, audio")->type_name("NAME");
+  app.add_option("--obs", obs, "observation: simple (q, random), local (dqn), visual, multimodal, episode, audio")
+      ->type_name("NAME");
   app.add_option("--episodes", c.episodes, "episodes in all, test episodes included (default 1000)")->type_name("N");
   app.add_option("--gamma", c.env.gamma, "discount; rewards are in units of 1 - gamma (default 0.9)")->type_name("G");
   app.add_option("--seed", c.seed, "seed of the agent, exploration and episodes (default 0)")->type_name("S");
@@ -69,12 +70,22 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs) 
   app.add_option("--max-moves", c.env.max_moves, "move cap per episode (default: the game's)")->type_name("N");
   app.add_option("--test-every", c.test_every, "every Nth episode is a greedy test (default 10: 9 train, 1 test)")
       ->type_name("N");
+  app.add_option("--envs", c.envs,
+                 "environments collecting experience in parallel (default 1; more cannot --resume)")
+      ->type_name("K");
+  app.add_option("--start-states", c.start_states,
+                 "probability that a training episode starts from a state saved in earlier ones (default 0)")
+      ->type_name("P");
   app.add_option("--stop-score", c.stop_score, "stop after a test episode scoring at least S")->type_name("S");
   app.add_option("--alpha", o.alpha, "q: learning rate of the table (default 0.5)")->type_name("A");
-  app.add_option("--lr", o.lr, "dqn: Adam learning rate (default 0.0025)")->type_name("LR");
+  app.add_option("--lr", o.lr, "dqn: Adam learning rate (default 0.004 visual/multimodal, else 0.0025)")
+      ->type_name("LR");
   app.add_option("--hidden", o.hidden, "dqn: width of the 4 hidden layers (default 32)")->type_name("N");
   app.add_option("--epsilon-moves", o.epsilon_moves, "training moves over which epsilon falls 1.0 -> 0.1 (default 10000)")
       ->type_name("N");
+  app.add_option("--exploration", exploration,
+                 "exploratory moves: epsilon (uniform, default) or q-weighted (seed Eq. 4.1)")
+      ->type_name("KIND");
   app.add_flag("--linear-output", o.linear_output, "dqn: linear output layer instead of tanh");
   app.add_flag("--target-network", o.target_network, "dqn: bootstrap from a target network");
   app.add_option("--target-sync", o.target_sync, "dqn: moves between target network syncs (default 500)")->type_name("N");
@@ -104,18 +115,20 @@ int train_command(const std::vector<std::string>& args) {
                "psxrl train"};
   setup_app(app, kAgentExitCodes);
   agents::TrainConfig c;
-  std::string obs;
+  std::string obs, exploration = "epsilon";
   bool quiet = false;
-  add_train_options(app, c, obs);
+  add_train_options(app, c, obs, exploration);
   app.add_flag("--quiet", quiet, "no progress line");
   if (auto code = parse_args(app, args)) return *code;
   c.env.obs = obs.empty() ? agents::default_obs(c.agent) : obs;
+  if (app.count("--lr") == 0) c.options.lr = agents::default_lr(c.env.obs);
   if (c.out.empty())
     c.out = "runs/" + c.env.game + "-l" + std::to_string(c.level) + "-" + c.agent + "-" + c.env.obs + "-s" +
             std::to_string(c.seed);
 
   std::unique_ptr<agents::Trainer> trainer;
   try {
+    c.options.exploration = agents::parse_exploration(exploration);
     trainer = std::make_unique<agents::Trainer>(c);
   } catch (const std::exception& e) {  // names, levels, game files, checkpoints, the run folder
     std::fprintf(stderr, "psxrl train: %s\n", e.what());

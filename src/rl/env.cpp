@@ -251,4 +251,31 @@ const Observation& Env::reset(int level, std::uint64_t seed, StepInfo* info) {
   return obs_;
 }
 
+Env::Snapshot Env::snapshot() {
+  if (level_ == 0) throw std::logic_error("snapshot() before reset(): no episode to save");
+  return {level_, time_at_start_, console_->save_state(false)};
+}
+
+const Observation& Env::reset_to(const Snapshot& s, std::uint64_t seed, StepInfo* info) {
+  auto t0 = std::chrono::steady_clock::now();
+  if (s.level < 1 || s.level > game_.level_count)
+    throw std::out_of_range("snapshot of level " + std::to_string(s.level) + ": game '" + game_.name +
+                            "' has levels 1 to " + std::to_string(game_.level_count));
+  console_->load_state(s.console);
+  rng_ = seed;
+  level_ = s.level;
+  std::vector<psx::StereoSample> discard;
+  console_->take_audio(discard);
+  moves_ = 0;
+  episode_frames_ = 0;
+  episode_reward_ = 0;
+  last_action_ = 0;
+  done_ = false;
+  time_at_start_ = s.time_at_start;
+  move_audio_.clear();
+  encode();
+  if (info) *info = make_info(0, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return obs_;
+}
+
 }  // namespace psxrl::rl

@@ -89,6 +89,20 @@ class Env {
   const Observation& reset(int level, std::uint64_t seed, StepInfo* info = nullptr);
   StepResult step(int action);
   const Observation& observation() const { return obs_; }
+
+  // A moment of an episode to start later episodes from (training from saved states, the seed's
+  // §5 proposal): the console's whole state, the level and its time at the level's start.
+  struct Snapshot {
+    int level = 0;
+    double time_at_start = 0;
+    std::vector<std::uint8_t> console;
+  };
+  Snapshot snapshot();
+  // Starts an episode at `s` instead of the level's start: the console state is loaded, the
+  // episode's moves, frames and reward restart from 0 and `seed` seeds the environment's own
+  // randomness. The script's on_reset is not called (the game's randomness carries on from the
+  // snapshot) and a script's own Lua variables are not part of the snapshot.
+  const Observation& reset_to(const Snapshot& s, std::uint64_t seed, StepInfo* info = nullptr);
   bool episode_over() const { return done_; }
   int level() const { return level_; }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <cmath>
 
 #include "rl/agents/learning_curve.h"
 #include "rl/agents/trainer.h"
@@ -114,4 +115,53 @@ TEST(Trainer, RefusesUnknownNamesAndLevels) {
 TEST(LearningCurve, MovingAverageOverFive) {
   // (1) (1+2)/2 (1+2+3)/3 ... then windows of 5: (2+3+4+5+6)/5 = 4.
   EXPECT_EQ(moving_average({1, 2, 3, 4, 5, 6}, 5), (std::vector<double>{1, 1.5, 2, 2.5, 3, 4}));
+}
+
+TEST(LearningCurve, TicksAreRoundNumbers) {
+  // Powers of ten below the last episode, halved when that gives fewer than 3 steps.
+  EXPECT_EQ(episode_ticks(10), (std::vector<double>{0, 5, 10}));
+  EXPECT_EQ(episode_ticks(27), (std::vector<double>{0, 5, 10, 15, 20, 25}));
+  EXPECT_EQ(episode_ticks(350), (std::vector<double>{0, 100, 200, 300}));
+  EXPECT_EQ(episode_ticks(1000), (std::vector<double>{0, 500, 1000}));
+  // Every 1000 points while that makes at most 8 labels, else every 2000, 5000, 10000...
+  EXPECT_EQ(score_ticks(0, 4000), (std::vector<double>{0, 1000, 2000, 3000, 4000}));
+  EXPECT_EQ(score_ticks(-1000, 12000), (std::vector<double>{0, 2000, 4000, 6000, 8000, 10000, 12000}));
+  EXPECT_EQ(score_ticks(0, 30000), (std::vector<double>{0, 5000, 10000, 15000, 20000, 25000, 30000}));
+  // 5x7 glyphs 6 pixels apart: "1000" is 3 * 6 + 5 pixels wide.
+  EXPECT_EQ(text_width("1000"), 23);
+  EXPECT_EQ(text_width(""), 0);
+}
+
+TEST(LearningCurve, EveryTickHasALabel) {
+  std::vector<EpisodeRecord> records;
+  for (std::uint64_t e = 1; e <= 100; ++e) {
+    EpisodeRecord r;
+    r.episode = e;
+    r.test = e % 10 == 0;
+    r.score = static_cast<std::int64_t>(e * 40);  // up to 4000: score ticks 0..4000
+    records.push_back(r);
+  }
+  RgbImage image = render_learning_curve(records);
+  ASSERT_EQ(image.width, 640);
+  ASSERT_EQ(image.height, 360);
+  auto black_in = [&](int x0, int x1, int y0, int y1) {
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const std::uint8_t* p = &image.rgb[(static_cast<size_t>(y) * image.width + x) * 3];
+        if (p[0] == 0 && p[1] == 0 && p[2] == 0) return true;
+      }
+    return false;
+  };
+  // The plot area spans x 56..624 and y 24..320 (margins 56 left, 16 right, 24 top, 40 bottom):
+  // score s is at y = 320 - s / 4000 * 296, its label left of x = 56 - 4 (the tick mark) and
+  // centred on that row; episode e at x = 56 + e / 100 * 568, its label 8 pixels under the axis.
+  for (double s : {0.0, 1000.0, 2000.0, 3000.0, 4000.0}) {
+    int y = 320 - static_cast<int>(std::lround(s / 4000 * 296));
+    EXPECT_TRUE(black_in(0, 52, y - 3, y + 4)) << "score label " << s;
+  }
+  for (double e : {0.0, 50.0, 100.0}) {
+    int x = 56 + static_cast<int>(std::lround(e / 100 * 568));
+    EXPECT_TRUE(black_in(x - 10, x + 10, 328, 335)) << "episode label " << e;
+  }
+  EXPECT_FALSE(black_in(0, 48, 330, 360));  // the corner under the score labels holds no text
 }

@@ -1,8 +1,9 @@
-// Deep Q-learning (seed §3.3.4, §4.2.1): the agent-local network, experience replay (§3.3.2),
-// Adam + MSE towards r + gamma max Q(s'), each replay batch trained for several epochs.
+// Deep Q-learning (seed §3.3.4, §3.3.5, §4.2.1): the agent-local or multimodal network
+// (q_networks.h), experience replay (§3.3.2), Adam + MSE towards r + gamma max Q(s'), each replay
+// batch trained for several epochs.
 #include "rl/agents/dqn_agent.h"
 
-#include <torch/torch.h>
+#include "rl/agents/q_networks.h"
 
 #include <algorithm>
 #include <sstream>
@@ -12,30 +13,19 @@ namespace psxrl::agents {
 
 namespace {
 
-// Fully connected: inputs -> 4 PReLU hidden layers -> actions, tanh (or linear) output. Five
-// Linear layers, as the seed's "5 layers" network with 11 inputs and 4 outputs.
-struct QNetImpl : torch::nn::Module {
-  static constexpr int kHiddenLayers = 4;
-  QNetImpl(int inputs, int hidden, int actions, bool linear_output) : linear_output(linear_output) {
-    int in = inputs;
-    for (int i = 0; i < kHiddenLayers; ++i) {
-      fc.push_back(register_module("fc" + std::to_string(i), torch::nn::Linear(in, hidden)));
-      act.push_back(register_module("prelu" + std::to_string(i), torch::nn::PReLU()));
-      in = hidden;
-    }
-    out = register_module("out", torch::nn::Linear(hidden, actions));
-  }
-  torch::Tensor forward(torch::Tensor x) {
-    for (size_t i = 0; i < fc.size(); ++i) x = act[i]->forward(fc[i]->forward(x));
-    x = out->forward(x);
-    return linear_output ? x : torch::tanh(x);
-  }
-  std::vector<torch::nn::Linear> fc;
-  std::vector<torch::nn::PReLU> act;
-  torch::nn::Linear out{nullptr};
-  bool linear_output;
+// A state as the replay memory keeps it: the byte arrays (frames) as bytes, the rest as floats,
+// so a visual state takes a quarter of the memory.
+struct Packed {
+  std::vector<float> f32;
+  std::vector<std::uint8_t> u8;
 };
-TORCH_MODULE(QNet);
+
+struct Stored {
+  Packed state, next_state;
+  int action = 0;
+  double reward = 0;
+  bool terminal = false;
+};
 
 std::string archive_bytes(const std::function<void(torch::serialize::OutputArchive&)>& save) {
   torch::serialize::OutputArchive archive;
@@ -56,14 +46,29 @@ void load_archive(const std::string& bytes, const std::function<void(torch::seri
   }
 }
 
+std::vector<Slice> slices_of(const std::vector<rl::Space>& spaces) {
+  std::vector<Slice> out;
+  std::int64_t offset = 0;
+  for (const rl::Space& s : spaces) {
+    auto n = static_cast<std::int64_t>(s.elements());
+    out.push_back({s, offset, n});
+    offset += n;
+  }
+  return out;
+}
+
 class DqnAgent : public Agent {
  public:
-  DqnAgent(int inputs, int actions, const AgentOptions& options)
+  DqnAgent(const std::vector<rl::Space>& spaces, bool interpret, int actions, const AgentOptions& options)
       : Agent(options, actions),
-        inputs_(inputs),
-        net_(inputs, options.hidden, actions, options.linear_output),
-        target_(inputs, options.hidden, actions, options.linear_output),
+        slices_(slices_of(spaces)),
+        net_(slices_, interpret, options.hidden, actions, options.linear_output),
+        target_(slices_, interpret, options.hidden, actions, options.linear_output),
         optimizer_(net_->parameters(), torch::optim::AdamOptions(options.lr)) {
+    for (const Slice& s : slices_) {
+      inputs_ += s.size;
+      (s.space.dtype == rl::DType::U8 ? u8_size_ : f32_size_) += static_cast<size_t>(s.size);
+    }
     if (options_.double_dqn) options_.target_network = true;
     // Weights N(0, variance 1e-4) from the agent's own seed (§4.2.1), biases 0; a local
     // generator, so no process-wide torch state decides the start.
@@ -80,21 +85,42 @@ class DqnAgent : public Agent {
 
   std::string name() const override { return "dqn"; }
   std::string network() const override {
-    std::string s = "mlp " + std::to_string(inputs_);
+    std::string s;
+    if (net_->interpret) {
+      s = "interpretive";
+      for (const Slice& sl : slices_) {
+        s += " " + sl.space.name + "[";
+        for (size_t i = 0; i < sl.space.shape.size(); ++i) s += (i ? "x" : "") + std::to_string(sl.space.shape[i]);
+        s += "]";
+      }
+    }
+    s += (s.empty() ? "mlp " : " -> mlp ") + std::to_string(net_->head_inputs);
     for (int i = 0; i < QNetImpl::kHiddenLayers; ++i) s += "-" + std::to_string(options_.hidden);
     return s + "-" + std::to_string(actions_) + " prelu " + (options_.linear_output ? "linear" : "tanh");
   }
+  std::uint64_t parameter_count() const override {
+    std::uint64_t n = 0;
+    for (const auto& p : net_->parameters()) n += static_cast<std::uint64_t>(p.numel());
+    return n;
+  }
+
+  std::vector<double> q_values(const std::vector<float>& state) override {
+    torch::NoGradGuard no_grad;
+    torch::Tensor q = net_->forward(row(state))[0].to(torch::kDouble).contiguous();
+    return std::vector<double>(q.data_ptr<double>(), q.data_ptr<double>() + q.numel());
+  }
 
   int act(const std::vector<float>& state, bool greedy) override {
-    if (!greedy && explore()) return random_action();
+    if (!greedy && explore()) return exploratory_action(state);
     torch::NoGradGuard no_grad;
     return static_cast<int>(net_->forward(row(state)).argmax().item<std::int64_t>());
   }
 
   void observe(const Transition& t) override {
     ++moves_;
-    if (memory_.size() < options_.replay_capacity) memory_.push_back(t);
-    else memory_[next_] = t;
+    Stored s{pack(t.state), pack(t.next_state), t.action, t.reward, t.terminal};
+    if (memory_.size() < options_.replay_capacity) memory_.push_back(std::move(s));
+    else memory_[next_] = std::move(s);
     next_ = (next_ + 1) % options_.replay_capacity;
   }
 
@@ -105,9 +131,9 @@ class DqnAgent : public Agent {
     torch::Tensor s = torch::empty({n, inputs_}), s2 = torch::empty({n, inputs_});
     torch::Tensor a = torch::empty({n}, torch::kLong), r = torch::empty({n}), live = torch::empty({n});
     for (std::int64_t i = 0; i < n; ++i) {
-      const Transition& t = memory_[picked[static_cast<size_t>(i)]];
-      s[i] = row(t.state)[0];
-      s2[i] = row(t.next_state)[0];
+      const Stored& t = memory_[picked[static_cast<size_t>(i)]];
+      unpack(t.state, s.data_ptr<float>() + i * inputs_);
+      unpack(t.next_state, s2.data_ptr<float>() + i * inputs_);
       a[i] = t.action;
       r[i] = static_cast<float>(t.reward);
       live[i] = t.terminal ? 0.0f : 1.0f;
@@ -126,6 +152,8 @@ class DqnAgent : public Agent {
   double last_loss() const override { return last_loss_; }
 
  protected:
+  // Replay entries: floats (as f64), then, when the observation has byte arrays, their bytes; an
+  // all-float observation keeps the layout of the first checkpoint format.
   void save_state(ByteWriter& w) const override {
     w.str(archive_bytes([&](auto& ar) { net_->save(ar); }));
     w.str(archive_bytes([&](auto& ar) { target_->save(ar); }));
@@ -133,11 +161,11 @@ class DqnAgent : public Agent {
     w.f64(last_loss_);
     w.u64(next_);
     w.u64(memory_.size());
-    for (const Transition& t : memory_) {
-      w.f32s(t.state);
+    for (const Stored& t : memory_) {
+      save_packed(w, t.state);
       w.u64(static_cast<std::uint64_t>(t.action));
       w.f64(t.reward);
-      w.f32s(t.next_state);
+      save_packed(w, t.next_state);
       w.u64(t.terminal);
     }
   }
@@ -151,15 +179,13 @@ class DqnAgent : public Agent {
     std::uint64_t n = r.count(40);
     if (n > options_.replay_capacity || next_ >= options_.replay_capacity) r.fail("replay memory larger than its capacity");
     memory_.assign(n, {});
-    for (Transition& t : memory_) {
-      t.state = r.f32s();
+    for (Stored& t : memory_) {
+      t.state = load_packed(r);
       t.action = static_cast<int>(r.u64());
       t.reward = r.f64();
-      t.next_state = r.f32s();
+      t.next_state = load_packed(r);
       t.terminal = r.u64() != 0;
-      if (t.state.size() != static_cast<size_t>(inputs_) || t.next_state.size() != t.state.size() || t.action < 0 ||
-          t.action >= actions_)
-        r.fail("a replay entry that does not fit the network");
+      if (t.action < 0 || t.action >= actions_) r.fail("a replay entry with an action the network does not have");
     }
   }
 
@@ -169,6 +195,43 @@ class DqnAgent : public Agent {
       throw std::invalid_argument("dqn: observation has " + std::to_string(state.size()) + " values, the network " +
                                   std::to_string(inputs_));
     return torch::from_blob(const_cast<float*>(state.data()), {1, inputs_}, torch::kFloat32).clone();
+  }
+
+  Packed pack(const std::vector<float>& state) const {
+    if (state.size() != static_cast<size_t>(inputs_))
+      throw std::invalid_argument("dqn: a transition's state has " + std::to_string(state.size()) +
+                                  " values, the network " + std::to_string(inputs_));
+    Packed p;
+    p.f32.reserve(f32_size_);
+    p.u8.reserve(u8_size_);
+    for (const Slice& s : slices_) {
+      const float* v = state.data() + s.offset;
+      if (s.space.dtype == rl::DType::U8) {
+        for (std::int64_t i = 0; i < s.size; ++i) p.u8.push_back(static_cast<std::uint8_t>(v[i]));
+      } else {
+        p.f32.insert(p.f32.end(), v, v + s.size);
+      }
+    }
+    return p;
+  }
+  void unpack(const Packed& p, float* out) const {
+    size_t f = 0, b = 0;
+    for (const Slice& s : slices_) {
+      float* o = out + s.offset;
+      for (std::int64_t i = 0; i < s.size; ++i)
+        o[i] = s.space.dtype == rl::DType::U8 ? static_cast<float>(p.u8[b++]) : p.f32[f++];
+    }
+  }
+  void save_packed(ByteWriter& w, const Packed& p) const {
+    w.f32s(p.f32);
+    if (u8_size_) w.u8s(p.u8);
+  }
+  Packed load_packed(ByteReader& r) const {
+    Packed p;
+    p.f32 = r.f32s();
+    if (u8_size_) p.u8 = r.u8s();
+    if (p.f32.size() != f32_size_ || p.u8.size() != u8_size_) r.fail("a replay entry that does not fit the network");
+    return p;
   }
 
   // Up to `batch` distinct entries, uniformly (rejection is cheap: batch << capacity).
@@ -203,21 +266,35 @@ class DqnAgent : public Agent {
     for (size_t i = 0; i < from.size(); ++i) to[i].copy_(from[i]);
   }
 
-  std::int64_t inputs_;
+  std::vector<Slice> slices_;
+  std::int64_t inputs_ = 0;
+  size_t f32_size_ = 0, u8_size_ = 0;
   QNet net_, target_;
   torch::optim::Adam optimizer_;
-  std::vector<Transition> memory_;
+  std::vector<Stored> memory_;
   size_t next_ = 0;
   double last_loss_ = 0;
 };
 
 }  // namespace
 
-std::unique_ptr<Agent> make_dqn_agent(int inputs, int actions, const AgentOptions& options) {
+std::int64_t visual_features(std::int64_t height, std::int64_t width) {
+  auto out = [](std::int64_t in, int kernel, int stride) { return in < kernel ? 0 : (in - kernel) / stride + 1; };
+  std::int64_t h = out(out(height, kConv1Kernel, kConv1Stride), kConv2Kernel, kConv2StrideY);
+  std::int64_t w = out(out(width, kConv1Kernel, kConv1Stride), kConv2Kernel, kConv2StrideX);
+  return kConv2Filters * h * w;
+}
+
+std::unique_ptr<Agent> make_dqn_agent(const std::vector<rl::Space>& spaces, bool interpret, int actions,
+                                      const AgentOptions& options) {
   // One intra-op thread: the same seed gives the same floating-point sums, and the emulator keeps
   // the other cores.
   torch::set_num_threads(1);
-  return std::make_unique<DqnAgent>(inputs, actions, options);
+  return std::make_unique<DqnAgent>(spaces, interpret, actions, options);
+}
+
+std::unique_ptr<Agent> make_dqn_agent(int inputs, int actions, const AgentOptions& options) {
+  return make_dqn_agent({rl::Space{"features", {inputs}, rl::DType::F32, 0, 0}}, false, actions, options);
 }
 
 }  // namespace psxrl::agents

@@ -18,11 +18,17 @@ class QAgent : public Agent {
   std::string network() const override { return "q-table over the simple index, " + std::to_string(actions_) + " actions"; }
 
   int act(const std::vector<float>& state, bool greedy) override {
-    if (!greedy && explore()) return random_action();
+    if (!greedy && explore()) return exploratory_action(state);
     const std::vector<double>* q = find(key(state));
     if (!q) return 0;  // every value is 0: the first action is the first best
     return static_cast<int>(std::max_element(q->begin(), q->end()) - q->begin());
   }
+
+  std::vector<double> q_values(const std::vector<float>& state) override {
+    const std::vector<double>* q = find(key(state));
+    return q ? *q : std::vector<double>(static_cast<size_t>(actions_), 0.0);
+  }
+  std::uint64_t parameter_count() const override { return table_.size() * static_cast<std::uint64_t>(actions_); }
 
   // Q(s,a) <- (1 - alpha) Q(s,a) + alpha (r + gamma max_a' Q(s',a')), no future past a win or loss.
   void observe(const Transition& t) override {

@@ -33,6 +33,10 @@ class ByteWriter {
     u64(v.size());
     for (float f : v) f64(f);
   }
+  void u8s(const std::vector<std::uint8_t>& v) {
+    u64(v.size());
+    bytes_.insert(bytes_.end(), v.begin(), v.end());
+  }
   const std::vector<std::uint8_t>& bytes() const { return bytes_; }
   std::string take_string() const { return std::string(bytes_.begin(), bytes_.end()); }
 
@@ -72,6 +76,13 @@ class ByteReader {
     need(n * 8);  // each stored as f64; checked before allocating
     std::vector<float> v(n);
     for (auto& f : v) f = static_cast<float>(f64());
+    return v;
+  }
+  std::vector<std::uint8_t> u8s() {
+    std::uint64_t n = u64();
+    need(n);
+    std::vector<std::uint8_t> v(p_ + pos_, p_ + pos_ + n);
+    pos_ += n;
     return v;
   }
   // A count that must fit what is left when each item takes at least `min_item_bytes`.

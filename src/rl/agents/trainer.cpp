@@ -2,10 +2,10 @@
 #include "rl/agents/trainer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
 
 #include "core/atomic_file.h"
 #include "rl/agents/learning_curve.h"
@@ -18,6 +18,17 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string flag(bool b) { return b ? "true" : "false"; }
+
+// Settings added after the first checkpoints, with the value every run before them had: an older
+// checkpoint without them still resumes and plays.
+const Settings kLaterSettings = {{"envs", "1"}, {"exploration", "epsilon"}, {"start_states", "0"}};
+
+std::string setting(const Settings& s, const std::string& key) {
+  auto it = s.find(key);
+  if (it != s.end()) return it->second;
+  auto later = kLaterSettings.find(key);
+  return later == kLaterSettings.end() ? "(none)" : later->second;
+}
 
 const char* kCsvHeader = "episode,kind,score,reward,moves,frames,outcome,epsilon,loss,total_moves,seconds\n";
 
@@ -84,6 +95,8 @@ Settings run_settings(const TrainConfig& c) {
           {"seed", std::to_string(c.seed)},
           {"max_moves", c.env.max_moves ? std::to_string(*c.env.max_moves) : "game"},
           {"test_every", std::to_string(c.test_every)},
+          {"envs", std::to_string(c.envs)},
+          {"start_states", format_double(c.start_states)},
           {"alpha", format_double(o.alpha)},
           {"lr", format_double(o.lr)},
           {"hidden", std::to_string(o.hidden)},
@@ -96,14 +109,15 @@ Settings run_settings(const TrainConfig& c) {
           {"linear_output", flag(o.linear_output)},
           {"target_network", flag(o.target_network)},
           {"target_sync", std::to_string(o.target_sync)},
-          {"double_dqn", flag(o.double_dqn)}};
+          {"double_dqn", flag(o.double_dqn)},
+          {"exploration", exploration_name(o.exploration)}};
 }
 
 void apply_settings(const Settings& s, TrainConfig& c) {
   auto get = [&](const char* k) {
-    auto it = s.find(k);
-    if (it == s.end()) throw CorruptCheckpoint(std::string("checkpoint settings lack '") + k + "'");
-    return it->second;
+    std::string v = setting(s, k);
+    if (v == "(none)") throw CorruptCheckpoint(std::string("checkpoint settings lack '") + k + "'");
+    return v;
   };
   try {
     c.env.game = get("game");
@@ -116,6 +130,8 @@ void apply_settings(const Settings& s, TrainConfig& c) {
     c.seed = std::stoull(get("seed"));
     if (get("max_moves") != "game") c.env.max_moves = static_cast<std::uint32_t>(std::stoul(get("max_moves")));
     c.test_every = std::stoi(get("test_every"));
+    c.envs = std::stoi(get("envs"));
+    c.start_states = std::stod(get("start_states"));
     AgentOptions& o = c.options;
     o.alpha = std::stod(get("alpha"));
     o.lr = std::stod(get("lr"));
@@ -130,28 +146,49 @@ void apply_settings(const Settings& s, TrainConfig& c) {
     o.target_network = get("target_network") == "true";
     o.target_sync = std::stoull(get("target_sync"));
     o.double_dqn = get("double_dqn") == "true";
-  } catch (const std::logic_error& e) {  // stoi and friends on a damaged value
-    throw CorruptCheckpoint(std::string("checkpoint settings hold a value that is not a number: ") + e.what());
+    o.exploration = parse_exploration(get("exploration"));
+  } catch (const std::logic_error& e) {  // stoi and friends on a damaged value, an unknown name
+    throw CorruptCheckpoint(std::string("checkpoint settings hold a value psxrl cannot read: ") + e.what());
   }
   c.options.gamma = c.env.gamma;
   c.options.seed = c.seed;
 }
 
-Trainer::Trainer(const TrainConfig& config) : config_(config) {
+// The saved-state generator: its own stream, so runs without --start-states draw nothing new.
+Trainer::Trainer(const TrainConfig& config) : config_(config), start_rng_(rl::episode_seed(config.seed, -1, 0)) {
   config_.options.gamma = config_.env.gamma;
   config_.options.seed = config_.seed;
   if (config_.test_every < 1) throw std::invalid_argument("--test-every must be at least 1");
-  env_ = std::make_unique<rl::Env>(config_.env);
-  if (config_.level < 1 || config_.level > env_->game().level_count)
+  if (config_.envs < 1 || config_.envs > kMaxEnvs)
+    throw std::invalid_argument("--envs must be 1 to " + std::to_string(kMaxEnvs) + ", not " + std::to_string(config_.envs));
+  if (config_.resume && config_.envs > 1)
+    throw std::invalid_argument("--resume needs --envs 1: a checkpoint of a run with " + std::to_string(config_.envs) +
+                                " environments does not hold the episodes still running in the others, so the run "
+                                "could not continue exactly");
+  if (!(config_.start_states >= 0 && config_.start_states <= 1))
+    throw std::invalid_argument("--start-states is a probability, 0 to 1, not " + format_double(config_.start_states));
+  if (config_.resume && config_.start_states > 0)
+    throw std::invalid_argument("--resume needs --start-states 0: the saved states are kept in memory, not in the "
+                                "checkpoint, so the run could not continue exactly");
+  slots_.resize(static_cast<size_t>(config_.envs));
+  // Booting is the slow part: the environments boot in parallel, as the vector environment's do.
+  unsigned threads = std::max(1u, std::min(std::thread::hardware_concurrency(), static_cast<unsigned>(config_.envs)));
+  pool_ = std::make_unique<rl::ThreadPool>(threads);
+  pool_->parallel_for(slots_.size(), [&](size_t i) { slots_[i].env = std::make_unique<rl::Env>(config_.env); });
+  const rl::Env& env = *slots_[0].env;
+  if (config_.level < 1 || config_.level > env.game().level_count)
     throw std::invalid_argument("game '" + config_.env.game + "' has levels 1 to " +
-                                std::to_string(env_->game().level_count) + ", not " + std::to_string(config_.level));
-  size_t inputs = 0;
-  for (const rl::Space& s : env_->observation_spaces()) inputs += s.elements();
-  agent_ = make_agent(config_.agent, env_->obs_kind(), static_cast<int>(inputs), env_->action_count(), config_.options);
+                                std::to_string(env.game().level_count) + ", not " + std::to_string(config_.level));
+  bool needs_position = env.obs_kind() == rl::ObsKind::Simple || env.obs_kind() == rl::ObsKind::Local;
+  if (config_.start_states > 0 && needs_position && env.game().position_x.empty())
+    throw std::invalid_argument("game '" + config_.env.game + "' follows the ball's position in its script, which a " +
+                                "saved state does not hold: --start-states needs an observation without the position "
+                                "(visual, multimodal, episode, audio)");
+  agent_ = make_agent(config_.agent, env.obs_kind(), env.observation_spaces(), env.action_count(), config_.options);
   meta_ = run_settings(config_);
   meta_["format"] = std::to_string(kCheckpointFormat);
   meta_["psxrl_version"] = kPsxrlVersion;
-  meta_["integration_hash"] = integration_hash(env_->game());
+  meta_["integration_hash"] = integration_hash(env.game());
   meta_["network"] = agent_->network();
 
   std::error_code ec;
@@ -177,8 +214,7 @@ std::string Trainer::file(const char* name) const { return (fs::path(config_.out
 void Trainer::restore() {
   Checkpoint c = read_checkpoint(file(kCheckpointFile));
   for (const auto& [k, v] : meta_) {
-    auto it = c.meta.find(k);
-    std::string had = it == c.meta.end() ? "(none)" : it->second;
+    std::string had = setting(c.meta, k);
     if (had != v)
       throw std::invalid_argument(config_.out + " was trained with " + k + " = " + had + ", this command has " + k +
                                   " = " + v + ": resume with the run's own settings");
@@ -190,6 +226,7 @@ void Trainer::restore() {
   std::uint64_t n = t.count(80);
   for (std::uint64_t i = 0; i < n; ++i) records_.push_back(load_record(t));
   if (!t.done()) t.fail("unexpected bytes after the metrics");
+  slots_[0].episodes = records_.size();  // one environment played them all
   write_metrics_from_records();
 }
 
@@ -221,78 +258,6 @@ void Trainer::write_metrics_from_records() const {
 void Trainer::append_metrics(const EpisodeRecord& r) const {
   std::ofstream(file("metrics.csv"), std::ios::app) << csv_row(r);
   std::ofstream(file("metrics.jsonl"), std::ios::app) << json_row(r);
-}
-
-EpisodeRecord Trainer::play_episode(std::uint64_t episode, bool test,
-                                    const std::function<void(const TrainStatus&)>& progress) {
-  auto start = std::chrono::steady_clock::now();
-  std::vector<float> s = features(env_->reset(config_.level, rl::episode_seed(config_.seed, 0, episode - 1)));
-  EpisodeRecord rec;
-  rec.episode = episode;
-  rec.test = test;
-  rl::StepResult r;
-  do {
-    int a = agent_->act(s, test);
-    r = env_->step(a);
-    std::vector<float> next = features(env_->observation());
-    if (!test) {
-      agent_->observe({s, a, r.reward, next, r.terminated});
-      agent_->learn();
-    }
-    s = std::move(next);
-    rec.frames += r.info.game_frames;
-    ++session_moves_;
-    if (progress) progress(status(episode, false));
-  } while (!r.terminated && !r.truncated);
-  rec.score = r.info.score;
-  rec.reward = r.info.episode_reward;
-  rec.moves = r.info.moves;
-  rec.outcome = r.info.outcome.empty() ? "truncated" : r.info.outcome;
-  rec.epsilon = agent_->epsilon();
-  rec.loss = agent_->last_loss();
-  rec.total_moves = agent_->moves();
-  rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  session_seconds_ += rec.seconds;
-  return rec;
-}
-
-void Trainer::run(const std::function<void(const TrainStatus&)>& progress) {
-  for (std::uint64_t ep = records_.size() + 1; ep <= config_.episodes; ++ep) {
-    bool test = ep % static_cast<std::uint64_t>(config_.test_every) == 0;
-    records_.push_back(play_episode(ep, test, progress));
-    ++session_episodes_;
-    append_metrics(records_.back());
-    save();
-    if (progress) progress(status(ep, true));
-    if (test && config_.stop_score && records_.back().score >= *config_.stop_score) break;
-  }
-}
-
-std::optional<std::uint64_t> Trainer::first_win() const {
-  for (const EpisodeRecord& r : records_)
-    if (r.test && r.outcome == "win") return r.episode;
-  return std::nullopt;
-}
-
-TrainStatus Trainer::status(std::uint64_t episode, bool episode_end) const {
-  TrainStatus s{};
-  s.episode = episode;
-  s.episode_end = episode_end;
-  s.episodes = config_.episodes;
-  s.moves = agent_->moves();
-  for (const EpisodeRecord& r : records_) {
-    if (r.test) {
-      s.last_test = r.score;
-      s.best_test = std::max(s.best_test.value_or(r.score), r.score);
-    } else {
-      s.last_train = r.score;
-    }
-  }
-  s.epsilon = agent_->epsilon();
-  s.moves_per_second = session_seconds_ > 0 ? static_cast<double>(session_moves_) / session_seconds_ : 0;
-  double per_episode = session_seconds_ / std::max<double>(1.0, static_cast<double>(session_episodes_));
-  s.eta_seconds = per_episode * static_cast<double>(config_.episodes - std::min(config_.episodes, records_.size()));
-  return s;
 }
 
 }  // namespace psxrl::agents

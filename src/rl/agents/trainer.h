@@ -1,7 +1,9 @@
 // `psxrl train` without the command line: the seed's training loop (§4.2.1: nine ε-greedy
-// training episodes, then one greedy test episode), per-episode metrics (CSV and JSON Lines), a
-// learning-curve PNG and a checkpoint after every episode, and exact resumption from it.
+// training episodes, then one greedy test episode), experience from one or K environments
+// stepped in parallel, per-episode metrics (CSV and JSON Lines), a learning-curve PNG and a
+// checkpoint after every episode, and exact resumption from it (one environment).
 #pragma once
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -12,8 +14,13 @@
 #include "rl/agents/agent.h"
 #include "rl/agents/checkpoint.h"
 #include "rl/env.h"
+#include "rl/thread_pool.h"
 
 namespace psxrl::agents {
+
+inline constexpr int kMaxEnvs = 64;
+// Saved states kept for --start-states: a uniform sample (reservoir) of every training move's.
+inline constexpr size_t kSavedStates = 32;
 
 struct TrainConfig {
   rl::EnvConfig env;  // game, obs, gamma (also the agent's), max_moves, user files
@@ -22,7 +29,9 @@ struct TrainConfig {
   AgentOptions options;
   std::uint64_t episodes = 1000;
   std::uint64_t seed = 0;
-  int test_every = 10;  // every test_every-th episode is a greedy test
+  int test_every = 10;  // every test_every-th episode of each environment is a greedy test
+  int envs = 1;         // environments stepped in parallel (docs/agents.md: how episodes count)
+  double start_states = 0;  // probability that a training episode starts from a saved state
   std::optional<std::int64_t> stop_score;  // stop after a test episode scoring at least this
   std::string out;
   bool resume = false;
@@ -35,7 +44,7 @@ Settings run_settings(const TrainConfig& c);
 void apply_settings(const Settings& s, TrainConfig& c);
 
 struct EpisodeRecord {
-  std::uint64_t episode = 0;  // 1-based
+  std::uint64_t episode = 0;  // 1-based, in the order episodes end (environment index on ties)
   bool test = false;
   std::int64_t score = 0;
   double reward = 0;
@@ -45,7 +54,8 @@ struct EpisodeRecord {
   double epsilon = 0;         // at the episode's end
   double loss = 0;            // the last learner loss (dqn)
   std::uint64_t total_moves = 0;  // training moves so far
-  double seconds = 0;         // host time of the episode; the one column runs do not reproduce
+  double seconds = 0;         // host time from the episode's start to its end; runs do not reproduce it
+  bool saved_start = false;   // started from a saved state (--start-states); not in the metric files
 };
 
 struct TrainStatus {
@@ -71,7 +81,25 @@ class Trainer {
   const Agent& agent() const { return *agent_; }
 
  private:
-  EpisodeRecord play_episode(std::uint64_t episode, bool test, const std::function<void(const TrainStatus&)>& progress);
+  // One environment and its episode in progress.
+  struct Slot {
+    std::unique_ptr<rl::Env> env;
+    std::uint64_t episodes = 0;  // episodes this environment has started
+    bool test = false;
+    std::ptrdiff_t from = -1;    // the saved state the next episode starts from, -1: the level's start
+    std::vector<float> state, next;
+    int action = 0;
+    rl::StepResult result;
+    std::uint64_t frames = 0;
+    std::chrono::steady_clock::time_point start;
+  };
+  using Progress = std::function<void(const TrainStatus&)>;
+
+  void plan_episode(size_t i);
+  void begin_episode(size_t i);
+  void offer_state(Slot& s);
+  bool learn_from_move(Slot& s, const Progress& progress);
+  bool end_episode(Slot& s, const Progress& progress);
   void save() const;
   void restore();
   void write_metrics_from_records() const;
@@ -80,12 +108,16 @@ class Trainer {
   std::string file(const char* name) const;
 
   TrainConfig config_;
-  std::unique_ptr<rl::Env> env_;
+  std::vector<Slot> slots_;
+  std::unique_ptr<rl::ThreadPool> pool_;
   std::unique_ptr<Agent> agent_;
   Settings meta_;
   std::vector<EpisodeRecord> records_;
-  double session_seconds_ = 0;     // host time this process spent in episodes
+  std::chrono::steady_clock::time_point run_start_;  // host time of this process's run()
   std::uint64_t session_moves_ = 0, session_episodes_ = 0;
+  Rng start_rng_;                            // which states are kept and which episodes use them
+  std::vector<rl::Env::Snapshot> saved_;     // at most kSavedStates
+  std::uint64_t offered_ = 0;                // training moves offered to saved_
 };
 
 }  // namespace psxrl::agents

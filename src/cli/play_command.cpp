@@ -45,9 +45,8 @@ LoadedPolicy load_policy(const PlayOptions& p, const rl::UserFiles& files) {
   if (!why.empty()) throw std::invalid_argument("cannot use the policy in " + path + ": " + why);
   LoadedPolicy l;
   l.env = std::make_unique<rl::Env>(env);
-  size_t inputs = 0;
-  for (const rl::Space& s : l.env->observation_spaces()) inputs += s.elements();
-  l.agent = agents::make_agent(tc.agent, l.env->obs_kind(), static_cast<int>(inputs), l.env->action_count(), tc.options);
+  l.agent = agents::make_agent(tc.agent, l.env->obs_kind(), l.env->observation_spaces(), l.env->action_count(),
+                               tc.options);
   why = agents::policy_mismatch(c.meta, env.game, env.obs, agents::integration_hash(l.env->game()), l.agent->network());
   if (!why.empty()) throw std::invalid_argument("cannot use the policy in " + path + ": " + why);
   agents::ByteReader r(c.agent, path + " (agent)");

@@ -77,7 +77,7 @@ std::vector<u8> unpack_save_state(const u8* d, size_t size, u64 bios_hash, u64 p
     if (uncompress(payload.data(), &n, body, stored) != Z_OK || n != payload_size) fail("corrupt compressed payload");
   } else {
     if (stored != payload_size) fail("offset 48: stored size differs from payload size");
-    std::memcpy(payload.data(), body, payload_size);
+    if (payload_size) std::memcpy(payload.data(), body, payload_size);  // an empty vector's data() may be null
   }
   if (fnv1a(payload.data(), payload.size()) != checksum) fail("corrupt payload (checksum mismatch)");
   if (format) *format = version;

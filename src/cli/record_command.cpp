@@ -26,7 +26,7 @@ namespace {
 const char* kRecordFooter =
     "Give either --game (booted as its integration boots it, to its ready point or a --level's\n"
     "start) or a program: --exe, --disc and/or --bios as psxrl run takes them.\n"
-    "Without --input you play in a window (psxrl play's controls); F1 to F4 set marks labelled by\n"
+    "Without --input and --marks you play in a window (psxrl play's controls); F1 to F4 set marks labelled by\n"
     "--mark-labels; Escape or closing the window ends the recording, which is then written.\n"
     "\n"
     "exit codes:\n"

@@ -235,6 +235,13 @@ const Observation& Env::reset(int level, std::uint64_t seed, StepInfo* info) {
   rng_ = seed;
   level_ = level;
   std::uint64_t frames = start_level(level);
+  return begin_episode(level, seed, game_.time_variable.empty() ? 0 : value(game_.time_variable), frames, t0, info);
+}
+
+const Observation& Env::begin_episode(int level, std::uint64_t seed, double time_at_start, std::uint64_t frames,
+                                      std::chrono::steady_clock::time_point t0, StepInfo* info) {
+  rng_ = seed;
+  level_ = level;
   std::vector<psx::StereoSample> discard;
   console_->take_audio(discard);
   moves_ = 0;
@@ -242,18 +249,18 @@ const Observation& Env::reset(int level, std::uint64_t seed, StepInfo* info) {
   episode_reward_ = 0;
   last_action_ = 0;
   done_ = false;
-  time_at_start_ = game_.time_variable.empty() ? 0 : value(game_.time_variable);
+  time_at_start_ = time_at_start;
   move_audio_.clear();
   encode();
-  if (info) {
-    *info = make_info(frames, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
+  if (info) *info = make_info(frames, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return obs_;
 }
 
 Env::Snapshot Env::snapshot() {
   if (level_ == 0) throw std::logic_error("snapshot() before reset(): no episode to save");
-  return {level_, time_at_start_, console_->save_state(false)};
+  Snapshot s{level_, time_at_start_, {}};
+  console_->snapshot(s.console);
+  return s;
 }
 
 const Observation& Env::reset_to(const Snapshot& s, std::uint64_t seed, StepInfo* info) {
@@ -261,21 +268,8 @@ const Observation& Env::reset_to(const Snapshot& s, std::uint64_t seed, StepInfo
   if (s.level < 1 || s.level > game_.level_count)
     throw std::out_of_range("snapshot of level " + std::to_string(s.level) + ": game '" + game_.name +
                             "' has levels 1 to " + std::to_string(game_.level_count));
-  console_->load_state(s.console);
-  rng_ = seed;
-  level_ = s.level;
-  std::vector<psx::StereoSample> discard;
-  console_->take_audio(discard);
-  moves_ = 0;
-  episode_frames_ = 0;
-  episode_reward_ = 0;
-  last_action_ = 0;
-  done_ = false;
-  time_at_start_ = s.time_at_start;
-  move_audio_.clear();
-  encode();
-  if (info) *info = make_info(0, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  return obs_;
+  console_->restore(s.console);
+  return begin_episode(s.level, seed, s.time_at_start, 0, t0, info);
 }
 
 }  // namespace psxrl::rl

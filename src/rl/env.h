@@ -3,6 +3,7 @@
 // started or the move is over; the only clock is the emulated frame counter, so the same seed and
 // actions always give the same observations, rewards and flags. One thread at a time.
 #pragma once
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -95,7 +96,7 @@ class Env {
   struct Snapshot {
     int level = 0;
     double time_at_start = 0;
-    std::vector<std::uint8_t> console;
+    psx::Console::Snapshot console;
   };
   Snapshot snapshot();
   // Starts an episode at `s` instead of the level's start: the console state is loaded, the
@@ -128,6 +129,9 @@ class Env {
   void boot();
   void check_disc_identity(const std::string& path);
   std::uint64_t start_level(int level);  // returns the frames it ran
+  // The bookkeeping every episode start shares; returns the first observation.
+  const Observation& begin_episode(int level, std::uint64_t seed, double time_at_start, std::uint64_t frames,
+                                   std::chrono::steady_clock::time_point t0, StepInfo* info);
   void bind_script();
   const LevelMap& map() const;
   void position(int& x, int& y, int& facing) const;

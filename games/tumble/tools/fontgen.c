@@ -1,4 +1,4 @@
-/* Build-time font generator: turns the built-in bitmap font below (5x7 glyphs, ASCII 32..95) into a
+/* Build-time font generator: turns the built-in 5x7 bitmap font (font5x7.h, ASCII 32..95) into a
    4-bit-per-pixel PlayStation texture, 128x64 texels: 16 glyphs a row, 4 rows, each glyph in the
    top 8x8 of an 8x16 cell. The empty lower half is there because a magnified textured quad
    samples up to one texel past its far edge (the GPU's attribute interpolation starts half a texel
@@ -10,38 +10,12 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "font5x7.h"
+
 #define GLYPHS 64
 #define TEX_W 128
 #define TEX_H 64
 #define CELL_H 16
-
-/* One glyph = 7 rows of 5 columns; '#' is ink. Characters without art are blank. */
-static const struct { char ch; const char *rows; } font[] = {
-  {'0', " ### #   ##  ### # ###  ##   # ### "}, {'1', "  #   ##    #    #    #    #   ### "},
-  {'2', " ### #   #    #  ##  #   #    #####"}, {'3', "#####   #   #    ##     ##   # ### "},
-  {'4', "   #   ##  # # #  # #####   #    # "}, {'5', "######    ####     #    ##   # ### "},
-  {'6', "  ##  #   #    #### #   ##   # ### "}, {'7', "#####    #   #   #   #    #    #   "},
-  {'8', " ### #   ##   # ### #   ##   # ### "}, {'9', " ### #   ##   # ####    #   #  ##  "},
-  {'A', " ### #   ##   #######   ##   ##   #"}, {'B', "#### #   ##   ##### #   ##   ##### "},
-  {'C', " ### #   ##    #    #    #   # ### "}, {'D', "###  #  # #   ##   ##   ##  # ###  "},
-  {'E', "######    #    #### #    #    #####"}, {'F', "######    #    #### #    #    #    "},
-  {'G', " ### #   ##    # ####   ##   # ####"}, {'H', "#   ##   ##   #######   ##   ##   #"},
-  {'I', " ###   #    #    #    #    #   ### "}, {'J', "  ###   #    #    #    # #  #  ##  "},
-  {'K', "#   ##  # # #  ##   # #  #  # #   #"}, {'L', "#    #    #    #    #    #    #####"},
-  {'M', "#   ### ### # ##   ##   ##   ##   #"}, {'N', "#   ##   ###  ## # ##  ###   ##   #"},
-  {'O', " ### #   ##   ##   ##   ##   # ### "}, {'P', "#### #   ##   ##### #    #    #    "},
-  {'Q', " ### #   ##   ##   ## # ##  #  ## #"}, {'R', "#### #   ##   ##### # #  #  # #   #"},
-  {'S', " #####    #     ###     #    ##### "}, {'T', "#####  #    #    #    #    #    #  "},
-  {'U', "#   ##   ##   ##   ##   ##   # ### "}, {'V', "#   ##   ##   ##   ##   # # #   #  "},
-  {'W', "#   ##   ##   ## # ## # ## # # # # "}, {'X', "#   ##   # # #   #   # # #   ##   #"},
-  {'Y', "#   ##   # # #   #    #    #    #  "}, {'Z', "#####    #   #   #   #   #    #####"},
-  {':', "      ##   ##        ##   ##       "}, {'-', "               ###                 "},
-  {'.', "                         ##   ##   "}, {'!', "  #    #    #    #    #         #  "},
-  {'/', "    #    #   #   #   #   #    #    "}, {'<', "   #   #   #   #     #     #     # "},
-  {'>', " #     #     #     #   #   #   #   "}, {'+', "       #    #  #####  #    #       "},
-  {'?', " ### #   #    #   #   #         #  "}, {'*', "     # # # ### ##### ### # # #     "},
-  {'=', "          #####     #####          "}, {'\'', "  #    #   #                       "},
-};
 
 static unsigned char texel[TEX_H][TEX_W];
 
@@ -57,14 +31,16 @@ int main(int argc, char **argv) {
     fprintf(stderr, "usage: fontgen OUT.c\n");
     return 1;
   }
-  for (size_t i = 0; i < sizeof font / sizeof font[0]; ++i) {
-    if (strlen(font[i].rows) != 35) {
-      fprintf(stderr, "fontgen: glyph '%c' art is %zu characters, expected 35\n", font[i].ch, strlen(font[i].rows));
+  for (size_t i = 0; i < sizeof kFont5x7 / sizeof kFont5x7[0]; ++i) {
+    if (strlen(kFont5x7[i].rows) != 35) {
+      fprintf(stderr, "fontgen: glyph '%c' art is %zu characters, expected 35\n", kFont5x7[i].ch,
+              strlen(kFont5x7[i].rows));
       return 2;
     }
-    draw_glyph(font[i].ch - 32, font[i].rows, 1, 0, 0);
+    draw_glyph(kFont5x7[i].ch - 32, kFont5x7[i].rows, 1, 0, 0);
   }
-  for (size_t i = 0; i < sizeof font / sizeof font[0]; ++i) draw_glyph(font[i].ch - 32, font[i].rows, 2, 1, 1);
+  for (size_t i = 0; i < sizeof kFont5x7 / sizeof kFont5x7[0]; ++i)
+    draw_glyph(kFont5x7[i].ch - 32, kFont5x7[i].rows, 2, 1, 1);
   char tmp[4096];
   snprintf(tmp, sizeof tmp, "%s.tmp", argv[1]);
   FILE *out = fopen(tmp, "w");

@@ -94,7 +94,8 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, 
   add_user_file_options(app, c.env.files);
 }
 
-void print_summary(const agents::Trainer& t, const agents::TrainConfig& c, double seconds) {
+// `resumed_at`: the records a resumed run started with; throughput counts this process's only.
+void print_summary(const agents::Trainer& t, const agents::TrainConfig& c, double seconds, size_t resumed_at) {
   std::optional<std::int64_t> best;
   std::uint64_t best_at = 0;
   for (const agents::EpisodeRecord& r : t.records())
@@ -103,6 +104,11 @@ void print_summary(const agents::Trainer& t, const agents::TrainConfig& c, doubl
               static_cast<unsigned long long>(t.agent().moves()), seconds, score(best).c_str());
   if (best) std::printf(" (first at episode %llu)", static_cast<unsigned long long>(best_at));
   if (auto w = t.first_win()) std::printf("; first test win at episode %llu", static_cast<unsigned long long>(*w));
+  std::uint64_t moves = 0;
+  for (size_t i = resumed_at; i < t.records().size(); ++i) moves += t.records()[i].moves;
+  if (seconds > 0)
+    std::printf("\nthroughput: %.1f moves/s (test moves included), %.1f learner updates/s", moves / seconds,
+                static_cast<double>(t.agent().updates()) / seconds);
   std::printf("\nrun folder: %s\n", c.out.c_str());
 }
 
@@ -135,6 +141,7 @@ int train_command(const std::vector<std::string>& args) {
     return kBadInput;
   }
   ProgressLine progress(quiet);
+  const size_t resumed_at = trainer->records().size();
   auto start = std::chrono::steady_clock::now();
   try {
     trainer->run([&](const agents::TrainStatus& s) { progress(s); });
@@ -148,7 +155,8 @@ int train_command(const std::vector<std::string>& args) {
     return kProgramFailed;
   }
   progress.finish();
-  print_summary(*trainer, c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  print_summary(*trainer, c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                resumed_at);
   return kSuccess;
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "rl/agents/trainer.h"
 
@@ -79,6 +80,15 @@ TEST(StartStates, TrainingEpisodesStartFromSavedStatesTheSameOnEveryRun) {
   ASSERT_GT(first.records()[0].moves, 1u);
   for (const EpisodeRecord& r : first.records())
     EXPECT_EQ(r.saved_start, !r.test && r.episode > 1) << "episode " << r.episode;
+  // The metric file's last column says the same: "saved" for those episodes, "level" for the rest.
+  std::ifstream csv(a + "/metrics.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.substr(line.rfind(',') + 1), "start");
+  for (const EpisodeRecord& r : first.records()) {
+    ASSERT_TRUE(std::getline(csv, line));
+    EXPECT_EQ(line.substr(line.rfind(',') + 1), r.saved_start ? "saved" : "level") << line;
+  }
   for (const auto& d : {a, b}) std::filesystem::remove_all(d);
 }
 

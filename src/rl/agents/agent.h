@@ -83,6 +83,9 @@ class Agent {
   virtual double last_loss() const { return 0; }
   virtual double epsilon() const;
   std::uint64_t moves() const { return moves_; }
+  // Learner updates made by this object (not saved): tabular Q's table updates, DQN's gradient
+  // steps (one per epoch of a replay batch). For throughput figures.
+  std::uint64_t updates() const { return updates_; }
 
   // The whole learning state (parameters, optimiser, replay memory, generator, move count).
   void save(ByteWriter& w) const;
@@ -101,6 +104,7 @@ class Agent {
   int actions_;
   Rng rng_;
   std::uint64_t moves_ = 0;
+  std::uint64_t updates_ = 0;
 };
 
 inline constexpr const char* kAgentList = "random, q, dqn";

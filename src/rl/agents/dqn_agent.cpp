@@ -146,6 +146,7 @@ class DqnAgent : public Agent {
       loss.backward();
       optimizer_.step();
       last_loss_ = loss.item<double>();
+      ++updates_;
     }
     if (options_.target_network && moves_ % options_.target_sync == 0) sync_target();
   }

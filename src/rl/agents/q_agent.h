@@ -39,6 +39,7 @@ class QAgent : public Agent {
     }
     double& q = row(key(t.state))[static_cast<size_t>(t.action)];
     q = (1 - options_.alpha) * q + options_.alpha * (t.reward + options_.gamma * future);
+    ++updates_;
   }
 
   double value(std::int64_t state, int action) const {

@@ -30,13 +30,16 @@ std::string setting(const Settings& s, const std::string& key) {
   return later == kLaterSettings.end() ? "(none)" : later->second;
 }
 
-const char* kCsvHeader = "episode,kind,score,reward,moves,frames,outcome,epsilon,loss,total_moves,seconds\n";
+// `start` is "level" or, for a --start-states episode, "saved".
+const char* kCsvHeader = "episode,kind,score,reward,moves,frames,outcome,epsilon,loss,total_moves,seconds,start\n";
+
+const char* start_name(const EpisodeRecord& r) { return r.saved_start ? "saved" : "level"; }
 
 std::string csv_row(const EpisodeRecord& r) {
   return std::to_string(r.episode) + "," + (r.test ? "test" : "train") + "," + std::to_string(r.score) + "," +
          format_double(r.reward) + "," + std::to_string(r.moves) + "," + std::to_string(r.frames) + "," + r.outcome +
          "," + format_double(r.epsilon) + "," + format_double(r.loss) + "," + std::to_string(r.total_moves) + "," +
-         format_double(r.seconds) + "\n";
+         format_double(r.seconds) + "," + start_name(r) + "\n";
 }
 
 std::string json_row(const EpisodeRecord& r) {
@@ -44,7 +47,8 @@ std::string json_row(const EpisodeRecord& r) {
          "\",\"score\":" + std::to_string(r.score) + ",\"reward\":" + format_double(r.reward) +
          ",\"moves\":" + std::to_string(r.moves) + ",\"frames\":" + std::to_string(r.frames) + ",\"outcome\":\"" +
          r.outcome + "\",\"epsilon\":" + format_double(r.epsilon) + ",\"loss\":" + format_double(r.loss) +
-         ",\"total_moves\":" + std::to_string(r.total_moves) + ",\"seconds\":" + format_double(r.seconds) + "}\n";
+         ",\"total_moves\":" + std::to_string(r.total_moves) + ",\"seconds\":" + format_double(r.seconds) +
+         ",\"start\":\"" + start_name(r) + "\"}\n";
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {

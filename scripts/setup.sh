@@ -12,6 +12,7 @@ APT_PACKAGES=(
   gcc-mipsel-linux-gnu binutils-mipsel-linux-gnu
   clang-16 libfuzzer-16-dev
   python3 python3-dev python3-pip python3-venv
+  python3-torch python3-pandas python3-matplotlib python3-cloudpickle
 )
 PIP_PACKAGES=(numpy gymnasium pytest scikit-build-core)
 
@@ -35,6 +36,16 @@ done
 if [ ${#pip_missing[@]} -gt 0 ]; then
   echo "setup: pip installing ${pip_missing[*]}"
   "$PY" -m pip install -q "${pip_missing[@]}" || "$PY" -m pip install -q --break-system-packages "${pip_missing[@]}"
+fi
+
+# Stable-Baselines3 (examples/sb3_train.py, the python_sb3_smoke test) needs PyTorch. Debian's
+# CPU-only python3-torch (the same 1.13 as libtorch-dev) belongs to Debian's /usr/bin/python3, so
+# SB3 lives in .venv-sb3, a virtual environment of that interpreter seeing its Debian packages;
+# SB3 2.4 is the last release that accepts torch 1.13 (2.5 needs torch 2.3).
+if [ ! -x .venv-sb3/bin/python ] || ! .venv-sb3/bin/python -c "import stable_baselines3, torch" 2>/dev/null; then
+  echo "setup: making .venv-sb3 (Stable-Baselines3 over Debian's python3-torch)"
+  /usr/bin/python3 -m venv --system-site-packages .venv-sb3
+  .venv-sb3/bin/python -m pip install -q --no-deps "stable-baselines3==2.4.1" "gymnasium==1.0.0" farama-notifications
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null

@@ -17,16 +17,8 @@ constexpr double kAudioAheadSeconds = 0.1;
 
 }  // namespace
 
-frontend::Rate frame_rate(psx::Console& console) {
-  using T = psx::gpu::VideoTiming;
-  const T& t = console.gpu().timing();
-  long long per_frame = t.pal() ? static_cast<long long>(T::kPalCyclesPerLine) * T::kPalLines
-                                : static_cast<long long>(T::kNtscCyclesPerLine) * T::kNtscLines;
-  return {static_cast<long long>(t.video_hz()), per_frame};
-}
-
 PlayView::PlayView(const ViewOptions& options, psx::Console& console) : options_(options), console_(console) {
-  frontend::Rate rate = frame_rate(console);
+  frontend::Rate rate = frontend::console_frame_rate(console);
   if (!options.record.empty())
     recorder_ = std::make_unique<frontend::Recorder>(options.record, options.record_every, rate);
   if (!options.window) return;

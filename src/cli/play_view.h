@@ -29,11 +29,6 @@ struct ViewOptions {
   std::uint64_t max_frames = 0;   // 0: no limit
 };
 
-// The console's frames per second (psx-spx "GPU Timings": video clock / (cycles per line x lines
-// per frame), 53693175 / (3413 x 263) = 59.82 Hz NTSC, 53203425 / (3406 x 314) = 49.75 Hz PAL;
-// interlaced fields are half a line shorter, which this ignores).
-frontend::Rate frame_rate(psx::Console& console);
-
 class PlayView {
  public:
   // Opens what `options` ask for. A window that cannot be opened throws std::runtime_error (the

@@ -170,6 +170,7 @@ class Console : private CpuHooks {
   // Controller/memory card port: plug devices, set buttons/sticks, read rumble (sio/sio0.h).
   Sio0& sio0() { return sio0_; }
   Gpu& gpu() { return gpu_; }
+  const Gpu& gpu() const { return gpu_; }
   // Sound: output samples, capture (spu/spu.h); CD audio flows CD-ROM -> cd_audio -> SPU.
   Spu& spu() { return spu_; }
   AudioFifo& cd_audio() { return cdrom_.audio_out(); }

@@ -12,6 +12,14 @@
 
 namespace psxrl::frontend {
 
+Rate console_frame_rate(const psx::Console& console) {
+  using T = psx::gpu::VideoTiming;
+  const T& t = console.gpu().timing();
+  long long per_frame = t.pal() ? static_cast<long long>(T::kPalCyclesPerLine) * T::kPalLines
+                                : static_cast<long long>(T::kNtscCyclesPerLine) * T::kNtscLines;
+  return {static_cast<long long>(t.video_hz()), per_frame};
+}
+
 Recorder::Recorder(const std::string& target, int every, Rate rate)
     : target_(target), every_(every), rate_(rate), video_(is_video_path(target)) {
   if (every < 1)

@@ -10,7 +10,16 @@
 #include "core/types.h"
 #include "frontend/video_writer.h"
 
+namespace psx {
+class Console;
+}
+
 namespace psxrl::frontend {
+
+// The console's frames per second (psx-spx "GPU Timings": video clock / (cycles per line x lines
+// per frame), 53693175 / (3413 x 263) = 59.82 Hz NTSC, 53203425 / (3406 x 314) = 49.75 Hz PAL;
+// interlaced fields are half a line shorter, which this ignores).
+Rate console_frame_rate(const psx::Console& console);
 
 class Recorder {
  public:

@@ -3,6 +3,8 @@
 // another, so samples are queued as they come.
 #include "frontend/sdl_audio.h"
 
+#include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 namespace psxrl::frontend {
@@ -15,6 +17,8 @@ SdlAudio::SdlAudio() {
   want.format = AUDIO_S16SYS;
   want.channels = 2;
   want.samples = 1024;  // ~23 ms per device buffer: low latency without underruns
+  want.callback = &SdlAudio::fill;
+  want.userdata = this;
   device_ = SDL_OpenAudioDevice(nullptr, 0, &want, nullptr, 0);
   if (device_ == 0) {
     std::string why = SDL_GetError();
@@ -29,16 +33,39 @@ SdlAudio::~SdlAudio() {
   SDL_QuitSubSystem(SDL_INIT_AUDIO);
 }
 
+// The device's thread asks for `bytes` of sound: queued samples, then silence if they run out.
+void SDLCALL SdlAudio::fill(void* self, Uint8* stream, int bytes) {
+  auto& a = *static_cast<SdlAudio*>(self);
+  const size_t want = static_cast<size_t>(bytes) / sizeof(psx::StereoSample);
+  const size_t n = std::min(want, a.queue_.size() - a.read_);
+  std::memcpy(stream, a.queue_.data() + a.read_, n * sizeof(psx::StereoSample));
+  std::memset(stream + n * sizeof(psx::StereoSample), 0, static_cast<size_t>(bytes) - n * sizeof(psx::StereoSample));
+  a.read_ += n;
+}
+
 void SdlAudio::queue(std::span<const psx::StereoSample> samples) {
   static_assert(sizeof(psx::StereoSample) == 4, "StereoSample must be two packed 16-bit samples");
-  if (!samples.empty()) SDL_QueueAudio(device_, samples.data(), static_cast<Uint32>(samples.size_bytes()));
+  if (samples.empty()) return;
+  SDL_LockAudioDevice(device_);
+  queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(read_));  // what was played
+  read_ = 0;
+  queue_.insert(queue_.end(), samples.begin(), samples.end());
+  SDL_UnlockAudioDevice(device_);
 }
 
 double SdlAudio::queued_seconds() const {
-  return static_cast<double>(SDL_GetQueuedAudioSize(device_)) / (kRate * sizeof(psx::StereoSample));
+  SDL_LockAudioDevice(device_);
+  const size_t n = queue_.size() - read_;
+  SDL_UnlockAudioDevice(device_);
+  return static_cast<double>(n) / kRate;
 }
 
-void SdlAudio::clear() { SDL_ClearQueuedAudio(device_); }
+void SdlAudio::clear() {
+  SDL_LockAudioDevice(device_);
+  queue_.clear();
+  read_ = 0;
+  SDL_UnlockAudioDevice(device_);
+}
 
 std::string SdlAudio::driver() const {
   const char* d = SDL_GetCurrentAudioDriver();

@@ -14,6 +14,7 @@ void bind_console(pybind11::module_& m);
 void bind_env(pybind11::module_& m);
 void bind_memsearch(pybind11::module_& m);
 void bind_window(pybind11::module_& m);
+void bind_record(pybind11::module_& m);
 
 // C-order strides for `shape` with items of `itemsize` bytes. Every array made over C++ memory
 // passes them explicitly: pybind11 before 2.12 (Debian 12 ships 2.10) reads a dtype's item size

@@ -18,4 +18,5 @@ PYBIND11_MODULE(_psxrl, m) {
   psxrl::python::bind_env(m);
   psxrl::python::bind_memsearch(m);
   psxrl::python::bind_window(m);
+  psxrl::python::bind_record(m);
 }

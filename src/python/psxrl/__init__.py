@@ -8,12 +8,12 @@ import os as _os
 from pathlib import Path as _Path
 
 from . import _psxrl
-from ._psxrl import (BUTTONS, Console, InputError, QueryError, Search, Session, StateError, WatchEvent, Window,
-                     display_problem, episode_seed)
+from ._psxrl import (BUTTONS, Console, InputError, QueryError, Recorder, Search, Session, StateError, WatchEvent,
+                     Window, display_problem, episode_seed)
 
 __all__ = [
-    "BUTTONS", "Console", "Env", "InputError", "QueryError", "Search", "Session", "StateError", "VecEnv", "WatchEvent",
-    "Window", "display_problem", "episode_seed", "make_vec",
+    "BUTTONS", "Console", "Env", "InputError", "QueryError", "Recorder", "Search", "Session", "StateError", "VecEnv",
+    "WatchEvent", "Window", "display_problem", "episode_seed", "make_vec",
 ]
 
 # `pip install .` puts the integrations and Tumble's program in psxrl/games; a module imported from

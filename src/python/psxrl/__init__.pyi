@@ -4,7 +4,7 @@ from typing import Any
 import gymnasium
 
 from ._psxrl import (BUTTONS as BUTTONS, Console as Console, InputError as InputError, QueryError as QueryError,
-                     Search as Search, Session as Session, StateError as StateError, WatchEvent as WatchEvent,
+                     Recorder as Recorder, Search as Search, Session as Session, StateError as StateError, WatchEvent as WatchEvent,
                      Window as Window, display_problem as display_problem,
                      episode_seed as episode_seed)
 from ._psxrl import Env as _Env

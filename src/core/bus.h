@@ -40,20 +40,28 @@ class Bus {
   // CPU accesses. They return false on a bus error (the CPU raises IBE/DBE) and charge the
   // region's access time to the scheduler.
   bool fetch(u32 vaddr, u32& word) {
-    if (hot_lines_[ICache::line(vaddr)] == (vaddr & ~15u)) {  // a cache hit in RAM: free
-      word = load_le32(&ram_[vaddr & (kRamSize - 1)]);
+    if (hot_lines_[ICache::line(vaddr)] == (vaddr & ~15u)) {  // a cache hit: free
+      word = icache_.code(vaddr);
       return true;
     }
     return fetch_slow(vaddr, word);
   }
-  // A store while SR.IsC isolates the cache: with BCC.TAG and IS1 it writes an i-cache tag;
-  // otherwise it reaches neither memory nor anything modelled here (the cached code words are
-  // not kept, see ICache).
+  // The word fetch() would execute at vaddr (the cached copy on a hit), without timing or fills;
+  // false where fetch() would fail.
+  bool peek_code(u32 vaddr, u32& word) const;
+  // A store while SR.IsC isolates the cache never reaches memory. With BCC.TAG and IS1 it writes
+  // the addressed i-cache line's tag; without TAG it would write cache data, whose exact effect
+  // is not documented and is not modelled.
   void isolated_store(u32 vaddr, u32 v) {
     if ((cache_control_ & (kBccTag | kBccIs1)) == (kBccTag | kBccIs1)) {
       icache_.write_tag(vaddr, physical(vaddr), v);
       hot_lines_[ICache::line(vaddr)] = kNoLine;
     }
+  }
+  // What the BIOS's FlushCache leaves: every i-cache line invalid.
+  void flush_icache() {
+    icache_.invalidate_all();
+    hot_lines_.fill(kNoLine);
   }
   const ICache& icache() const { return icache_; }
   // BCC selects D-cache mode: loads from RAM also write the scratchpad (see dcache_fill()).
@@ -117,7 +125,8 @@ class Bus {
 
  private:
   bool fetch_slow(u32 vaddr, u32& word);
-  Cycles fetch_cycles(u32 vaddr, u32 p, Cycles word_cycles, bool ram);
+  // The memory holding the code word at physical address p (RAM or BIOS ROM), or nullptr.
+  const u8* code_memory(u32 p) const;
   void update_read_cycles();
   Cycles io_read_cycles(u32 p, u32 width) const;
   bool read(u32 vaddr, u32& v, u32 width);
@@ -157,7 +166,7 @@ class Bus {
   u32 cache_control_ = 0x0001E988;
   bool dcache_mode_ = false;  // derived from cache_control_
   ICache icache_;
-  // Per i-cache line, the KUSEG/KSEG0 address of the RAM line it holds whole, or kNoLine: fetches
+  // Per i-cache line, the KUSEG/KSEG0 address of the line it holds whole, or kNoLine: fetches
   // from it are hits without a tag check (an interpreter speed-up derived from the tags, reset
   // whenever a tag or BCC changes).
   static constexpr u32 kNoLine = 1;

@@ -14,21 +14,6 @@ extern template class CpuT<Bus>;
 
 namespace {
 
-// The instruction word at `vaddr` as the interpreter would fetch it, without timing or i-cache.
-bool peek_code(Bus& bus, u32 vaddr, u32& word) {
-  const u32 p = Bus::physical(vaddr);
-  if (vaddr & 3) return false;
-  if (p < 0x00800000) {
-    word = load_le32(bus.ram() + (p & (Bus::kRamSize - 1)));
-    return true;
-  }
-  if (p >= 0x1FC00000 && p < 0x1FC00000 + Bus::kBiosSize) {
-    word = load_le32(bus.bios() + (p - 0x1FC00000));
-    return true;
-  }
-  return false;
-}
-
 // I/O registers whose read changes nothing and whose value changes only when an event runs or
 // the CPU writes somewhere (psx-spx register descriptions; the devices' io_read confirm it):
 // memory control, RAM_SIZE, I_STAT/I_MASK, every DMA register, the CD-ROM status and interrupt
@@ -119,7 +104,7 @@ bool IdleSkip::examine(Cpu& cpu) {
     if (cpu.stop_ || sched.now() >= deadline) return false;
     if (path_len_ == kMaxPath) return false;
     u32 instr;
-    if (!peek_code(bus, cpu.pc_, instr)) return false;
+    if (!bus.peek_code(cpu.pc_, instr)) return false;  // the word the fetch will execute
     IdleStep& st = path_[path_len_++];
     st = {cpu.pc_, instr, 0, 0, 0};
     tags_[path_len_ - 1] = icache.tag(ICache::line(cpu.pc_));

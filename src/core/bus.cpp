@@ -96,7 +96,7 @@ const u8* Bus::code_memory(u32 p) const {
 // KUSEG and KSEG0 code runs through the i-cache when BCC.IS1 enables it: a hit is free and runs
 // the cached word, a miss reads the words it fills at the uncached fetch cost each. KSEG1 code is
 // always read from memory (psx-spx "Memory Map", i-Cache).
-bool Bus::fetch_slow(u32 vaddr, u32& word) {
+bool Bus::fetch_slow(u32 vaddr, u32& word, Cycles busy_until) {
   const u32 p = physical(vaddr);
   const u8* mem = code_memory(p);
   if (!mem) {
@@ -105,7 +105,9 @@ bool Bus::fetch_slow(u32 vaddr, u32& word) {
   }
   // Each word read from the BIOS is a 32-bit read over the ROM's bus.
   const Cycles word_cycles = p < 0x00800000 ? kRamFetchUncached : read_cycles(kBiosDelay, 4);
-  if (vaddr >= 0xA0000000 || !(cache_control_ & kBccIs1)) {
+  const bool cached = cached_code(vaddr);
+  if ((!cached || !icache_.hit(vaddr, p)) && sched_.now() < busy_until) sched_.advance(busy_until - sched_.now());
+  if (!cached) {
     word = load_le32(mem);
     sched_.advance(word_cycles);
     return true;
@@ -126,11 +128,11 @@ bool Bus::peek_code(u32 vaddr, u32& word) const {
   return true;
 }
 
-bool Bus::read(u32 vaddr, u32& v, u32 width) {
+bool Bus::read(u32 vaddr, u32& v, u32 width, bool time_ram) {
   u32 p = physical(vaddr);
   if (p < 0x00800000) {
     v = load_width(&ram_[p & (kRamSize - 1)], width);
-    sched_.advance(kRamRead);
+    if (time_ram) sched_.advance(kRamRead);
     if (dcache_mode_) dcache_fill(vaddr, load_le32(&ram_[p & (kRamSize - 4)]));
     return true;
   }

@@ -87,40 +87,52 @@ void Bus::report_unmapped(u32 vaddr, const char* what) {
   on_log(msg);
 }
 
-// Extra cycles of an instruction fetch whose uncached word read takes `word_cycles`: KUSEG and
-// KSEG0 code runs through the i-cache when BCC.IS1 enables it (a hit is free, a miss reads the
-// words it fills), KSEG1 code is always read uncached (psx-spx "Memory Map", i-Cache).
-Cycles Bus::fetch_cycles(u32 vaddr, u32 p, Cycles word_cycles, bool ram) {
-  if (vaddr >= 0xA0000000 || !(cache_control_ & kBccIs1)) return word_cycles;
-  Cycles c = 0;
-  if (!icache_.hit(vaddr, p)) c = word_cycles * icache_.fill(vaddr, p, (cache_control_ & kBccIblksz) == 0);
-  hot_lines_[ICache::line(vaddr)] = ram && icache_.line_valid(vaddr) ? vaddr & ~15u : kNoLine;
-  return c;
+const u8* Bus::code_memory(u32 p) const {
+  if (p < 0x00800000) return &ram_[p & (kRamSize - 1)];
+  if (p >= kBiosBase && p < kBiosBase + kBiosSize) return &bios_[p - kBiosBase];
+  return nullptr;  // the scratchpad is data cache: it cannot be executed, nor can I/O
 }
 
-bool Bus::fetch_slow(u32 vaddr, u32& word) {
+// KUSEG and KSEG0 code runs through the i-cache when BCC.IS1 enables it: a hit is free and runs
+// the cached word, a miss reads the words it fills at the uncached fetch cost each. KSEG1 code is
+// always read from memory (psx-spx "Memory Map", i-Cache).
+bool Bus::fetch_slow(u32 vaddr, u32& word, Cycles busy_until) {
   const u32 p = physical(vaddr);
-  if (p < 0x00800000) {
-    word = load_le32(&ram_[p & (kRamSize - 1)]);
-    if (Cycles c = fetch_cycles(vaddr, p, kRamFetchUncached, true)) sched_.advance(c);
+  const u8* mem = code_memory(p);
+  if (!mem) {
+    report_unmapped(vaddr, "instruction fetch");
+    return false;
+  }
+  // Each word read from the BIOS is a 32-bit read over the ROM's bus.
+  const Cycles word_cycles = p < 0x00800000 ? kRamFetchUncached : read_cycles(kBiosDelay, 4);
+  const bool cached = cached_code(vaddr);
+  if ((!cached || !icache_.hit(vaddr, p)) && sched_.now() < busy_until) sched_.advance(busy_until - sched_.now());
+  if (!cached) {
+    word = load_le32(mem);
+    sched_.advance(word_cycles);
     return true;
   }
-  if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
-    word = load_le32(&bios_[p - kBiosBase]);
-    // Each word read is a 32-bit read over the ROM's bus.
-    if (Cycles c = fetch_cycles(vaddr, p, read_cycles(kBiosDelay, 4), false)) sched_.advance(c);
-    return true;
-  }
-  // The scratchpad is data cache: it cannot be executed. Nor can I/O or expansion space.
-  report_unmapped(vaddr, "instruction fetch");
-  return false;
+  if (!icache_.hit(vaddr, p))
+    sched_.advance(word_cycles * icache_.fill(vaddr, p, (cache_control_ & kBccIblksz) == 0, mem - 4 * ICache::word(vaddr)));
+  word = icache_.code(vaddr);
+  hot_lines_[ICache::line(vaddr)] = icache_.line_valid(vaddr) ? vaddr & ~15u : kNoLine;
+  return true;
 }
 
-bool Bus::read(u32 vaddr, u32& v, u32 width) {
+bool Bus::peek_code(u32 vaddr, u32& word) const {
+  const u32 p = physical(vaddr);
+  const u8* mem = code_memory(p);
+  if ((vaddr & 3) || !mem) return false;
+  const bool cached = vaddr < 0xA0000000 && (cache_control_ & kBccIs1) && icache_.hit(vaddr, p);
+  word = cached ? icache_.code(vaddr) : load_le32(mem);
+  return true;
+}
+
+bool Bus::read(u32 vaddr, u32& v, u32 width, bool time_ram) {
   u32 p = physical(vaddr);
   if (p < 0x00800000) {
     v = load_width(&ram_[p & (kRamSize - 1)], width);
-    sched_.advance(kRamRead);
+    if (time_ram) sched_.advance(kRamRead);
     if (dcache_mode_) dcache_fill(vaddr, load_le32(&ram_[p & (kRamSize - 4)]));
     return true;
   }
@@ -288,7 +300,8 @@ void Bus::do_state(StateIO& s) {
   s.pod(cache_control_);
   update_read_cycles();  // derived from memctrl_
   set_cache_control(cache_control_);
-  icache_.do_state(s);
+  if (icache_.do_state(s) < ICache::kWordsSince && s.loading())
+    icache_.refill_valid([this](u32 p) { return code_memory(p); });
   s.end_section("BUS ");
 }
 

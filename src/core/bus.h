@@ -39,21 +39,31 @@ class Bus {
 
   // CPU accesses. They return false on a bus error (the CPU raises IBE/DBE) and charge the
   // region's access time to the scheduler.
-  bool fetch(u32 vaddr, u32& word) {
-    if (hot_lines_[ICache::line(vaddr)] == (vaddr & ~15u)) {  // a cache hit in RAM: free
-      word = load_le32(&ram_[vaddr & (kRamSize - 1)]);
+  // `busy_until`: when a data load in flight ends its RAM access (cpu.h, load shadow); a fetch
+  // that must read memory waits for it.
+  bool fetch(u32 vaddr, u32& word, Cycles busy_until = 0) {
+    if (hot_lines_[ICache::line(vaddr)] == (vaddr & ~15u)) {  // a cache hit: free
+      word = icache_.code(vaddr);
       return true;
     }
-    return fetch_slow(vaddr, word);
+    return fetch_slow(vaddr, word, busy_until);
   }
-  // A store while SR.IsC isolates the cache: with BCC.TAG and IS1 it writes an i-cache tag;
-  // otherwise it reaches neither memory nor anything modelled here (the cached code words are
-  // not kept, see ICache).
+  // The word fetch() would execute at vaddr (the cached copy on a hit), without timing or fills;
+  // false where fetch() would fail.
+  bool peek_code(u32 vaddr, u32& word) const;
+  // A store while SR.IsC isolates the cache never reaches memory. With BCC.TAG and IS1 it writes
+  // the addressed i-cache line's tag; without TAG it would write cache data, whose exact effect
+  // is not documented and is not modelled.
   void isolated_store(u32 vaddr, u32 v) {
     if ((cache_control_ & (kBccTag | kBccIs1)) == (kBccTag | kBccIs1)) {
       icache_.write_tag(vaddr, physical(vaddr), v);
       hot_lines_[ICache::line(vaddr)] = kNoLine;
     }
+  }
+  // What the BIOS's FlushCache leaves: every i-cache line invalid.
+  void flush_icache() {
+    icache_.invalidate_all();
+    hot_lines_.fill(kNoLine);
   }
   const ICache& icache() const { return icache_; }
   // BCC selects D-cache mode: loads from RAM also write the scratchpad (see dcache_fill()).
@@ -61,6 +71,11 @@ class Bus {
   bool read32(u32 vaddr, u32& v) { return read(vaddr, v, 4); }
   bool read16(u32 vaddr, u32& v) { return read(vaddr, v, 2); }
   bool read8(u32 vaddr, u32& v) { return read(vaddr, v, 1); }
+  // A read whose RAM access time the caller charges itself (the CPU's load shadow, cpu.h);
+  // other regions are charged as by read().
+  bool read_ram_untimed(u32 vaddr, u32& v, u32 width) { return read(vaddr, v, width, false); }
+  // Whether code at vaddr runs through the i-cache (KUSEG/KSEG0 with BCC.IS1).
+  bool cached_code(u32 vaddr) const { return vaddr < 0xA0000000 && (cache_control_ & kBccIs1); }
   bool write32(u32 vaddr, u32 v) { return write(vaddr, v, 4); }
   bool write16(u32 vaddr, u32 v) { return write(vaddr, v, 2); }
   bool write8(u32 vaddr, u32 v) { return write(vaddr, v, 1); }
@@ -106,6 +121,8 @@ class Bus {
   // The BIOS ROM, expansion regions, SPU and CD-ROM take the times their Memory Control
   // Delay/Size registers select (see read_cycles()). Stores go through the CPU's write queue and
   // take no extra time (psx-spx "CPU Load/Store Opcodes"; the queue filling up is not modelled).
+  // Loads from RAM by cached code are timed by the CPU instead (read_ram_untimed, the load shadow
+  // in cpu.h); kRamRead is the time of the others (loads made by uncached code).
   static constexpr Cycles kRamFetchUncached = 4;  // per word, also for each word of an i-cache fill
   static constexpr Cycles kRamRead = 4;
   static constexpr Cycles kIoRead = 2;
@@ -116,11 +133,12 @@ class Bus {
   Cycles read_cycles(DelayRegion r, u32 width) const { return read_cycles_[r - kExp1Delay][width >> 1]; }
 
  private:
-  bool fetch_slow(u32 vaddr, u32& word);
-  Cycles fetch_cycles(u32 vaddr, u32 p, Cycles word_cycles, bool ram);
+  bool fetch_slow(u32 vaddr, u32& word, Cycles busy_until);
+  // The memory holding the code word at physical address p (RAM or BIOS ROM), or nullptr.
+  const u8* code_memory(u32 p) const;
   void update_read_cycles();
   Cycles io_read_cycles(u32 p, u32 width) const;
-  bool read(u32 vaddr, u32& v, u32 width);
+  bool read(u32 vaddr, u32& v, u32 width, bool time_ram = true);
   bool write(u32 vaddr, u32 v, u32 width);
   u32 io_read(u32 p, u32 width);
   void io_write(u32 p, u32 v, u32 width);
@@ -157,7 +175,7 @@ class Bus {
   u32 cache_control_ = 0x0001E988;
   bool dcache_mode_ = false;  // derived from cache_control_
   ICache icache_;
-  // Per i-cache line, the KUSEG/KSEG0 address of the RAM line it holds whole, or kNoLine: fetches
+  // Per i-cache line, the KUSEG/KSEG0 address of the line it holds whole, or kNoLine: fetches
   // from it are hits without a tag check (an interpreter speed-up derived from the tags, reset
   // whenever a tag or BCC changes).
   static constexpr u32 kNoLine = 1;

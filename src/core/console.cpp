@@ -145,10 +145,12 @@ void Console::boot_disc() {
 }
 
 void Console::side_load(const PsxExe& exe) {
-  // What the BIOS's Exec() does: copy the text, clear the BSS, set PC/GP/SP/FP.
+  // What the BIOS's LoadExec() does: copy the text, clear the BSS, flush the i-cache (the BIOS
+  // calls FlushCache after loading, so no line of older code survives), set PC/GP/SP/FP.
   for (u32 i = 0; i < exe.text.size(); ++i)
     bus_.ram()[(Bus::physical(exe.text_addr) + i) & (Bus::kRamSize - 1)] = exe.text[i];
   for (u32 i = 0; i < exe.bss_size; ++i) bus_.ram()[(Bus::physical(exe.bss_addr) + i) & (Bus::kRamSize - 1)] = 0;
+  bus_.flush_icache();
   u32 sp = exe.stack_base ? exe.stack_base + exe.stack_offset : PsxExe::kDefaultStack;
   cpu_.set_reg(28, exe.gp);
   cpu_.set_reg(29, sp);

@@ -16,6 +16,7 @@
         BIOS    bios_putchar, 0xA0, 0x3C
         BIOS    bios_puts, 0xA0, 0x3E
         BIOS    bios_printf, 0xA0, 0x3F
+        BIOS    bios_flush_cache, 0xA0, 0x44
         BIOS    std_out_putchar, 0xB0, 0x3D
         BIOS    std_out_puts, 0xB0, 0x3F
 

@@ -28,6 +28,7 @@ void bios_bcopy(const void *s, void *d, uint32_t n);
 void bios_bzero(void *d, uint32_t n);
 void *bios_memcpy(void *d, const void *s, uint32_t n);
 void *bios_memset(void *d, int c, uint32_t n);
+void bios_flush_cache(void);
 void *bios_memmove(void *d, const void *s, uint32_t n);
 int bios_memcmp(const void *a, const void *b, uint32_t n);
 void *bios_memchr(const void *s, int c, uint32_t n);

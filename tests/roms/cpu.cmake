@@ -30,6 +30,9 @@ psx_add_rom_test(watch_writes SOURCES watch_writes.c CHECKS 5)
 psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S CHECKS 81)
 psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S CHECKS 10)
 psx_add_rom_test(cpu_icache SOURCES cpu_icache.c cpu_icache.S CHECKS 12)
+# Load timing: one check per measured sequence (SEQUENCES in the source).
+psx_add_rom_test(cpu_load_timing SOURCES cpu_load_timing.c cpu_load_timing.S CHECKS 8)
+psx_add_rom_test(cpu_icache_code SOURCES cpu_icache_code.c cpu_icache.S bios_calls.S CHECKS 9)
 psx_add_exe(cpu_dcache_hang SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/cpu_dcache_hang.c)
 psx_add_run_test(rom.cpu_dcache_hang CODE 3 OUTPUT "scratchpad access at 0x1F800000 in data-cache mode hangs the bus"
   RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_dcache_hang.exe --frames 60 --expect-exit)

@@ -184,7 +184,8 @@ TEST(IdleSkipPrograms, CdbootRomBootsTumbleDisc) {
 }
 
 TEST(IdleSkipPrograms, TestRoms) {
-  for (const char* name : {"gpu_polygons", "dma_modes", "cdrom_controller", "timers_video", "spu_voices", "sio_pad"}) {
+  for (const char* name : {"gpu_polygons", "dma_modes", "cdrom_controller", "timers_video", "spu_voices", "sio_pad",
+                           "cpu_load_timing", "cpu_icache_code"}) {
     SCOPED_TRACE(name);
     const std::string exe = std::string(PSXRL_BUILD_DIR "/tests/roms/") + name + ".exe";
     expect_same([&](Console& c) { c.boot_exe(exe); }, [](Console& c) { c.run_frames(120); }, false);

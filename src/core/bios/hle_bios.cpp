@@ -31,6 +31,7 @@ void HleBios::install() {
   poke32(kDefaultExit + 4, kExceptionStack);
   const char version[] = "psxrl HLE kernel";
   for (u32 i = 0; i < sizeof version; ++i) poke8(kVersionString + i, static_cast<u8>(version[i]));
+  bus_.flush_icache();  // the code just written must not meet stale cache lines, as at BIOS boot
 
   // The chains as the BIOS sets them up at boot: the root counter handlers in chain 1 (VBlank
   // first), DefInt in chain 3; the pad handler waits for StartPad.
@@ -153,7 +154,10 @@ bool HleBios::system_call(u32 table, u32 fn) {
   const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1), a2 = cpu_.reg(kA2);
   constexpr u32 kGp0 = 0xBF801810, kGp1 = 0xBF801814;
   switch (fn) {
-    case 0x44: return_to_caller(0); return true;  // FlushCache: the emulated caches are coherent
+    case 0x44:  // FlushCache: invalidates the i-cache, so code loaded or patched in RAM runs
+      bus_.flush_icache();
+      return_to_caller(0);
+      return true;
     case 0x48: io_write(kGp1, a0, 4); return_to_caller(cpu_.reg(kV0)); return true;
     case 0x49: io_write(kGp0, a0, 4); return_to_caller(0); return true;
     case 0x4A:

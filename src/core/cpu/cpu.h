@@ -3,6 +3,7 @@
 // that unit tests can run it against a scripted bus; the console instantiates it with Bus.
 #pragma once
 #include <array>
+#include <type_traits>
 
 #include "core/cpu/cop0.h"
 #include "core/gte/gte.h"
@@ -26,6 +27,9 @@ class CpuHooks {
 
 template <class BusT>
 class CpuT {
+  // The console's bus models load timing; the unit tests' scripted buses do not.
+  static constexpr bool kLoadShadow = std::is_same_v<BusT, Bus>;
+
  public:
   static constexpr u32 kResetVector = 0xBFC00000;
 
@@ -132,6 +136,18 @@ class CpuT {
   }
   void wait_muldiv();
   void wait_gte();
+  // Load shadow (the comment at kLoadIssue). timed_read makes a load's bus read and charges its
+  // time; wait_load holds another memory access until a load in flight is done; shadow_stall
+  // holds an instruction that reads the register a load in flight is bringing.
+  bool timed_read(u32 addr, u32 width, u32 rt, u32& v);
+  void wait_load() {
+    if (sched_.now() < load_done_at_) sched_.advance(load_done_at_ - sched_.now());
+  }
+  void shadow_stall(u32 instr);
+  bool fetch(u32& instr) {
+    if constexpr (kLoadShadow) return bus_.fetch(pc_, instr, load_done_at_);  // a miss waits
+    else return bus_.fetch(pc_, instr);
+  }
   void load(u32 instr, u32 width, bool sign);
   void load_unaligned(u32 instr, bool left);
   void store(u32 instr, u32 width);
@@ -156,6 +172,32 @@ class CpuT {
   u32 new_load_reg_ = 0, new_load_val_ = 0;
   Cycles muldiv_ready_at_ = 0;
   Cycles gte_ready_at_ = 0;
+  // Load timing (R3000A, code running from the i-cache, loads from RAM), after hardware
+  // measurements by rustation's author (gist.github.com/simias/a4c3fa560de72e67a5b0b2ce9cf0298c;
+  // cycles from the sequence's start until every load has completed):
+  //   lw;nop 8 | lw t0;lw t1;nop 14 | lw t0;lw t0;nop 15 | three lw, other registers, + nop 20,
+  //   the same register 22 | lw + 6 nops 8, + 7 nops 9 | lw t0; move t4,t0 (delay slot) 8.
+  // Model: a load instruction takes kLoadIssue cycles and its RAM access starts one cycle after
+  // that, or when the previous load's access ends (a cycle later still for a load in the delay
+  // slot of a load to the same register), and lasts kLoadBus cycles; the CPU waits only to start
+  // that access, so one load waits at a time. Following instructions run in the access's shadow,
+  // except that another memory access (a load, an i-cache miss) waits for it to end, and an
+  // instruction after the delay slot that reads the loaded register ends no earlier than it (the
+  // value is there a cycle before: the instruction executes in the access's last cycle). The
+  // measurements include no such use, so that last rule is this model's, not a measured figure.
+  // Timed as tests/roms/cpu_load_timing does (timer reads around the sequence,
+  // an empty sequence's time subtracted; the closing read's first cycle overlaps the wait), a
+  // sequence takes max(e, C - 1): e when its instructions end, C when its last access ends.
+  // Worked through: lw at 0 accesses 3..9, so lw;nop takes 8; lw;lw accesses 3..9, 9..15: 14;
+  // 15 for the same register; lw + 7 nops: the nops end at 2 + 7 = 9; lw;nop;use: the use ends
+  // at 9, one cycle later than lw;nop would.
+  // Only loads from RAM made by cached code are modelled so: uncached code (KSEG1, the BIOS
+  // running from ROM) and other regions keep the synchronous read times of Bus::read, and stores
+  // never wait (the write queue).
+  static constexpr Cycles kLoadIssue = 2, kLoadBus = 6;
+  Cycles load_done_at_ = 0;  // when the last shadowed load's RAM access ends
+  u32 shadow_reg_ = 0;       // its destination register, until an instruction waits for it or
+                             // sees the access ended (0 then: nothing left to check)
   Cop0 cop0_;
   u64 instructions_ = 0;
   bool stop_ = false;

@@ -59,6 +59,7 @@ void CpuT<BusT>::execute(u32 instr) {
       u32 addr = s + simm(instr), v;
       if (!check_address(addr, 3, Exception::AddressLoad)) break;
       if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, 4, false)) break;
+      if constexpr (kLoadShadow) wait_load();  // the GTE load is not shadowed, but waits its turn
       if (!bus_.read32(addr, v)) {
         exception(Exception::BusData);
         break;
@@ -265,14 +266,19 @@ void CpuT<BusT>::execute_cop2(u32 instr) {
 
 template <class BusT>
 void CpuT<BusT>::do_state(StateIO& s) {
-  s.section("CPU ", 1);
+  // Version 2 added the load shadow; a version-1 state was made with loads that completed at
+  // once, so none is in flight.
+  const u32 version = s.section("CPU ", 2, 1);
   s.pod(regs_);
   s.pod(hi_), s.pod(lo_), s.pod(pc_), s.pod(next_pc_), s.pod(current_pc_);
   s.boolean(in_delay_slot_), s.boolean(next_in_delay_);
   s.pod(load_reg_), s.pod(load_val_), s.pod(new_load_reg_), s.pod(new_load_val_);
   s.pod(muldiv_ready_at_), s.pod(gte_ready_at_), s.pod(instructions_);
   s.boolean(hook_armed_), s.pod(hook_pc_);
-  if (s.loading() && (load_reg_ > 31 || new_load_reg_ > 31)) s.fail("CPU load-delay register out of range");
+  s.pod_since(version, 2, load_done_at_, Cycles{0});
+  s.pod_since(version, 2, shadow_reg_, u32{0});
+  if (s.loading() && (load_reg_ > 31 || new_load_reg_ > 31 || shadow_reg_ > 31))
+    s.fail("CPU load-delay register out of range");
   cop0_.do_state(s);
   s.end_section("CPU ");
 }

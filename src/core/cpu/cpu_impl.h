@@ -1,6 +1,7 @@
 // R3000A instruction semantics (psx-spx "CPU Specifications"), included by the translation units
 // that instantiate CpuT: cpu.cpp for the console's Bus, and the CPU unit tests for a test bus.
 #pragma once
+#include <algorithm>
 #include <type_traits>
 
 #include "core/cpu/cpu.h"
@@ -17,6 +18,27 @@ inline u32 shamt(u32 i) { return (i >> 6) & 31; }
 inline u32 funct(u32 i) { return i & 63; }
 inline u32 imm(u32 i) { return i & 0xFFFF; }
 inline u32 simm(u32 i) { return static_cast<u32>(static_cast<s32>(static_cast<s16>(i & 0xFFFF))); }
+
+// Whether instruction i reads general register r (nonzero) as a source operand.
+inline bool reads_reg(u32 i, u32 r) {
+  const bool s = rs(i) == r, t = rt(i) == r;
+  if (!s && !t) return false;  // most instructions: the register is in neither field
+  switch (op(i)) {
+    case 0x00:
+      switch (funct(i)) {
+        case 0x00: case 0x02: case 0x03: return t;            // shifts by an immediate
+        case 0x08: case 0x09: case 0x11: case 0x13: return s;  // JR, JALR, MTHI, MTLO
+        case 0x0C: case 0x0D: case 0x10: case 0x12: return false;  // SYSCALL, BREAK, MFHI, MFLO
+        default: return s || t;
+      }
+    case 0x02: case 0x03: case 0x0F: return false;          // J, JAL, LUI
+    case 0x04: case 0x05: return s || t;                    // BEQ, BNE
+    case 0x10: case 0x12: return (rs(i) == 0x04 || rs(i) == 0x06) && t;  // MTC0, MTC2, CTC2
+    case 0x22: case 0x26: return s || t;                    // LWL, LWR merge into rt
+    case 0x28: case 0x29: case 0x2A: case 0x2B: case 0x2E: return s || t;  // stores
+    default: return s;  // BcondZ, BLEZ, BGTZ, immediate ALU, loads, LWC2, SWC2: the base
+  }
+}
 }  // namespace cpu_detail
 
 template <class BusT>
@@ -92,9 +114,10 @@ void CpuT<BusT>::step() {
     exception(Exception::AddressLoad);
   } else if ((cop0_.dcic & Cop0::kDcicPCE) && exec_break()) {
     // the debug exception was taken instead of the instruction
-  } else if (!bus_.fetch(pc_, instr)) {
+  } else if (!fetch(instr)) {
     exception(Exception::BusFetch);
   } else {
+    if (kLoadShadow && shadow_reg_) shadow_stall(instr);
     pc_ = next_pc_;
     next_pc_ += 4;
     execute(instr);
@@ -186,6 +209,37 @@ void CpuT<BusT>::wait_gte() {
   if (sched_.now() < gte_ready_at_) sched_.advance(gte_ready_at_ - sched_.now());
 }
 
+// A load's bus read and its time (the load-shadow model at CpuT::kLoadIssue).
+template <class BusT>
+bool CpuT<BusT>::timed_read(u32 addr, u32 width, u32 rt, u32& v) {
+  if constexpr (kLoadShadow) {
+    if (BusT::physical(addr) < 0x00800000 && bus_.cached_code(current_pc_)) {
+      const Cycles issue_end = sched_.now() - 1 + kLoadIssue;
+      const Cycles bus_free = load_done_at_ + (load_reg_ == rt && rt != 0 ? 1 : 0);
+      const Cycles start = std::max(issue_end + 1, bus_free);
+      sched_.advance(start - 1 - sched_.now());
+      load_done_at_ = start + kLoadBus;
+      shadow_reg_ = rt;
+      return bus_.read_ram_untimed(addr, v, width);
+    }
+    wait_load();
+  }
+  return width == 4 ? bus_.read32(addr, v) : width == 2 ? bus_.read16(addr, v) : bus_.read8(addr, v);
+}
+
+// An instruction (its cycle already counted) that reads the register a load in flight brings
+// ends no earlier than the load's access. In the load's delay slot (the previous instruction was
+// the load: load_reg_ is its target) it reads the old value and goes on.
+template <class BusT>
+void CpuT<BusT>::shadow_stall(u32 instr) {
+  if (sched_.now() >= load_done_at_) {
+    shadow_reg_ = 0;
+  } else if (load_reg_ != shadow_reg_ && cpu_detail::reads_reg(instr, shadow_reg_)) {
+    wait_load();
+    shadow_reg_ = 0;
+  }
+}
+
 template <class BusT>
 bool CpuT<BusT>::check_address(u32 addr, u32 align_mask, Exception code) {
   // Misaligned, or a kernel-segment address while in user mode.
@@ -204,8 +258,7 @@ void CpuT<BusT>::load(u32 instr, u32 width, bool sign) {
   if (!check_address(addr, width - 1, Exception::AddressLoad)) return;
   if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, width, false)) return;
   u32 v;
-  bool ok = width == 4 ? bus_.read32(addr, v) : width == 2 ? bus_.read16(addr, v) : bus_.read8(addr, v);
-  if (!ok) {
+  if (!timed_read(addr, width, rt(instr), v)) {
     exception(Exception::BusData);
     return;
   }
@@ -225,7 +278,7 @@ void CpuT<BusT>::load_unaligned(u32 instr, bool left) {
   const u32 off = addr & 3;
   if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(left ? addr - off : addr, left ? off + 1 : 4 - off, false)) return;
   u32 word;
-  if (!bus_.read32(addr & ~3u, word)) {
+  if (!timed_read(addr & ~3u, 4, rt(instr), word)) {
     exception(Exception::BusData);
     return;
   }

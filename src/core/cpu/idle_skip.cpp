@@ -14,21 +14,6 @@ extern template class CpuT<Bus>;
 
 namespace {
 
-// The instruction word at `vaddr` as the interpreter would fetch it, without timing or i-cache.
-bool peek_code(Bus& bus, u32 vaddr, u32& word) {
-  const u32 p = Bus::physical(vaddr);
-  if (vaddr & 3) return false;
-  if (p < 0x00800000) {
-    word = load_le32(bus.ram() + (p & (Bus::kRamSize - 1)));
-    return true;
-  }
-  if (p >= 0x1FC00000 && p < 0x1FC00000 + Bus::kBiosSize) {
-    word = load_le32(bus.bios() + (p - 0x1FC00000));
-    return true;
-  }
-  return false;
-}
-
 // I/O registers whose read changes nothing and whose value changes only when an event runs or
 // the CPU writes somewhere (psx-spx register descriptions; the devices' io_read confirm it):
 // memory control, RAM_SIZE, I_STAT/I_MASK, every DMA register, the CD-ROM status and interrupt
@@ -66,6 +51,10 @@ u32 pure_load_bits(u32 sr, u32 vaddr, u32 width, bool sign) {
   if (!sign || (bits & sign_bit)) bits |= ~value_mask;
   return bits;
 }
+
+// Cycles until a shadowed load's access ends at `done`, seen at time `now` (cpu.h): 0 when
+// nothing can wait for it any more.
+Cycles shadow_left(Cycles done, Cycles now) { return done > now ? done - now : 0; }
 
 u32 load_width(u32 instr) {
   switch (instr >> 26) {
@@ -113,13 +102,15 @@ bool IdleSkip::examine(Cpu& cpu) {
   const u64 i0 = cpu.instructions_;
   const std::array<u32, 32> regs0 = cpu.regs_;
   const u32 load0[4] = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
+  const Cycles done0 = cpu.load_done_at_;
+  const u32 shadow_reg0 = cpu.shadow_reg_;
   const ICache& icache = bus.icache();
   path_len_ = 0;
   do {
     if (cpu.stop_ || sched.now() >= deadline) return false;
     if (path_len_ == kMaxPath) return false;
     u32 instr;
-    if (!peek_code(bus, cpu.pc_, instr)) return false;
+    if (!bus.peek_code(cpu.pc_, instr)) return false;  // the word the fetch will execute
     IdleStep& st = path_[path_len_++];
     st = {cpu.pc_, instr, 0, 0, 0};
     tags_[path_len_ - 1] = icache.tag(ICache::line(cpu.pc_));
@@ -148,6 +139,10 @@ bool IdleSkip::examine(Cpu& cpu) {
     if (icache.tag(ICache::line(path_[i].pc)) != tags_[i]) return false;
   const u32 load1[4] = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
   if (!std::equal(load0, load0 + 4, load1)) return false;
+  // A load in flight shapes the iteration's timing (cpu.h, load shadow): it must be in flight
+  // for as long, into the same register, at the end as at the start.
+  const Cycles shadow0 = shadow_left(done0, t0), shadow1 = shadow_left(cpu.load_done_at_, t1);
+  if (shadow0 != shadow1 || (shadow0 && shadow_reg0 != cpu.shadow_reg_)) return false;
 
   // 2. Prove the following iterations repeat it, each adding the same step to the registers.
   IdleProof proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_);
@@ -162,6 +157,7 @@ bool IdleSkip::examine(Cpu& cpu) {
   last_cost_ = cost;
   if (n == 0) return false;
   for (u32 i = 1; i < 32; ++i) cpu.regs_[i] += static_cast<u32>(n) * (cpu.regs_[i] - regs0[i]);
+  if (cpu.load_done_at_ != done0) cpu.load_done_at_ += n * cost;  // each iteration's load, as the last
   sched.advance(n * cost);
   cpu.instructions_ += n * steps;
   ++stats_.skips;

@@ -166,7 +166,7 @@ TEST(GlRenderer, RandomOperationsAtScale1EqualTheSoftwareRenderer) {
   std::vector<u16> start = random_vram(rng);
   sw.load_vram(start.data());
   gl->load_vram(start.data());
-  for (int group = 0; group < 80; ++group) {
+  for (int group = 0; group < 200; ++group) {
     for (int i = 0; i < 25; ++i) random_operation(rng, sw, *gl);
     long diff = first_difference(sw.vram(), gl->vram());
     ASSERT_EQ(diff, -1) << "group " << group << ": pixel (" << diff % 1024 << ", " << diff / 1024 << ") software "

@@ -2,6 +2,7 @@
 #include "gpu/gl/gl_renderer.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "gpu/gl/osmesa_context.h"
 #include "gpu/vram.h"
@@ -41,6 +42,8 @@ bool GlRenderer::init(std::string& error) {
     return false;
   }
   if (!build_programs(gl_, programs_, error)) return false;
+  // One variant now, so that a compiler problem is reported here rather than at the first draw.
+  if (!draw_variant(gl_, 0, variants_[0], error)) return false;
 
   const GLsizei w = static_cast<GLsizei>(kVramWidth * scale_), h = static_cast<GLsizei>(kVramHeight * scale_);
   auto texture = [&](GLuint& tex, GLsizei tw, GLsizei th) {
@@ -103,7 +106,8 @@ GlRenderer::~GlRenderer() {
   gl_.DeleteFramebuffers(3, fbos);
   GLuint textures[4] = {vram_tex_, snapshot_tex_, staging_tex_, native_tex_};
   gl_.DeleteTextures(4, textures);
-  gl_.DeleteProgram(programs_.draw);
+  for (const DrawProgram& p : variants_)
+    if (p.program) gl_.DeleteProgram(p.program);
   gl_.DeleteProgram(programs_.downsample);
 }
 
@@ -149,27 +153,41 @@ void GlRenderer::sync(const Rect& area) {
   for (s32 cy = area.y0 / kCell; cy <= (area.y1 - 1) / kCell; ++cy) stale_[cy] &= ~bits;
 }
 
-void GlRenderer::add(const PrimitiveRecord& r, const Rect* reads, u32 read_count) {
+void GlRenderer::sync_reads(const Rect* reads, u32 read_count) {
   context_->make_current();
   for (u32 i = 0; i < read_count; ++i) {
     const Rect& a = reads[i];
     for_each_wrapped(a.x0, a.y0, a.x1 - a.x0, a.y1 - a.y0,
                      [&](s32 x, s32 y, s32 w, s32 h) { sync({x, y, x + w, y + h}); });
   }
+}
+
+void GlRenderer::push(const PrimitiveRecord& r) {
+  const u32 variant = variant_of(r.flags);
+  if (runs_.empty() || runs_.back().second != variant) runs_.emplace_back(static_cast<u32>(batch_.size()), variant);
   batch_.push_back(r);
   mark_stale({r.bbox[0], r.bbox[1], r.bbox[2], r.bbox[3]});
   native_valid_ = false;
   if (batch_.size() >= kMaxBatch) flush();
 }
 
+const DrawProgram& GlRenderer::program(u32 variant) const {
+  DrawProgram& p = variants_[variant];
+  if (!p.program) {
+    std::string error;
+    // Every variant is the same source with other constants, and variant 0 compiled at set-up.
+    if (!draw_variant(gl_, variant, p, error)) throw std::runtime_error("OpenGL renderer: " + error);
+  }
+  return p;
+}
+
+// Draws the batch: one instanced draw per run, the records' attributes pointed at the run.
 void GlRenderer::flush() const {
   if (batch_.empty()) return;
   context_->make_current();
   const GlFunctions& gl = gl_;
   gl.BindFramebuffer(GL_FRAMEBUFFER, vram_fbo_);
   gl.Viewport(0, 0, static_cast<GLsizei>(kVramWidth * scale_), static_cast<GLsizei>(kVramHeight * scale_));
-  gl.UseProgram(programs_.draw);
-  gl.Uniform1i(programs_.draw_scale, static_cast<GLint>(scale_));
   gl.ActiveTexture(GL_TEXTURE1);
   gl.BindTexture(GL_TEXTURE_2D, staging_tex_);
   gl.ActiveTexture(GL_TEXTURE0);
@@ -178,8 +196,19 @@ void GlRenderer::flush() const {
   gl.BindBuffer(GL_ARRAY_BUFFER, vbo_);
   gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(batch_.size() * sizeof(PrimitiveRecord)), batch_.data(),
                 GL_STREAM_DRAW);
-  gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(batch_.size()));
+  for (size_t i = 0; i < runs_.size(); ++i) {
+    const auto [first, variant] = runs_[i];
+    const u32 end = i + 1 < runs_.size() ? runs_[i + 1].first : static_cast<u32>(batch_.size());
+    const DrawProgram& p = program(variant);
+    gl.UseProgram(p.program);
+    gl.Uniform1i(p.scale, static_cast<GLint>(scale_));
+    for (GLuint a = 0; a < kRecordVec4s; ++a)
+      gl.VertexAttribIPointer(a, 4, GL_INT, sizeof(PrimitiveRecord),
+                              reinterpret_cast<const void*>(size_t{first} * sizeof(PrimitiveRecord) + size_t{a} * 16));
+    gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(end - first));
+  }
   batch_.clear();
+  runs_.clear();
   std::fill(staging_row_used_.begin(), staging_row_used_.end(), false);
 }
 

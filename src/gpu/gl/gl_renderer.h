@@ -8,6 +8,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gpu/gl/gl_context.h"
@@ -48,9 +49,17 @@ class GlRenderer final : public Renderer {
 
   // Queues `r` after bringing the snapshot up to date for the areas it reads (`reads`, native
   // rectangles that may run past the right/bottom edge and wrap); marks its box stale.
-  void add(const PrimitiveRecord& r, const Rect* reads, u32 read_count);
+  void add(const PrimitiveRecord& r, const Rect* reads, u32 read_count) {
+    sync_reads(reads, read_count);
+    push(r);
+  }
+  // The two halves, for an operation made of several records that must all read VRAM as it was
+  // before any of them (the pieces of a copy that wraps at the VRAM edge).
+  void sync_reads(const Rect* reads, u32 read_count);
+  void push(const PrimitiveRecord& r);
   void sync(const Rect& area);
   void flush() const;
+  const DrawProgram& program(u32 variant) const;
   void mark_stale(const Rect& r);
   bool any_stale(const Rect& r) const;
   void copy_rows(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 rows, MaskMode m);
@@ -63,8 +72,12 @@ class GlRenderer final : public Renderer {
   GLuint vram_fbo_ = 0, snapshot_fbo_ = 0, native_fbo_ = 0;
   GLuint vao_ = 0, vbo_ = 0;
 
-  // Records not yet drawn, and the staging rows they use (a row is re-uploaded only after them).
+  // Draw program variants, compiled when first needed.
+  mutable DrawProgram variants_[kDrawVariants];
+  // Records not yet drawn, in runs of one variant each (first record, variant), and the staging
+  // rows they use (a row is re-uploaded only after them).
   mutable std::vector<PrimitiveRecord> batch_;
+  mutable std::vector<std::pair<u32, u32>> runs_;
   mutable std::vector<bool> staging_row_used_;
   // Bit (cx) of stale_[cy]: the 16x16 cell (cx, cy) may differ between VRAM and the snapshot.
   u64 stale_[32] = {};

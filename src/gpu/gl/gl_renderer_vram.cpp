@@ -43,19 +43,25 @@ void GlRenderer::fill(u32 x, u32 y, u32 width, u32 height, u16 pixel) {
   });
 }
 
-// Rows [first, first + rows) of a GP0(80) copy: reads the source (and the destination when the
-// mask is checked) from the snapshot.
+// `rows` rows of a GP0(80) copy: reads the source (and the destination when the mask is
+// checked) from the snapshot.
 void GlRenderer::copy_rows(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 rows, MaskMode m) {
+  // Up to four pieces where the destination wraps; all read before any is written.
+  PrimitiveRecord pieces[4];
+  Rect reads[8];
+  u32 count = 0, read_count = 0;
   split_wrap(dst_y, rows, kVramHeight, [&](u32 ys, u32 hs, u32 row_offset) {
     split_wrap(dst_x, width, kVramWidth, [&](u32 xs, u32 ws, u32 col_offset) {
-      PrimitiveRecord r = block_record(Kind::Copy, m, xs, ys, ws, hs);
+      PrimitiveRecord& r = pieces[count++];
+      r = block_record(Kind::Copy, m, xs, ys, ws, hs);
       r.a[0] = src_x, r.a[1] = src_y, r.b[0] = dst_x, r.b[1] = dst_y;
-      Rect reads[2] = {{static_cast<s32>(src_x + col_offset), static_cast<s32>(src_y + row_offset),
-                        static_cast<s32>(src_x + col_offset + ws), static_cast<s32>(src_y + row_offset + hs)},
-                       {r.bbox[0], r.bbox[1], r.bbox[2], r.bbox[3]}};
-      add(r, reads, m.check ? 2 : 1);
+      reads[read_count++] = {static_cast<s32>(src_x + col_offset), static_cast<s32>(src_y + row_offset),
+                             static_cast<s32>(src_x + col_offset + ws), static_cast<s32>(src_y + row_offset + hs)};
+      if (m.check) reads[read_count++] = {r.bbox[0], r.bbox[1], r.bbox[2], r.bbox[3]};
     });
   });
+  sync_reads(reads, read_count);
+  for (u32 i = 0; i < count; ++i) push(pieces[i]);
 }
 
 // GP0(80) works top to bottom, each source row read whole before it is written (software
@@ -75,8 +81,9 @@ void GlRenderer::write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode 
   y &= kVramHeight - 1;
   if (staging_row_used_[y]) flush();
   context_->make_current();
-  gl_.BindTexture(GL_TEXTURE_2D, staging_tex_);
   split_wrap(x, count, kVramWidth, [&](u32 xs, u32 ws, u32 offset) {
+    // Bound for each piece: the first piece's add() may flush, which binds other textures.
+    gl_.BindTexture(GL_TEXTURE_2D, staging_tex_);
     gl_.TexSubImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(xs), static_cast<GLint>(y), static_cast<GLsizei>(ws), 1,
                       GL_RED_INTEGER, GL_UNSIGNED_SHORT, pixels + offset);
     PrimitiveRecord r = block_record(Kind::Upload, m, xs, y, ws, 1);

@@ -6,6 +6,7 @@
 // bounding boxes; coverage (the top-left fill rule, the line stepping) is decided per fragment.
 #include "gpu/gl/gl_shaders.h"
 
+#include <cstdio>
 #include <vector>
 
 namespace psx::gpu::gl {
@@ -31,7 +32,10 @@ void main() {
 }
 )";
 
-const char* kDrawFragment = R"(#version 330 core
+// Compiled once per variant: KIND, TEX, RAW, SEMI and CHECK are #defined in front (see
+// draw_variant), so each program is straight-line code for one kind of record; llvmpipe runs
+// every branch of a shader for every fragment, which made one program for all kinds slow.
+const char* kDrawFragment = R"(
 uniform usampler2D u_vram;     // the snapshot of scaled VRAM that reads see
 uniform usampler2D u_staging;  // native 1024x512, CPU->VRAM rows
 uniform int u_scale;
@@ -109,13 +113,13 @@ void main() {
   ivec2 p = s / u_scale;
   ivec2 f = s - p * u_scale;
   int flags = v_state.x;
-  int kind = flags & 7;
-  int tex = (flags >> 3) & 3;
-  bool semi = (flags & (1 << 6)) != 0;
+  const int kind = KIND;
+  const int tex = TEX;
+  const bool semi = SEMI != 0;
   uint mask_or = (flags & (1 << 11)) != 0 ? 0x8000u : 0u;
   int skip = (flags >> 12) & 3;
   if (skip != 0 && (p.y & 1) == skip - 1) discard;
-  bool check = (flags & (1 << 10)) != 0;
+  const bool check = CHECK != 0;
   uint dst = (check || semi) ? texelFetch(u_vram, s, 0).r : 0u;
   if (check && (dst & 0x8000u) != 0u) discard;
 
@@ -163,7 +167,7 @@ void main() {
     uint texel = fetch_texel(tex, u, v);
     if (texel == 0u) discard;
     translucent = semi && (texel & 0x8000u) != 0u;
-    outp = (flags & (1 << 5)) != 0 ? texel : modulate(texel, colour, d);
+    outp = RAW != 0 ? texel : modulate(texel, colour, d);
   } else {
     outp = colour_pixel(colour, d);
   }
@@ -229,17 +233,31 @@ GLuint link(const GlFunctions& gl, const char* vertex, const char* fragment, std
 }  // namespace
 
 bool build_programs(const GlFunctions& gl, Programs& out, std::string& error) {
-  out.draw = link(gl, kDrawVertex, kDrawFragment, error);
-  if (!out.draw) return false;
   out.downsample = link(gl, kFullscreenVertex, kDownsampleFragment, error);
   if (!out.downsample) return false;
-  out.draw_scale = gl.GetUniformLocation(out.draw, "u_scale");
   out.downsample_scale = gl.GetUniformLocation(out.downsample, "u_scale");
-  gl.UseProgram(out.draw);
-  gl.Uniform1i(gl.GetUniformLocation(out.draw, "u_vram"), 0);
-  gl.Uniform1i(gl.GetUniformLocation(out.draw, "u_staging"), 1);
   gl.UseProgram(out.downsample);
   gl.Uniform1i(gl.GetUniformLocation(out.downsample, "u_vram"), 0);
+  return true;
+}
+
+u32 variant_of(s32 flags) {
+  const u32 f = static_cast<u32>(flags);
+  return (f & 0x3F) | ((f & flag::kSemi) ? 0x40 : 0) | ((f & flag::kCheckMask) ? 0x80 : 0);
+}
+
+bool draw_variant(const GlFunctions& gl, u32 variant, DrawProgram& out, std::string& error) {
+  char defines[160];
+  std::snprintf(defines, sizeof defines, "#version 330 core\n#define KIND %u\n#define TEX %u\n#define RAW %u\n"
+                "#define SEMI %u\n#define CHECK %u\n", variant & 7, (variant >> 3) & 3, (variant >> 5) & 1,
+                (variant >> 6) & 1, (variant >> 7) & 1);
+  const std::string fragment = std::string(defines) + kDrawFragment;
+  out.program = link(gl, kDrawVertex, fragment.c_str(), error);
+  if (!out.program) return false;
+  out.scale = gl.GetUniformLocation(out.program, "u_scale");
+  gl.UseProgram(out.program);
+  gl.Uniform1i(gl.GetUniformLocation(out.program, "u_vram"), 0);
+  gl.Uniform1i(gl.GetUniformLocation(out.program, "u_staging"), 1);
   return true;
 }
 

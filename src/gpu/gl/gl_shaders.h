@@ -43,11 +43,23 @@ static_assert(sizeof(PrimitiveRecord) == 8 * 16, "eight ivec4 attributes");
 constexpr u32 kRecordVec4s = 8;
 
 struct Programs {
-  GLuint draw = 0, downsample = 0;
-  GLint draw_scale = -1, downsample_scale = -1;
+  GLuint downsample = 0;
+  GLint downsample_scale = -1;
 };
 
-// Compiles and links both programs; false with `error` holding the compiler's log.
+// Compiles and links the downsample program; false with `error` holding the compiler's log.
 bool build_programs(const GlFunctions& gl, Programs& out, std::string& error);
+
+// The draw program comes in variants, one per kind, texture mode, raw, semi-transparency and
+// mask check (the flags that change what a fragment computes): an 8-bit key.
+constexpr u32 kDrawVariants = 256;
+u32 variant_of(s32 flags);
+
+struct DrawProgram {
+  GLuint program = 0;
+  GLint scale = -1;
+};
+// Compiles and links one variant of the draw program.
+bool draw_variant(const GlFunctions& gl, u32 variant, DrawProgram& out, std::string& error);
 
 }  // namespace psx::gpu::gl

@@ -35,7 +35,8 @@ bool RendererArgs::apply(psx::Console& console, int default_scale, std::string& 
                                               library && *library ? library : psx::gpu::gl::OsMesaContext::kDefaultLibrary,
                                               error);
   if (!r) {
-    error = "--renderer gl: OpenGL is not available: " + error;
+    error = "--renderer gl: OpenGL is not available: " + error +
+            " (install libosmesa6, or use --renderer software)";
     return false;
   }
   console.set_renderer(std::move(r));

@@ -13,6 +13,9 @@ namespace psx::gpu::gl {
 
 namespace {
 
+// Records are drawn as their clipped boxes, except triangles: those are drawn as the triangle
+// grown by one native pixel on every side (so every sample the exact rule covers is rasterized,
+// whatever the host's own fill rule), unless a sharp corner would make that larger than the box.
 const char* kDrawVertex = R"(#version 330 core
 layout(location = 0) in ivec4 i_bbox;
 layout(location = 1) in ivec4 i_state;
@@ -22,13 +25,32 @@ layout(location = 4) in ivec4 i_base;
 layout(location = 5) in ivec4 i_g0;
 layout(location = 6) in ivec4 i_g1;
 layout(location = 7) in ivec4 i_g2;
-uniform int u_scale;
-flat out ivec4 v_state, v_ab, v_c, v_base, v_g0, v_g1, v_g2;
+flat out ivec4 v_bbox, v_state, v_ab, v_c, v_base, v_g0, v_g1, v_g2;
+
+vec2 outward(vec2 from, vec2 to, float orient) {
+  vec2 e = normalize(to - from);
+  return orient * vec2(e.y, -e.x);
+}
+
 void main() {
   ivec2 corner = ivec2(gl_VertexID & 1, gl_VertexID >> 1);
   vec2 pos = vec2(mix(i_bbox.xy, i_bbox.zw, corner));
+  if ((i_state.x & 7) == 0) {
+    vec2 p[3] = vec2[3](vec2(i_ab.xy), vec2(i_ab.zw), vec2(i_c.xy));
+    vec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
+    float orient = sign(e1.x * e2.y - e1.y * e2.x);
+    vec2 grown[3];
+    float worst = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      vec2 n1 = outward(p[(i + 2) % 3], p[i], orient), n2 = outward(p[i], p[(i + 1) % 3], orient);
+      float k = 1.0 + dot(n1, n2);  // 2 cos^2(half the corner's angle)
+      worst = max(worst, 1.0 / max(k, 1e-6));
+      grown[i] = p[i] + (n1 + n2) / max(k, 1e-6);
+    }
+    if (worst < 16.0) pos = grown[min(gl_VertexID, 2)];
+  }
   gl_Position = vec4(pos / vec2(512.0, 256.0) - 1.0, 0.0, 1.0);
-  v_state = i_state; v_ab = i_ab; v_c = i_c; v_base = i_base; v_g0 = i_g0; v_g1 = i_g1; v_g2 = i_g2;
+  v_bbox = i_bbox; v_state = i_state; v_ab = i_ab; v_c = i_c; v_base = i_base; v_g0 = i_g0; v_g1 = i_g1; v_g2 = i_g2;
 }
 )";
 
@@ -39,7 +61,7 @@ const char* kDrawFragment = R"(
 uniform usampler2D u_vram;     // the snapshot of scaled VRAM that reads see
 uniform usampler2D u_staging;  // native 1024x512, CPU->VRAM rows
 uniform int u_scale;
-flat in ivec4 v_state, v_ab, v_c, v_base, v_g0, v_g1, v_g2;
+flat in ivec4 v_bbox, v_state, v_ab, v_c, v_base, v_g0, v_g1, v_g2;
 out uint o_pixel;
 
 const int kDither[16] = int[16](-4, 0, -3, 1, 2, -2, 3, -1, -3, 1, -4, 0, 3, -1, 2, -2);
@@ -112,6 +134,7 @@ void main() {
   ivec2 s = ivec2(gl_FragCoord.xy);
   ivec2 p = s / u_scale;
   ivec2 f = s - p * u_scale;
+  if (KIND == 0 && (any(lessThan(p, v_bbox.xy)) || any(greaterThanEqual(p, v_bbox.zw)))) discard;
   int flags = v_state.x;
   const int kind = KIND;
   const int tex = TEX;

@@ -28,7 +28,7 @@ std::unique_ptr<OsMesaContext> OsMesaContext::create(const std::string& library,
   c->library_ = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!c->library_) {
     const char* why = dlerror();
-    error = "cannot load " + library + (why ? std::string(": ") + why : std::string());
+    error = why ? std::string(why) : "cannot load " + library;
     return nullptr;
   }
   c->api_ = std::make_unique<Api>();

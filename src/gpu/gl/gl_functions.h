@@ -16,6 +16,8 @@ namespace psx::gpu::gl {
   X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                             \
   X(PFNGLVIEWPORTPROC, Viewport)                                                                   \
   X(PFNGLDISABLEPROC, Disable)                                                                     \
+  X(PFNGLENABLEPROC, Enable)                                                                       \
+  X(PFNGLSCISSORPROC, Scissor)                                                                     \
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                                                             \
   X(PFNGLFINISHPROC, Finish)                                                                       \
   X(PFNGLGENTEXTURESPROC, GenTextures)                                                             \

@@ -1,5 +1,5 @@
-// OpenGL renderer: VRAM block operations and transfers. Fills, VRAM copies and CPU rows are
-// records like primitives (so they batch and obey the same read/write ordering); CPU rows go
+// OpenGL renderer: VRAM block operations and transfers. Fills are clears; VRAM copies and CPU
+// rows are records like primitives (so they batch and obey the same read/write ordering); CPU rows go
 // through a native staging texture that the shader enlarges. Read-back flushes the batch and
 // downloads either the scaled texture's rectangle or, for vram(), the native 1024x512 made by
 // the downsample program.
@@ -33,14 +33,26 @@ PrimitiveRecord block_record(Kind kind, MaskMode m, s32 x, s32 y, s32 w, s32 h) 
 }
 }  // namespace
 
+// Fills are scissored clears of the VRAM texture (llvmpipe clears far faster than it shades):
+// the batch before them is drawn first.
 void GlRenderer::fill(u32 x, u32 y, u32 width, u32 height, u16 pixel) {
+  if (width == 0 || height == 0) return;
+  flush();
+  context_->make_current();
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, vram_fbo_);
+  gl_.Enable(GL_SCISSOR_TEST);
+  const GLuint value[4] = {pixel, 0, 0, 0};
+  const s32 n = static_cast<s32>(scale_);
   split_wrap(y, height, kVramHeight, [&](u32 ys, u32 hs, u32) {
     split_wrap(x, width, kVramWidth, [&](u32 xs, u32 ws, u32) {
-      PrimitiveRecord r = block_record(Kind::Fill, {}, xs, ys, ws, hs);
-      r.base[0] = pixel;
-      add(r, nullptr, 0);
+      gl_.Scissor(static_cast<GLint>(xs) * n, static_cast<GLint>(ys) * n, static_cast<GLsizei>(ws) * n,
+                  static_cast<GLsizei>(hs) * n);
+      gl_.ClearBufferuiv(GL_COLOR, 0, value);
+      mark_stale({static_cast<s32>(xs), static_cast<s32>(ys), static_cast<s32>(xs + ws), static_cast<s32>(ys + hs)});
     });
   });
+  gl_.Disable(GL_SCISSOR_TEST);
+  native_valid_ = false;
 }
 
 // `rows` rows of a GP0(80) copy: reads the source (and the destination when the mask is

@@ -146,13 +146,12 @@ void main() {
   uint dst = (check || semi) ? texelFetch(u_vram, s, 0).r : 0u;
   if (check && (dst & 0x8000u) != 0u) discard;
 
-  if (kind == 3) { o_pixel = uint(v_base.x); return; }
-  if (kind == 4) {
+  if (kind == 3) {
     ivec2 src = (v_ab.xy + ((p - v_ab.zw) & ivec2(1023, 511))) & ivec2(1023, 511);
     o_pixel = texelFetch(u_vram, src * u_scale + f, 0).r | mask_or;
     return;
   }
-  if (kind == 5) { o_pixel = texelFetch(u_staging, p, 0).r | mask_or; return; }
+  if (kind == 4) { o_pixel = texelFetch(u_staging, p, 0).r | mask_or; return; }
 
   ivec3 colour;
   int u = 0, v = 0, d = 0;

@@ -1,5 +1,5 @@
-// The OpenGL renderer's two shader programs: "draw" runs every VRAM-writing operation (polygons,
-// rectangles, lines, fills, VRAM copies, CPU uploads) with the PlayStation's per-pixel rules,
+// The OpenGL renderer's shader programs: "draw" runs every VRAM-writing operation but fills
+// (polygons, rectangles, lines, VRAM copies, CPU uploads) with the PlayStation's per-pixel rules,
 // and "downsample" reduces the scaled VRAM to 1024x512 for read-back. Sources are in
 // gl_shaders.cpp; the per-primitive record they read is PrimitiveRecord.
 #pragma once
@@ -11,7 +11,7 @@
 namespace psx::gpu::gl {
 
 // What the draw program draws for one record (flags bits 0-2).
-enum class Kind : u32 { Triangle = 0, Rectangle = 1, Line = 2, Fill = 3, Copy = 4, Upload = 5 };
+enum class Kind : u32 { Triangle = 0, Rectangle = 1, Line = 2, Copy = 3, Upload = 4 };
 
 // Flags bits above the kind.
 namespace flag {

@@ -1,8 +1,6 @@
 // --renderer and --scale (renderer_option.h).
 #include "cli/renderer_option.h"
 
-#include <cstdlib>
-
 #include "gpu/gl/gl_renderer.h"
 #include "gpu/gl/osmesa_context.h"
 
@@ -30,10 +28,8 @@ int RendererArgs::render_scale(int default_scale) const {
 
 bool RendererArgs::apply(psx::Console& console, int default_scale, std::string& error) const {
   if (renderer != "gl") return true;
-  const char* library = std::getenv("PSXRL_OSMESA_LIBRARY");
   auto r = psx::gpu::gl::make_osmesa_renderer(static_cast<psx::u32>(render_scale(default_scale)),
-                                              library && *library ? library : psx::gpu::gl::OsMesaContext::kDefaultLibrary,
-                                              error);
+                                              psx::gpu::gl::OsMesaContext::library_from_environment(), error);
   if (!r) {
     error = "--renderer gl: OpenGL is not available: " + error +
             " (install libosmesa6, or use --renderer software)";

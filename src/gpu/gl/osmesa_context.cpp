@@ -4,6 +4,7 @@
 
 #include <dlfcn.h>
 
+#include <cstdlib>
 #include <type_traits>
 
 namespace psx::gpu::gl {
@@ -22,6 +23,11 @@ struct OsMesaContext::Api {
   void* (*get_current_context)() = nullptr;
   void* (*get_proc_address)(const char* name) = nullptr;
 };
+
+std::string OsMesaContext::library_from_environment() {
+  const char* library = std::getenv("PSXRL_OSMESA_LIBRARY");
+  return library && *library ? library : kDefaultLibrary;
+}
 
 std::unique_ptr<OsMesaContext> OsMesaContext::create(const std::string& library, std::string& error) {
   std::unique_ptr<OsMesaContext> c(new OsMesaContext());

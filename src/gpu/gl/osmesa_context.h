@@ -14,6 +14,10 @@ class OsMesaContext final : public GlContext {
   // The Debian package libosmesa6 installs this soname.
   static constexpr const char* kDefaultLibrary = "libOSMesa.so.8";
 
+  // PSXRL_OSMESA_LIBRARY when set (another Mesa build, or a missing file to test the fallback),
+  // else kDefaultLibrary.
+  static std::string library_from_environment();
+
   // Loads `library` and creates a 3.3 core context; null with `error` set when either fails.
   static std::unique_ptr<OsMesaContext> create(const std::string& library, std::string& error);
   ~OsMesaContext() override;

@@ -195,9 +195,10 @@ int play_command(const std::vector<std::string>& args) {
     if (p.level < 1 || p.level > l.env->game().level_count)
       throw std::invalid_argument("game '" + l.env->game().name + "' has levels 1 to " +
                                   std::to_string(l.env->game().level_count) + ", not " + std::to_string(p.level));
-    // The OpenGL renderer draws at --scale (default 2, the window's default); the window then
-    // shows its larger picture as is.
-    if (std::string error; !p.render.apply(l.env->console(), p.view.scale ? p.view.scale : 2, error))
+    // The OpenGL renderer draws at --scale (default 2, the window's default), on SDL2's OpenGL
+    // where there is a display; the window then shows its larger picture as is.
+    const bool display = !p.headless && frontend::display_problem().empty();
+    if (std::string error; !p.render.apply(l.env->console(), p.view.scale ? p.view.scale : 2, error, display))
       throw std::runtime_error(error);
     if (p.render.renderer == "gl") p.view.scale = 1;
     view = open_view(p, *l.env);

@@ -1,6 +1,9 @@
 // --renderer and --scale (renderer_option.h).
 #include "cli/renderer_option.h"
 
+#include <cstdio>
+
+#include "frontend/sdl_gl_context.h"
 #include "gpu/gl/gl_renderer.h"
 #include "gpu/gl/osmesa_context.h"
 
@@ -26,10 +29,21 @@ int RendererArgs::render_scale(int default_scale) const {
   return scale ? scale : default_scale;
 }
 
-bool RendererArgs::apply(psx::Console& console, int default_scale, std::string& error) const {
+bool RendererArgs::apply(psx::Console& console, int default_scale, std::string& error, bool display) const {
   if (renderer != "gl") return true;
-  auto r = psx::gpu::gl::make_osmesa_renderer(static_cast<psx::u32>(render_scale(default_scale)),
-                                              psx::gpu::gl::OsMesaContext::library_from_environment(), error);
+  const auto scale = static_cast<psx::u32>(render_scale(default_scale));
+  if (display) {
+    std::unique_ptr<psx::gpu::gl::GlRenderer> r;
+    if (auto context = frontend::SdlGlContext::create(error))
+      r = psx::gpu::gl::GlRenderer::create(std::move(context), scale, error);
+    if (r) {
+      console.set_renderer(std::move(r));
+      return true;
+    }
+    std::fprintf(stderr, "psxrl: SDL2 OpenGL unusable (%s): drawing with OSMesa\n", error.c_str());
+    error.clear();
+  }
+  auto r = psx::gpu::gl::make_osmesa_renderer(scale, psx::gpu::gl::OsMesaContext::library_from_environment(), error);
   if (!r) {
     error = "--renderer gl: OpenGL is not available: " + error +
             " (install libosmesa6, or use --renderer software)";

@@ -1,6 +1,7 @@
 // --renderer software|gl and --scale for psxrl run and play: which GPU backend draws, and at
 // what multiple of the native resolution the OpenGL one draws. The OpenGL renderer runs on
-// OSMesa (headless); its library is libOSMesa.so.8 unless PSXRL_OSMESA_LIBRARY names another.
+// OSMesa (headless; libOSMesa.so.8 unless PSXRL_OSMESA_LIBRARY names another), or on SDL2's
+// OpenGL context (the desktop's driver) when play opens its window.
 #pragma once
 #include <string>
 
@@ -21,7 +22,8 @@ struct RendererArgs {
   // The OpenGL renderer's scale (--scale, default `default_scale`); 1 for software.
   int render_scale(int default_scale) const;
   // Installs the chosen renderer in `console`; false with `error` set when OpenGL is unavailable.
-  bool apply(psx::Console& console, int default_scale, std::string& error) const;
+  // With `display`, SDL2's OpenGL is tried first and OSMesa is the fallback.
+  bool apply(psx::Console& console, int default_scale, std::string& error, bool display = false) const;
 };
 
 }  // namespace psxrl::cli

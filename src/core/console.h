@@ -136,9 +136,9 @@ class Console : private CpuHooks {
   void restore(const Snapshot& snap);
 
   // Video and audio for the host, without per-pixel copies. The frame is the displayed area as
-  // RGB888 at its real size (e.g. 320x240) times the renderer's scale, refreshed at each VBlank; the VRAM view is the GPU's
-  // 1024x512 16-bit memory. take_audio() hands over the 44.1 kHz stereo samples produced since
-  // the last call by swapping buffers.
+  // RGB888 at its real size (e.g. 320x240) times the renderer's scale, refreshed at each VBlank;
+  // the VRAM view is the GPU's 1024x512 16-bit memory. take_audio() hands over the 44.1 kHz
+  // stereo samples produced since the last call by swapping buffers.
   struct Frame {
     const u8* rgb;
     u32 width;

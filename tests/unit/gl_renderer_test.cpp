@@ -101,12 +101,13 @@ void random_operation(Rng& rng, Renderer& a, Renderer& b) {
     case 2: {
       Rectangle r;
       r.x = cx - 20, r.y = cy - 20, r.width = rng.below(80), r.height = rng.below(80);
-      r.r = static_cast<u8>(rng.below(256)), r.g = static_cast<u8>(rng.below(256)), r.b = static_cast<u8>(rng.below(256));
+      r.r = static_cast<u8>(rng.below(256)), r.g = static_cast<u8>(rng.below(256));
+      r.b = static_cast<u8>(rng.below(256));
       r.u = static_cast<u8>(rng.below(256)), r.v = static_cast<u8>(rng.below(256));
       r.clut_x = static_cast<u16>(rng.below(64) * 16), r.clut_y = static_cast<u16>(rng.below(512));
       r.textured = rng.below(2), r.raw = rng.below(3) == 0, r.semi = rng.below(3) == 0;
-      if (samples_itself(ds, r.clut_x, r.clut_y, r.x, r.y, r.x + static_cast<s32>(r.width), r.y + static_cast<s32>(r.height)))
-        r.textured = false;
+      const s32 right = r.x + static_cast<s32>(r.width), bottom = r.y + static_cast<s32>(r.height);
+      if (samples_itself(ds, r.clut_x, r.clut_y, r.x, r.y, right, bottom)) r.textured = false;
       a.draw_rectangle(r, ds), b.draw_rectangle(r, ds);
       break;
     }

@@ -11,7 +11,6 @@
 namespace psx::gpu::gl {
 
 #define PSXRL_GL_FUNCTIONS(X)                                                                      \
-  X(PFNGLGETSTRINGPROC, GetString)                                                                 \
   X(PFNGLGETERRORPROC, GetError)                                                                   \
   X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                             \
   X(PFNGLVIEWPORTPROC, Viewport)                                                                   \
@@ -19,7 +18,6 @@ namespace psx::gpu::gl {
   X(PFNGLENABLEPROC, Enable)                                                                       \
   X(PFNGLSCISSORPROC, Scissor)                                                                     \
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                                                             \
-  X(PFNGLFINISHPROC, Finish)                                                                       \
   X(PFNGLGENTEXTURESPROC, GenTextures)                                                             \
   X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                                       \
   X(PFNGLBINDTEXTUREPROC, BindTexture)                                                             \
@@ -34,7 +32,6 @@ namespace psx::gpu::gl {
   X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)                                       \
   X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                                                     \
   X(PFNGLCLEARBUFFERUIVPROC, ClearBufferuiv)                                                       \
-  X(PFNGLREADBUFFERPROC, ReadBuffer)                                                               \
   X(PFNGLREADPIXELSPROC, ReadPixels)                                                               \
   X(PFNGLCREATESHADERPROC, CreateShader)                                                           \
   X(PFNGLDELETESHADERPROC, DeleteShader)                                                           \

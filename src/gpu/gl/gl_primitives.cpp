@@ -42,11 +42,9 @@ bool clip_box(PrimitiveRecord& r, s32 x0, s32 y0, s32 x1, s32 y1, const DrawStat
   return r.bbox[0] < r.bbox[2] && r.bbox[1] < r.bbox[3];
 }
 
-}  // namespace
-
 // The areas a primitive reads: its texture page and CLUT, and its own box when it blends or
 // checks the mask bit. Returns how many were written to `reads` (at most 3).
-static u32 primitive_reads(const PrimitiveRecord& r, int tex, u32 clut_x, u32 clut_y, bool reads_back, u32 px,
+u32 primitive_reads(const PrimitiveRecord& r, int tex, u32 clut_x, u32 clut_y, bool reads_back, u32 px,
                            u32 py, Rect* reads) {
   u32 n = 0;
   static constexpr s32 kPageWidth[4] = {0, 64, 128, 256};
@@ -58,6 +56,8 @@ static u32 primitive_reads(const PrimitiveRecord& r, int tex, u32 clut_x, u32 cl
   if (reads_back) reads[n++] = {r.bbox[0], r.bbox[1], r.bbox[2], r.bbox[3]};
   return n;
 }
+
+}  // namespace
 
 void GlRenderer::draw_triangle(const Triangle& t, const DrawState& ds) {
   const Vertex* p[3] = {&t.v[0], &t.v[1], &t.v[2]};

@@ -124,15 +124,19 @@ static void for_each_wrapped(s32 x, s32 y, s32 w, s32 h, Fn fn) {
     }
 }
 
-void GlRenderer::mark_stale(const Rect& r) {
+// The stale-grid bits of the cell columns a rectangle touches.
+static u64 cell_columns(const Rect& r) {
   const s32 cx0 = r.x0 / kCell, cx1 = (r.x1 - 1) / kCell;
-  const u64 bits = (cx1 - cx0 == 63 ? ~u64{0} : ((u64{1} << (cx1 - cx0 + 1)) - 1)) << cx0;
+  return (cx1 - cx0 == 63 ? ~u64{0} : ((u64{1} << (cx1 - cx0 + 1)) - 1)) << cx0;
+}
+
+void GlRenderer::mark_stale(const Rect& r) {
+  const u64 bits = cell_columns(r);
   for (s32 cy = r.y0 / kCell; cy <= (r.y1 - 1) / kCell; ++cy) stale_[cy] |= bits;
 }
 
 bool GlRenderer::any_stale(const Rect& r) const {
-  const s32 cx0 = r.x0 / kCell, cx1 = (r.x1 - 1) / kCell;
-  const u64 bits = (cx1 - cx0 == 63 ? ~u64{0} : ((u64{1} << (cx1 - cx0 + 1)) - 1)) << cx0;
+  const u64 bits = cell_columns(r);
   for (s32 cy = r.y0 / kCell; cy <= (r.y1 - 1) / kCell; ++cy)
     if (stale_[cy] & bits) return true;
   return false;
@@ -143,7 +147,7 @@ void GlRenderer::sync(const Rect& area) {
   if (!any_stale(area)) return;
   flush();
   const s32 cx0 = area.x0 / kCell, cx1 = (area.x1 - 1) / kCell;
-  const u64 bits = (cx1 - cx0 == 63 ? ~u64{0} : ((u64{1} << (cx1 - cx0 + 1)) - 1)) << cx0;
+  const u64 bits = cell_columns(area);
   const s32 n = static_cast<s32>(scale_);
   const s32 x0 = cx0 * kCell * n, x1 = (cx1 + 1) * kCell * n;
   const s32 y0 = (area.y0 / kCell) * kCell * n, y1 = ((area.y1 - 1) / kCell + 1) * kCell * n;

@@ -2,8 +2,9 @@
 // and the software rasterizers rule for rule, in integer arithmetic: at scale 1 every fragment
 // is one native pixel and the results are the software renderer's; at scale N a fragment is the
 // sub-pixel whose top-left corner is the sample point (x / N, y / N), so the sub-pixel at (0, 0)
-// of each N x N block is exactly the native sample. Primitives are drawn as their clipped
-// bounding boxes; coverage (the top-left fill rule, the line stepping) is decided per fragment.
+// of each N x N block is exactly the native sample. Records are drawn as clipped boxes (triangles
+// as grown triangles); coverage (the top-left fill rule, the line stepping) is decided per
+// fragment.
 #include "gpu/gl/gl_shaders.h"
 
 #include <cstdio>

@@ -43,7 +43,7 @@ bool GlRenderer::init(std::string& error) {
   }
   if (!build_programs(gl_, programs_, error)) return false;
   // One variant now, so that a compiler problem is reported here rather than at the first draw.
-  if (!draw_variant(gl_, 0, variants_[0], error)) return false;
+  if (!draw_variant(gl_, 0, scale_, variants_[0], error)) return false;
 
   const GLsizei w = static_cast<GLsizei>(kVramWidth * scale_), h = static_cast<GLsizei>(kVramHeight * scale_);
   auto texture = [&](GLuint& tex, GLsizei tw, GLsizei th) {
@@ -180,7 +180,7 @@ const DrawProgram& GlRenderer::program(u32 variant) const {
   if (!p.program) {
     std::string error;
     // Every variant is the same source with other constants, and variant 0 compiled at set-up.
-    if (!draw_variant(gl_, variant, p, error)) throw std::runtime_error("OpenGL renderer: " + error);
+    if (!draw_variant(gl_, variant, scale_, p, error)) throw std::runtime_error("OpenGL renderer: " + error);
   }
   return p;
 }
@@ -205,7 +205,6 @@ void GlRenderer::flush() const {
     const u32 end = i + 1 < runs_.size() ? runs_[i + 1].first : static_cast<u32>(batch_.size());
     const DrawProgram& p = program(variant);
     gl.UseProgram(p.program);
-    gl.Uniform1i(p.scale, static_cast<GLint>(scale_));
     for (GLuint a = 0; a < kRecordVec4s; ++a)
       gl.VertexAttribIPointer(a, 4, GL_INT, sizeof(PrimitiveRecord),
                               reinterpret_cast<const void*>(size_t{first} * sizeof(PrimitiveRecord) + size_t{a} * 16));

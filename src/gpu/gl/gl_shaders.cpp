@@ -55,13 +55,13 @@ void main() {
 }
 )";
 
-// Compiled once per variant: KIND, TEX, RAW, SEMI and CHECK are #defined in front (see
-// draw_variant), so each program is straight-line code for one kind of record; llvmpipe runs
+// Compiled once per variant: KIND, TEX, RAW, SEMI, CHECK and the renderer's SCALE are #defined
+// in front (see draw_variant), so each program is straight-line code for one kind of record; llvmpipe runs
 // every branch of a shader for every fragment, which made one program for all kinds slow.
 const char* kDrawFragment = R"(
 uniform usampler2D u_vram;     // the snapshot of scaled VRAM that reads see
 uniform usampler2D u_staging;  // native 1024x512, CPU->VRAM rows
-uniform int u_scale;
+const int u_scale = SCALE;     // a constant: divisions by it become multiplications
 flat in ivec4 v_bbox, v_state, v_ab, v_c, v_base, v_g0, v_g1, v_g2;
 out uint o_pixel;
 
@@ -269,15 +269,14 @@ u32 variant_of(s32 flags) {
   return (f & 0x3F) | ((f & flag::kSemi) ? 0x40 : 0) | ((f & flag::kCheckMask) ? 0x80 : 0);
 }
 
-bool draw_variant(const GlFunctions& gl, u32 variant, DrawProgram& out, std::string& error) {
-  char defines[160];
+bool draw_variant(const GlFunctions& gl, u32 variant, u32 scale, DrawProgram& out, std::string& error) {
+  char defines[192];
   std::snprintf(defines, sizeof defines, "#version 330 core\n#define KIND %u\n#define TEX %u\n#define RAW %u\n"
-                "#define SEMI %u\n#define CHECK %u\n", variant & 7, (variant >> 3) & 3, (variant >> 5) & 1,
-                (variant >> 6) & 1, (variant >> 7) & 1);
+                "#define SEMI %u\n#define CHECK %u\n#define SCALE %u\n", variant & 7, (variant >> 3) & 3,
+                (variant >> 5) & 1, (variant >> 6) & 1, (variant >> 7) & 1, scale);
   const std::string fragment = std::string(defines) + kDrawFragment;
   out.program = link(gl, kDrawVertex, fragment.c_str(), error);
   if (!out.program) return false;
-  out.scale = gl.GetUniformLocation(out.program, "u_scale");
   gl.UseProgram(out.program);
   gl.Uniform1i(gl.GetUniformLocation(out.program, "u_vram"), 0);
   gl.Uniform1i(gl.GetUniformLocation(out.program, "u_staging"), 1);

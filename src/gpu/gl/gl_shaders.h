@@ -57,9 +57,8 @@ u32 variant_of(s32 flags);
 
 struct DrawProgram {
   GLuint program = 0;
-  GLint scale = -1;
 };
-// Compiles and links one variant of the draw program.
-bool draw_variant(const GlFunctions& gl, u32 variant, DrawProgram& out, std::string& error);
+// Compiles and links one variant of the draw program for a renderer at `scale`.
+bool draw_variant(const GlFunctions& gl, u32 variant, u32 scale, DrawProgram& out, std::string& error);
 
 }  // namespace psx::gpu::gl

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/play_view.h"
+#include "cli/renderer_option.h"
 #include "rl/env.h"
 
 namespace psxrl::cli {
@@ -17,6 +18,7 @@ struct PlayOptions {
   std::optional<std::uint32_t> max_moves;
   bool headless = false;
   ViewOptions view;
+  RendererArgs render;  // --renderer; with gl, --scale (view.scale) is the drawing scale
 };
 
 // Prints one episode's line: "episode N: score S, OUTCOME, M moves, F frames" (human play has

@@ -14,6 +14,7 @@
 #include "cli/play.h"
 #include "core/console.h"
 #include "core/input_error.h"
+#include "gpu/gl/gl_renderer.h"
 #include "frontend/keymap.h"
 #include "rl/agents/trainer.h"
 #include "rl/vec_env.h"
@@ -126,8 +127,11 @@ void add_play_options(CLI::App& app, PlayOptions& p) {
       ->type_name("OUT");
   app.add_option("--record-every", v.record_every, "record 1 picture in N frames (default 1)")->type_name("N");
   app.add_option("--frames", v.max_frames, "stop after N emulated frames shown (default: no limit)")->type_name("N");
-  app.add_option("--scale", v.scale, "window height in multiples of the picture's (default 2 below 400 lines)")
+  app.add_option("--scale", v.scale,
+                 "window height in multiples of the picture's (default 2 below 400 lines); with\n"
+                 "--renderer gl the picture is drawn at that multiple (1 to 8) and shown as is")
       ->type_name("K");
+  p.render.add_to(app, nullptr);
   app.add_option("--window-screenshot", v.window_screenshot, "at the end, save the window's last picture as PNG")
       ->type_name("FILE");
   app.add_option("--frames-dir", p.frames_dir, "with --policy: the picture after the reset and every move as PNG")
@@ -138,6 +142,9 @@ void add_play_options(CLI::App& app, PlayOptions& p) {
 std::string check_options(const PlayOptions& p) {
   if (p.view.record_every < 1) return "--record-every must be at least 1";
   if (p.view.scale < 0) return "--scale must be at least 1";
+  if (std::string why = p.render.check(); !why.empty()) return why;
+  if (p.render.renderer == "gl" && p.view.scale > static_cast<int>(psx::gpu::gl::kMaxScale))
+    return "--scale must be 1 to 8 with --renderer gl";
   if (p.policy.empty() && p.headless) return "human play (no --policy) needs the window: drop --headless";
   if (p.policy.empty() && !p.frames_dir.empty()) return "--frames-dir counts a policy's moves: use --record DIR";
   return "";
@@ -188,6 +195,12 @@ int play_command(const std::vector<std::string>& args) {
     if (p.level < 1 || p.level > l.env->game().level_count)
       throw std::invalid_argument("game '" + l.env->game().name + "' has levels 1 to " +
                                   std::to_string(l.env->game().level_count) + ", not " + std::to_string(p.level));
+    // The OpenGL renderer draws at --scale (default 2, the window's default), on SDL2's OpenGL
+    // where there is a display; the window then shows its larger picture as is.
+    const bool display = !p.headless && frontend::display_problem().empty();
+    if (std::string error; !p.render.apply(l.env->console(), p.view.scale ? p.view.scale : 2, error, display))
+      throw std::runtime_error(error);
+    if (p.render.renderer == "gl") p.view.scale = 1;
     view = open_view(p, *l.env);
   } catch (const std::exception& e) {  // the policy, names, game files, output folders, no window
     std::fprintf(stderr, "psxrl play: %s\n", e.what());

@@ -13,6 +13,7 @@
 #include "cli/input_script.h"
 #include "cli/options.h"
 #include "cli/pacer.h"
+#include "cli/renderer_option.h"
 #include "cli/run_summary.h"
 #include "core/console.h"
 
@@ -27,7 +28,7 @@ const char* kRunFooter =
     "  the program's own exit code (written to 0x1F802082; values above 255 exit as 255)\n"
     "  0  the limit was reached (without --expect-exit)\n"
     "  1  usage error\n"
-    "  2  bad input file\n"
+    "  2  bad input file, or --renderer gl without a working OpenGL (OSMesa)\n"
     "  3  the program failed (fatal guest error) or timed out under --expect-exit\n";
 
 // What each option's value must be, for the message when it is missing.
@@ -36,7 +37,7 @@ const std::map<std::string, std::string> kRunNeeds = {
     {"--cycles", "a positive whole number"}, {"--screenshot", "a file"}, {"--vram", "a file"},
     {"--wav", "a file"}, {"--input", "a file"}, {"--screenshot-at", "a frame number and a file"},
     {"--pad1", "digital, dualshock or none"}, {"--pad2", "digital, dualshock or none"},
-    {"--memcard1", "a file"}, {"--memcard2", "a file"}};
+    {"--memcard1", "a file"}, {"--memcard2", "a file"}, {"--renderer", "software or gl"}, {"--scale", "1 to 8"}};
 
 bool parse_count(const std::string& s, unsigned long long& out) {
   if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos) return false;
@@ -87,6 +88,7 @@ struct RunArgs {
   std::string memcards[2];
   std::vector<std::pair<std::string, std::string>> shot_args;
   bool expect_exit = false, quiet = false, realtime = false, no_idle_skip = false;
+  RendererArgs render;
 
   void add_to(CLI::App& app) {
     app.add_option("--exe", exe, "PS-X EXE to run")->type_name("FILE");
@@ -118,6 +120,8 @@ struct RunArgs {
                    "repeatable; needs --frames above FRAME")
         ->type_name("FRAME FILE")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    render.add_to(app, "with --renderer gl: draw at N times the resolution, 1 to 8 (default 1); screenshots\n"
+                       "are N times larger, --vram stays 1024x512");
   }
 };
 
@@ -149,6 +153,7 @@ int run_command(const std::vector<std::string>& args) {
     shots.push_back(shot);
   }
   auto usage = [&](const std::string& msg) { return usage_error(app, msg); };
+  if (std::string why = a.render.check(); !why.empty()) return usage(why);
   if (exe.empty() && disc.empty() && bios.empty())
     return usage("--exe is required (or --disc to boot a disc, or --bios to start the BIOS alone)");
   const bool scripted = !input_path.empty() || !shots.empty() || realtime;
@@ -160,6 +165,10 @@ int run_command(const std::vector<std::string>& args) {
   std::vector<InputPress> presses;
 
   psx::Console console;
+  if (std::string error; !a.render.apply(console, 1, error)) {
+    std::fprintf(stderr, "psxrl run: %s\n", error.c_str());
+    return kBadInput;
+  }
   console.set_idle_skip(!a.no_idle_skip);
   console.on_tty = [](char c) { std::fputc(c, stdout); };
   console.on_log = [quiet](const std::string& m) {

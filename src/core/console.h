@@ -136,15 +136,24 @@ class Console : private CpuHooks {
   void restore(const Snapshot& snap);
 
   // Video and audio for the host, without per-pixel copies. The frame is the displayed area as
-  // RGB888 at its real size (e.g. 320x240), refreshed at each VBlank; the VRAM view is the GPU's
-  // 1024x512 16-bit memory. take_audio() hands over the 44.1 kHz stereo samples produced since
-  // the last call by swapping buffers.
+  // RGB888 at its real size (e.g. 320x240) times the renderer's scale, refreshed at each VBlank;
+  // the VRAM view is the GPU's 1024x512 16-bit memory. take_audio() hands over the 44.1 kHz
+  // stereo samples produced since the last call by swapping buffers.
   struct Frame {
     const u8* rgb;
     u32 width;
     u32 height;
   };
+  // The GPU's drawing backend: the software renderer unless replaced (e.g. by the OpenGL one,
+  // gpu/gl/gl_renderer.h, whose frames are `scale` times larger). VRAM carries over.
+  void set_renderer(std::unique_ptr<gpu::Renderer> renderer) { gpu_.set_renderer(std::move(renderer)); }
   Frame frame() const { return {gpu_.display_rgb(), gpu_.display_width(), gpu_.display_height()}; }
+  // The same picture at its native size whatever the renderer (observations use this one, so
+  // that they do not depend on the renderer or its scale).
+  Frame native_frame() const {
+    const gpu::FrameOutput& d = gpu_.display();
+    return {d.native_rgb(), d.native_width(), d.native_height()};
+  }
   const u16* vram() const { return gpu_.vram(); }
   static constexpr u32 kVramWidth = 1024, kVramHeight = 512;
   void take_audio(std::vector<StereoSample>& out) { spu_.take_samples(out); }

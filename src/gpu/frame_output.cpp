@@ -41,6 +41,35 @@ void FrameOutput::refresh(const u16* vram, const DisplayArea& area) {
   }
 }
 
+void FrameOutput::refresh(const Renderer& renderer, const DisplayArea& area) {
+  scale_ = renderer.scale();
+  if (scale_ == 1 || !area.enabled || area.rgb24) {
+    refresh(renderer.vram(), area);
+    if (scale_ > 1) enlarge();
+    return;
+  }
+  width_ = std::clamp<u32>(area.width, 1, kMaxWidth);
+  height_ = std::clamp<u32>(area.height, 1, kMaxHeight);
+  const u32 w = width_ * scale_, h = height_ * scale_;
+  scaled_vram_.resize(size_t{w} * h);
+  renderer.read_scaled(area.x, area.y, width_, height_, scaled_vram_.data());
+  scaled_.resize(size_t{w} * h * 3);
+  for (size_t i = 0; i < scaled_vram_.size(); ++i) put15(&scaled_[i * 3], scaled_vram_[i]);
+  // The native picture is each block's top-left sub-pixel, as the renderer's vram() has it.
+  for (u32 row = 0; row < height_; ++row)
+    for (u32 col = 0; col < width_; ++col)
+      put15(&rgb_[(size_t{row} * width_ + col) * 3], scaled_vram_[size_t{row} * scale_ * w + size_t{col} * scale_]);
+}
+
+// The scaled picture as the native one with each pixel repeated scale_ x scale_ times.
+void FrameOutput::enlarge() {
+  const u32 w = width_ * scale_;
+  scaled_.resize(size_t{w} * height_ * scale_ * 3);
+  for (u32 row = 0; row < height_ * scale_; ++row)
+    for (u32 col = 0; col < w; ++col)
+      std::memcpy(&scaled_[(size_t{row} * w + col) * 3], &rgb_[(size_t{row / scale_} * width_ + col / scale_) * 3], 3);
+}
+
 void FrameOutput::vram_to_rgb(const u16* vram, u8* out) {
   for (u32 i = 0; i < kVramPixels; ++i) put15(out + i * 3, vram[i]);
 }
@@ -52,6 +81,7 @@ void FrameOutput::do_state(StateIO& s) {
   if (s.loading() && (width_ == 0 || width_ > kMaxWidth || height_ == 0 || height_ > kMaxHeight))
     s.fail("display output size " + std::to_string(width_) + "x" + std::to_string(height_) + " out of range");
   s.bytes(rgb_.data(), size_t{width_} * height_ * 3);
+  if (s.loading() && scale_ > 1) enlarge();
   s.end_section("GPUO");
 }
 

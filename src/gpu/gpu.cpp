@@ -186,8 +186,14 @@ gpu::DisplayArea Gpu::display_area() const {
   return a;
 }
 
+void Gpu::set_renderer(std::unique_ptr<gpu::Renderer> renderer) {
+  renderer->load_vram(renderer_->vram());
+  renderer_ = std::move(renderer);
+  output_.refresh(*renderer_, display_area());
+}
+
 void Gpu::vblank_started() {
-  output_.refresh(renderer_->vram(), display_area());
+  output_.refresh(*renderer_, display_area());
   irq_.raise(Irq::VBlank);
   if (on_vblank) on_vblank();
 }
@@ -201,7 +207,7 @@ const u8* Gpu::vram_rgb() {
 // Converts the display area as VRAM holds it now (a program may have drawn since the last VBlank).
 bool Gpu::write_display_png(const std::string& path, std::string& error) const {
   gpu::FrameOutput now;
-  now.refresh(renderer_->vram(), display_area());
+  now.refresh(*renderer_, display_area());
   return gpu::write_png_rgb(path, now.rgb(), now.width(), now.height(), error);
 }
 

@@ -38,14 +38,19 @@ class Gpu final : public IoDevice, public DmaPort {
   u32 gpuread();
   u32 gpustat() const;
 
+  // Replaces the drawing backend (the software renderer by default), handing VRAM over.
+  void set_renderer(std::unique_ptr<gpu::Renderer> renderer);
+  const gpu::Renderer& renderer() const { return *renderer_; }
+
   void set_video_signals(VideoSignals* signals) { timing_.set_signals(signals); }
   // Called at the start of each VBlank, after the display buffer was refreshed.
   std::function<void()> on_vblank;
 
-  // The displayed picture as RGB888, refreshed at each VBlank.
+  // The displayed picture as RGB888 at the renderer's scale, refreshed at each VBlank.
   const u8* display_rgb() const { return output_.rgb(); }
   u32 display_width() const { return output_.width(); }
   u32 display_height() const { return output_.height(); }
+  const gpu::FrameOutput& display() const { return output_; }
   const u16* vram() const { return renderer_->vram(); }
   // The whole VRAM as 1024x512 RGB888, converted on each call.
   const u8* vram_rgb();

@@ -5,6 +5,7 @@
 // per pixel.
 #pragma once
 #include "core/types.h"
+#include "gpu/vram.h"
 
 namespace psx::gpu {
 
@@ -86,6 +87,13 @@ class Renderer {
   virtual const u16* vram() const = 0;
   // Replaces all of VRAM (save-state load, reset tests).
   virtual void load_vram(const u16* pixels) = 0;
+
+  // A backend may draw at a multiple of the native resolution (the OpenGL one, 1 to 8); vram()
+  // is still the native contents (each N x N block's top-left sub-pixel, the native sample).
+  virtual u32 scale() const { return 1; }
+  // The native rectangle (x, y, width, height), wrapping at the VRAM edges, at the internal
+  // resolution: (width * scale) x (height * scale) pixels into `out`, row by row.
+  virtual void read_scaled(u32 x, u32 y, u32 width, u32 height, u16* out) const;
 };
 
 }  // namespace psx::gpu

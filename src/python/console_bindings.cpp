@@ -9,6 +9,8 @@
 
 #include "core/console.h"
 #include "core/sio/pad_names.h"
+#include "gpu/gl/gl_renderer.h"
+#include "gpu/gl/osmesa_context.h"
 #include "python/bindings.h"
 
 namespace py = pybind11;
@@ -21,8 +23,20 @@ namespace {
 struct PyConsole {
   psx::Console console;
   std::string tty;
-  PyConsole() {
+  PyConsole(const std::string& renderer, psx::u32 scale) {
     console.on_tty = [this](char c) { tty.push_back(c); };
+    if (renderer != "software" && renderer != "gl")
+      throw py::value_error("renderer: 'software' or 'gl', not '" + renderer + "'");
+    if (scale < 1 || scale > psx::gpu::gl::kMaxScale)
+      throw py::value_error("scale: 1 to " + std::to_string(psx::gpu::gl::kMaxScale) + ", not " + std::to_string(scale));
+    if (renderer == "software") {
+      if (scale != 1) throw py::value_error("scale: the software renderer draws at 1; use renderer='gl'");
+      return;
+    }
+    std::string error;
+    auto r = psx::gpu::gl::make_osmesa_renderer(scale, psx::gpu::gl::OsMesaContext::library_from_environment(), error);
+    if (!r) throw std::runtime_error("renderer 'gl': OpenGL is not available: " + error);
+    console.set_renderer(std::move(r));
   }
 };
 
@@ -115,7 +129,9 @@ void bind_console(py::module_& m) {
 
   using R = py::gil_scoped_release;
   py::class_<PyConsole>(m, "Console", "One emulated PlayStation (docs/python.md).")
-      .def(py::init<>())
+      .def(py::init<const std::string&, psx::u32>(), py::arg("renderer") = "software", py::arg("scale") = 1,
+           "renderer='gl' draws with OpenGL on OSMesa at `scale` (1 to 8) times the resolution: get_screen() and "
+           "screenshots are that much larger; vram() and states stay native (docs/renderer.md).")
       // Booting (these run the BIOS or read files: the GIL is released).
       .def("load_bios", [](PyConsole& c, const std::string& path) { c.console.load_bios(path); },
            py::arg("path"), py::call_guard<R>())

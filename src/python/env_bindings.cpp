@@ -46,6 +46,8 @@ rl::EnvConfig config_from(const py::kwargs& kw) {
     else if (key == "max_move_frames") c.max_move_frames = v.cast<std::uint32_t>();
     else if (key == "max_moves") c.max_moves = v.cast<std::uint32_t>();
     else if (key == "sticky") c.sticky = v.cast<double>();
+    else if (key == "renderer") c.renderer = v.cast<std::string>();
+    else if (key == "scale") c.scale = v.cast<std::uint32_t>();
     else throw py::type_error("unexpected keyword argument '" + key + "'");
   }
   return c;

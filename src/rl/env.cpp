@@ -8,6 +8,8 @@
 
 #include "core/console.h"
 #include "core/sha1.h"
+#include "gpu/gl/gl_renderer.h"
+#include "gpu/gl/osmesa_context.h"
 #include "lua/lua_host.h"
 
 #ifndef PSXRL_GAMES_DIR
@@ -71,6 +73,7 @@ Env::Env(const EnvConfig& config) : config_(config) {
     throw psx::InputError::whole(game_.manifest, "[observations.position] or a position() function is needed for '" +
                                                      config_.obs + "'");
   console_ = std::make_unique<psx::Console>();
+  use_renderer();
   boot();
 
   auto space = [&](std::string name, std::vector<std::int64_t> shape, DType d, double lo, double hi) {
@@ -102,6 +105,22 @@ Env::Env(const EnvConfig& config) : config_(config) {
 }
 
 Env::~Env() = default;
+
+// The configured renderer; an unknown name or scale is std::invalid_argument, OpenGL missing a
+// std::runtime_error.
+void Env::use_renderer() {
+  if (config_.renderer == "software" && config_.scale == 1) return;
+  if (config_.renderer != "software" && config_.renderer != "gl")
+    throw std::invalid_argument("renderer: 'software' or 'gl', not '" + config_.renderer + "'");
+  if (config_.scale < 1 || config_.scale > psx::gpu::gl::kMaxScale)
+    throw std::invalid_argument("scale: 1 to 8, not " + std::to_string(config_.scale));
+  if (config_.renderer == "software") throw std::invalid_argument("scale: the software renderer draws at 1; use 'gl'");
+  std::string error;
+  auto r = psx::gpu::gl::make_osmesa_renderer(config_.scale, psx::gpu::gl::OsMesaContext::library_from_environment(),
+                                              error);
+  if (!r) throw std::runtime_error("renderer 'gl': OpenGL is not available: " + error);
+  console_->set_renderer(std::move(r));
+}
 
 void Env::boot() {
   if (game_.needs_bios) {

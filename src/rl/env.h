@@ -47,6 +47,10 @@ struct EnvConfig {
   std::optional<std::uint32_t> initial_delay, delay, max_move_frames, max_moves;
   std::optional<double> sticky;
   std::optional<bool> watch_audio;  // whether sound keeps a move going
+  // The GPU renderer (docs/renderer.md): "software", or "gl" (OSMesa) drawing at `scale` (1-8).
+  // Observations are native-resolution either way; the console's frame (get_screen) is scaled.
+  std::string renderer = "software";
+  std::uint32_t scale = 1;
 };
 
 struct StepInfo {
@@ -126,6 +130,7 @@ class Env {
   std::string outcome() const;
 
  private:
+  void use_renderer();
   void boot();
   void check_disc_identity(const std::string& path);
   std::uint64_t start_level(int level);  // returns the frames it ran

@@ -150,7 +150,7 @@ void Env::encode() {
     out[2] = static_cast<float>(static_cast<double>(moves_) / max_moves_);
   };
   auto visual = [&] {
-    auto f = console_->frame();
+    auto f = console_->native_frame();
     visual_planes(f.rgb, static_cast<int>(f.width), static_cast<int>(f.height), game_.visual_x, game_.visual_y,
                   game_.visual_w, game_.visual_h, game_.visual_out_w, game_.visual_out_h, config_.visual_gray,
                   visual_buf_.data());

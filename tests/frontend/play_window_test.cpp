@@ -62,6 +62,40 @@ TEST(PlayWindow, ShowsTheConsolePictureAtTwiceItsSize) {
   EXPECT_GT(lit, window.width * window.height / 2);
 }
 
+// --renderer gl in the window draws on SDL2's OpenGL (Mesa's GLX under xvfb) at scale 2: the
+// recorded frame and the window are 640x480, and every 2x2 block's top-left pixel is the software
+// renderer's picture (docs/renderer.md, "Scaling").
+TEST(PlayWindow, TheOpenGLRendererDrawsTheWindowAtScale2OnSdlOpenGL) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run (CTest does)";
+  fs::path d = fresh_dir("window_gl");
+  const std::string common = kPsxrl + " play --game tumble --level 1 --frames 90 --record ";
+  auto gl = run(common + (d / "gl").string() + " --renderer gl --scale 2 --window-screenshot " +
+                (d / "window.png").string());
+  ASSERT_EQ(gl.code, 0) << gl.output;
+  EXPECT_EQ(gl.output.find("drawing with OSMesa"), std::string::npos) << gl.output;
+  auto sw = run(common + (d / "sw").string());
+  ASSERT_EQ(sw.code, 0) << sw.output;
+  Image frame = read_png(d / "gl" / "frame000090.png");
+  Image window = read_png(d / "window.png");
+  Image native = read_png(d / "sw" / "frame000090.png");
+  ASSERT_EQ(frame.width, 640u);
+  ASSERT_EQ(frame.height, 480u);
+  ASSERT_EQ(window.width, 640u);
+  ASSERT_EQ(window.height, 480u);
+  size_t window_mismatches = 0, native_mismatches = 0;
+  for (unsigned y = 0; y < frame.height; ++y)
+    for (unsigned x = 0; x < frame.width; ++x) {
+      const unsigned char *f = frame.pixel(x, y), *w = window.pixel(x, y);
+      window_mismatches += f[0] != w[0] || f[1] != w[1] || f[2] != w[2];
+      if (x % 2 == 0 && y % 2 == 0) {
+        const unsigned char* n = native.pixel(x / 2, y / 2);
+        native_mismatches += f[0] != n[0] || f[1] != n[1] || f[2] != n[2];
+      }
+    }
+  EXPECT_EQ(window_mismatches, 0u);
+  EXPECT_EQ(native_mismatches, 0u);
+}
+
 TEST(PlayWindow, RecordsAVideoWhileShowingIt) {
   ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run (CTest does)";
   fs::path d = fresh_dir("window_video");

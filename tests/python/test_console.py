@@ -255,3 +255,31 @@ def test_bad_files_raise_input_error_with_the_message(tmp_path):
     # The core reports an unwritable dump as a runtime error naming the file (docs/python.md).
     with pytest.raises(RuntimeError, match="/nonexistent-dir/ram.bin"):
         c.dump_ram("/nonexistent-dir/ram.bin")
+
+
+def test_gl_renderer_draws_tumble_larger_with_the_same_native_vram():
+    """renderer='gl' (OSMesa): at scale 2 the picture is 640x480, VRAM and RAM equal the
+    software renderer's (docs/renderer.md)."""
+    consoles = [psxrl.Console(), psxrl.Console(renderer="gl", scale=2)]
+    for c in consoles:
+        c.boot_exe(tumble_exe())
+        assert c.run_until_equal(STATE, TITLE, max_frames=600)
+        c.run_frames(30)
+    sw, gl = consoles
+    assert sw.get_screen().shape == (240, 320, 3)
+    assert gl.get_screen().shape == (480, 640, 3)
+    assert np.array_equal(sw.vram(), gl.vram())
+    assert bytes(sw.ram()) == bytes(gl.ram())
+
+
+def test_bad_renderer_arguments_are_refused():
+    with pytest.raises(ValueError, match="'software' or 'gl'"):
+        psxrl.Console(renderer="vulkan")
+    with pytest.raises(ValueError, match="1 to 8"):
+        psxrl.Console(renderer="gl", scale=9)
+
+
+def test_gl_renderer_without_opengl_says_so(monkeypatch):
+    monkeypatch.setenv("PSXRL_OSMESA_LIBRARY", "/nonexistent/libOSMesa.so.8")
+    with pytest.raises(RuntimeError, match="OpenGL is not available"):
+        psxrl.Console(renderer="gl")

@@ -124,3 +124,22 @@ def test_vec_env_equals_single_envs_and_views_its_batch():
                 o, _ = s.reset(1, psxrl.episode_seed(seed, i, episodes[i]))
             assert np.array_equal(obs[i], o)
     assert episodes == [1, 0]
+
+
+def test_gl_renderer_scales_the_screen_but_not_the_observations():
+    """renderer='gl', scale=2 (docs/renderer.md): get_screen() is 480x640, the visual
+    observations and rewards are the software renderer's, move for move."""
+    sw = psxrl.Env(obs="visual")
+    gl = psxrl.Env(obs="visual", renderer="gl", scale=2)
+    obs_sw, _ = sw.reset(1, 7)
+    obs_gl, _ = gl.reset(1, 7)
+    assert np.array_equal(obs_sw, obs_gl)
+    for action in (0, 1, 0, 3):
+        a = sw.step(action)
+        b = gl.step(action)
+        assert np.array_equal(a[0], b[0])
+        assert a[1:4] == b[1:4]
+    assert sw.get_screen().shape == (240, 320, 3)
+    assert gl.get_screen().shape == (480, 640, 3)
+    with pytest.raises(ValueError, match="'software' or 'gl'"):
+        psxrl.Env(obs="visual", renderer="vulkan")

@@ -9,6 +9,7 @@
 set(gpu_polygons_checks 275)
 set(gpu_lines_rects_checks 89)
 set(gpu_vram_checks 29)
+set(gpu_dma_checks 737)
 foreach(name gpu_polygons gpu_lines_rects gpu_vram)
   psx_add_rom_test(${name} SOURCES ${name}.c FRAMES 60 CHECKS ${${name}_checks}
     ARGS --screenshot ${CMAKE_CURRENT_BINARY_DIR}/${name}_screen.png --vram ${CMAKE_CURRENT_BINARY_DIR}/${name}_vram.png)
@@ -20,5 +21,13 @@ endforeach()
 # quad 4 + 10, bottom 4 + 1, Gouraud 4 + 31, texels 4 x (4 + 16), 6 peeks x (4 + 1) = 304.
 # Lines: 4 + 13, 4 + 31, 5 x 5, 4 + 31, 30 x 5 = 262. Rectangles: 9 x 5 + 4 + 8 + 2 x 5 = 67.
 # Fill: 9 x 5 = 45. Transfers: 3 + 4 + 15 x 2 = 37. 22 + 304 + 262 + 67 + 45 + 37 = 737.
-psx_add_rom_test(gpu_dma SOURCES gpu_dma.c FRAMES 60 CHECKS 737
+psx_add_rom_test(gpu_dma SOURCES gpu_dma.c FRAMES 60 CHECKS ${gpu_dma_checks}
   ARGS --screenshot ${CMAKE_CURRENT_BINARY_DIR}/gpu_dma_screen.png --vram ${CMAKE_CURRENT_BINARY_DIR}/gpu_dma_vram.png)
+# The same programs through the OpenGL renderer (OSMesa, headless): their checks read VRAM back
+# with GP0(C0h), which at any scale is the native view, so they must pass at scale 1 and 4.
+foreach(name gpu_polygons gpu_lines_rects gpu_vram gpu_dma)
+  foreach(scale 1 4)
+    psx_add_run_test(rom.${name}_gl${scale} CODE 0 CHECKS ${${name}_checks}
+      RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/${name}.exe --frames 60 --expect-exit --renderer gl --scale ${scale})
+  endforeach()
+endforeach()

@@ -12,8 +12,10 @@ ctest --test-dir build --output-on-failure -j2
 # cannot pass for an expected exit code (tests/expect.cmake also reports it as a sanitizer error).
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSXRL_SANITIZE=ON >/dev/null
 cmake --build build-sanitize
+# tests/lsan.supp names the system libraries (X11, Mesa, SDL) whose process-lifetime allocations
+# LeakSanitizer would otherwise report; psxrl's own allocations are never suppressed.
 ASAN_OPTIONS=detect_leaks=1:exitcode=99 UBSAN_OPTIONS=exitcode=99:print_stacktrace=1 \
-  ctest --test-dir build-sanitize --output-on-failure -j2
+  LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp ctest --test-dir build-sanitize --output-on-failure -j2
 
 # Every parser of user files and the CPU/GPU guest side fuzzed briefly (fuzz/, scripts/fuzz.sh):
 # past crashes are replayed and a few seconds per target look for new ones.

@@ -38,7 +38,7 @@ void SDLCALL SdlAudio::fill(void* self, Uint8* stream, int bytes) {
   auto& a = *static_cast<SdlAudio*>(self);
   const size_t want = static_cast<size_t>(bytes) / sizeof(psx::StereoSample);
   const size_t n = std::min(want, a.queue_.size() - a.read_);
-  std::memcpy(stream, a.queue_.data() + a.read_, n * sizeof(psx::StereoSample));
+  if (n > 0) std::memcpy(stream, a.queue_.data() + a.read_, n * sizeof(psx::StereoSample));  // data() may be null
   std::memset(stream + n * sizeof(psx::StereoSample), 0, static_cast<size_t>(bytes) - n * sizeof(psx::StereoSample));
   a.read_ += n;
 }

@@ -34,14 +34,10 @@ inline u32 channel(s32 fixed) { return static_cast<u32>(std::clamp(fixed >> kFra
 
 template <int kTex, bool kRaw, bool kSemi, bool kShaded>
 void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds) {
-  const Vertex* p[3] = {&t.v[0], &t.v[1], &t.v[2]};
-  // Sort by y (stable, so equal rows keep command order).
-  if (p[1]->y < p[0]->y) std::swap(p[0], p[1]);
-  if (p[2]->y < p[1]->y) std::swap(p[1], p[2]);
-  if (p[1]->y < p[0]->y) std::swap(p[0], p[1]);
+  const SortedTriangle sorted = sort_by_y(t);
+  const Vertex* const* p = sorted.p;
+  const s64 cross = sorted.cross;
   const Vertex &a = *p[0], &b = *p[1], &c = *p[2];
-
-  s64 cross = s64{b.x - a.x} * (c.y - a.y) - s64{c.x - a.x} * (b.y - a.y);
   if (cross == 0) return;  // degenerate: no area, nothing drawn
 
   constexpr bool kModulated = kTex == kUntextured || !kRaw;

@@ -1,19 +1,40 @@
-// Triangle set-up shared by the software and OpenGL renderers: the attribute planes (colours,
-// texture coordinates) as 12-bit fixed-point gradients over the screen, computed the same way
-// for both so that their interpolated values agree bit for bit.
+// Triangle set-up shared by the software and OpenGL renderers: the vertices in row order with
+// the edge cross product, and the attribute planes (colours, texture coordinates) as 12-bit
+// fixed-point gradients over the screen, computed the same way for both so that their
+// interpolated values agree bit for bit.
 #pragma once
+#include <utility>
+
 #include "gpu/renderer.h"
 
 namespace psx::gpu {
 
 constexpr int kFrac = 12;  // fraction bits of the attribute interpolators
 
+// A triangle's vertices sorted by y (stable, so equal rows keep command order), and the cross
+// product of its edges a->b and a->c: 0 for a degenerate triangle (no area, nothing drawn),
+// positive when the long edge a->c is on the left.
+struct SortedTriangle {
+  const Vertex* p[3];
+  s64 cross;
+};
+
+inline SortedTriangle sort_by_y(const Triangle& t) {
+  SortedTriangle s{{&t.v[0], &t.v[1], &t.v[2]}, 0};
+  if (s.p[1]->y < s.p[0]->y) std::swap(s.p[0], s.p[1]);
+  if (s.p[2]->y < s.p[1]->y) std::swap(s.p[1], s.p[2]);
+  if (s.p[1]->y < s.p[0]->y) std::swap(s.p[0], s.p[1]);
+  const Vertex &a = *s.p[0], &b = *s.p[1], &c = *s.p[2];
+  s.cross = s64{b.x - a.x} * (c.y - a.y) - s64{c.x - a.x} * (b.y - a.y);
+  return s;
+}
+
 // d(attribute)/dx and d(attribute)/dy in 12-bit fixed point for the plane through three vertices.
 struct Gradient {
   s32 dx = 0, dy = 0;
 };
 
-inline Gradient plane_gradient(const Vertex* p[3], s64 cross, s32 a0, s32 a1, s32 a2) {
+inline Gradient plane_gradient(const Vertex* const p[3], s64 cross, s32 a0, s32 a1, s32 a2) {
   s64 ex1 = p[1]->x - p[0]->x, ey1 = p[1]->y - p[0]->y;
   s64 ex2 = p[2]->x - p[0]->x, ey2 = p[2]->y - p[0]->y;
   s64 d1 = a1 - a0, d2 = a2 - a0;

@@ -60,14 +60,12 @@ u32 primitive_reads(const PrimitiveRecord& r, int tex, u32 clut_x, u32 clut_y, b
 }  // namespace
 
 void GlRenderer::draw_triangle(const Triangle& t, const DrawState& ds) {
-  const Vertex* p[3] = {&t.v[0], &t.v[1], &t.v[2]};
-  if (p[1]->y < p[0]->y) std::swap(p[0], p[1]);
-  if (p[2]->y < p[1]->y) std::swap(p[1], p[2]);
-  if (p[1]->y < p[0]->y) std::swap(p[0], p[1]);
+  const SortedTriangle sorted = sort_by_y(t);
+  const Vertex* const* p = sorted.p;
+  const s64 cross = sorted.cross;
   const Vertex &a = *p[0], &b = *p[1], &c = *p[2];
   s32 min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
   if (max_x - min_x >= 1024 || c.y - a.y >= 512) return;
-  const s64 cross = s64{b.x - a.x} * (c.y - a.y) - s64{c.x - a.x} * (b.y - a.y);
   if (cross == 0) return;
 
   const int tex = texture_mode(t.textured, ds);

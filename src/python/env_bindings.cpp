@@ -11,6 +11,7 @@
 #include "core/console.h"
 #include "python/bindings.h"
 #include "rl/env.h"
+#include "rl/async_vec_env.h"
 #include "rl/vec_env.h"
 
 namespace py = pybind11;
@@ -254,6 +255,72 @@ void bind_env(py::module_& m) {
       .def_property_readonly("observation_spaces",
                              [](const rl::VecEnv& v) { return spaces_list(v.observation_spaces()); })
       .def_property_readonly("action_count", &rl::VecEnv::action_count);
+
+  py::class_<rl::AsyncVecEnv>(m, "AsyncVecEnv",
+                              "N environments stepped asynchronously (EnvPool's send/recv): recv() returns the first "
+                              "batch_size environments to finish, with their ids.")
+      .def(py::init([](int num_envs, int batch_size, unsigned threads, const py::kwargs& kw) {
+             rl::EnvConfig c = config_from(kw);
+             if (batch_size == 0) batch_size = num_envs;
+             if (threads == 0)
+               threads = std::min<unsigned>(static_cast<unsigned>(std::max(num_envs, 1)),
+                                            std::max(1u, std::thread::hardware_concurrency()));
+             R release;
+             return std::make_unique<rl::AsyncVecEnv>(c, num_envs, batch_size, threads);
+           }),
+           py::arg("num_envs"), py::arg("batch_size") = 0, py::arg("threads") = 0)
+      .def(
+          "reset",
+          [](rl::AsyncVecEnv& v, int level, std::uint64_t seed) {
+            R release;
+            v.reset(level, seed);
+          },
+          py::arg("level") = 1, py::arg("seed") = 0,
+          "Starts every environment on the level in the background; recv() returns them.")
+      .def(
+          "send",
+          [](rl::AsyncVecEnv& v, const py::array_t<int, py::array::c_style | py::array::forcecast>& actions,
+             const py::array_t<int, py::array::c_style | py::array::forcecast>& env_ids) {
+            std::vector<int> a(actions.data(), actions.data() + actions.size());
+            std::vector<int> ids(env_ids.data(), env_ids.data() + env_ids.size());
+            R release;
+            v.send(a, ids);
+          },
+          py::arg("actions"), py::arg("env_ids"))
+      .def(
+          "recv",
+          [](py::object self) {
+            auto& v = self.cast<rl::AsyncVecEnv&>();
+            const rl::AsyncBatch* b;
+            {
+              R release;
+              b = &v.recv();
+            }
+            py::list infos;
+            for (const rl::StepInfo& i : b->infos) infos.append(info_dict(i));
+            const auto n = static_cast<py::ssize_t>(b->env_ids.size());
+            auto flags = [n](const std::vector<std::uint8_t>& f) {
+              return array_of<bool>({n}, reinterpret_cast<const bool*>(f.data()));
+            };
+            return py::make_tuple(batch_observation(v.observation_spaces(), b->observations, v.batch_size(), self),
+                                  array_of<double>({n}, b->rewards.data()), flags(b->terminated), flags(b->truncated),
+                                  infos, array_of<int>({n}, b->env_ids.data()));
+          },
+          "(observations, rewards, terminated, truncated, infos, env_ids) of the next batch_size environments to "
+          "finish; the observation views are overwritten by the next recv().")
+      .def(
+          "final_observation",
+          [](py::object self) {
+            auto& v = self.cast<rl::AsyncVecEnv&>();
+            return batch_observation(v.observation_spaces(), v.last_batch().final_observations, v.batch_size(), self);
+          },
+          "Views of the last observation of each episode that ended in the latest recv() batch (other rows are stale).")
+      .def_property_readonly("num_envs", &rl::AsyncVecEnv::size)
+      .def_property_readonly("batch_size", &rl::AsyncVecEnv::batch_size)
+      .def_property_readonly("threads", &rl::AsyncVecEnv::threads)
+      .def_property_readonly("observation_spaces",
+                             [](const rl::AsyncVecEnv& v) { return spaces_list(v.observation_spaces()); })
+      .def_property_readonly("action_count", &rl::AsyncVecEnv::action_count);
 }
 
 }  // namespace psxrl::python

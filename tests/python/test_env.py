@@ -126,6 +126,43 @@ def test_vec_env_equals_single_envs_and_views_its_batch():
     assert episodes == [1, 0]
 
 
+def test_async_vec_env_gives_each_env_its_single_env_trajectory():
+    k, seed = 2, 11
+    # Environment 0 falls off on its 4th move and is reset at once; 1 keeps walking.
+    plans = [[LOOKRIGHT, FORWARD, FORWARD, FORWARD, FORWARD], [FORWARD, LOOKLEFT, FORWARD, LOOKRIGHT, FORWARD]]
+    env = psxrl.AsyncVecEnv(k, batch_size=1, threads=2, obs="simple")
+    assert (env.num_envs, env.batch_size, env.threads) == (k, 1, 2)
+    env.reset(1, seed)
+    got = [[] for _ in range(k)]  # (observation, reward, terminated, truncated) in the order returned
+    sent, finished = [0] * k, set()
+    while len(finished) < k:
+        obs, rewards, terminated, truncated, infos, ids = env.recv()
+        i = int(ids[0])
+        got[i].append((obs[0].copy(), rewards[0], terminated[0], truncated[0]))
+        if not any(got[1 - i]):
+            with pytest.raises(ValueError, match="in flight"):
+                env.send([FORWARD], [1 - i])  # the other environment is still out
+        if sent[i] == len(plans[i]):
+            finished.add(i)
+            continue
+        env.send([plans[i][sent[i]]], [i])
+        sent[i] += 1
+    for i in range(k):
+        single = psxrl.Env(obs="simple")
+        episode = 0
+        expected = [(single.reset(1, psxrl.episode_seed(seed, i, 0))[0], 0.0, False, False)]
+        for a in plans[i]:
+            o, r, term, trunc, _ = single.step(a)
+            if term or trunc:
+                episode += 1
+                o, _ = single.reset(1, psxrl.episode_seed(seed, i, episode))
+            expected.append((o, r, term, trunc))
+        assert len(got[i]) == len(expected)
+        for (go, gr, gterm, gtrunc), (eo, er, eterm, etrunc) in zip(got[i], expected):
+            assert np.array_equal(go, eo) and (gr, gterm, gtrunc) == (er, eterm, etrunc)
+    assert episode == 0 and any(e[2] for e in got[0])  # environment 0's episode ended and was reset
+
+
 def test_gl_renderer_scales_the_screen_but_not_the_observations():
     """renderer='gl', scale=2 (docs/renderer.md): get_screen() is 480x640, the visual
     observations and rewards are the software renderer's, move for move."""

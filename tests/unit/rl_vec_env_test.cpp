@@ -1,7 +1,7 @@
-// The vector environment (src/rl/vec_env.h) equals single environments bit for bit: 4 Tumble
-// environments on 2 threads over 200 batched steps with automatic resets, against 4 single
-// environments driven one after another with the documented seeds (episode_seed). Plus the
-// thread pool's contract.
+// The vector environments equal single environments bit for bit: 4 Tumble environments with
+// automatic resets, stepped in batches (VecEnv, src/rl/vec_env.h) and asynchronously
+// (AsyncVecEnv, src/rl/async_vec_env.h), against 4 single environments driven with the same
+// actions and the documented seeds (episode_seed). Plus the thread pool's contract.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -9,6 +9,7 @@
 #include <string>
 #include <thread>
 
+#include "rl/async_vec_env.h"
 #include "rl/vec_env.h"
 
 using namespace psxrl::rl;
@@ -30,66 +31,149 @@ TEST(EpisodeSeed, DistinctInputsGiveDistinctSeeds) {
   EXPECT_EQ(episode_seed(5, 3, 2), episode_seed(5, 3, 2));
 }
 
-// Sanitizer builds run the emulator several times slower; an eighth of the steps still covers
-// automatic resets there.
+// Sanitizer builds run the emulator several times slower; fewer steps still cover automatic
+// resets there (random play on level 1 ends an episode every few moves).
 #if defined(__SANITIZE_ADDRESS__)
 constexpr int kSteps = 25;
 #else
-constexpr int kSteps = 200;
+constexpr int kSteps = 60;
 #endif
+constexpr int kEnvs = 4, kLevel = 1;
+constexpr std::uint64_t kSeed = 2024;
 
-TEST(VecEnv, EqualsSingleEnvironmentsBitForBit) {
-  constexpr int kEnvs = 4, kLevel = 1;
-  constexpr std::uint64_t kSeed = 2024;
+namespace {
+
+EnvConfig local_config() {
   EnvConfig config;
   config.obs = "local";
-  // Actions from a fixed linear congruential sequence (Numerical Recipes' constants).
-  std::vector<std::vector<int>> actions(kSteps, std::vector<int>(kEnvs));
-  std::uint32_t lcg = 12345;
-  for (auto& row : actions)
-    for (auto& a : row) a = static_cast<int>(((lcg = lcg * 1664525u + 1013904223u) >> 16) % 4);
+  return config;
+}
 
-  VecEnv vec(config, kEnvs, 2);
+// Environment i's t-th action, from a fixed linear congruential sequence (Numerical Recipes'
+// constants).
+int action_of(int i, int t) {
+  std::uint32_t lcg = 12345u + static_cast<std::uint32_t>(t * kEnvs + i);
+  for (int k = 0; k < 3; ++k) lcg = lcg * 1664525u + 1013904223u;
+  return static_cast<int>((lcg >> 16) % 4);
+}
+
+// What one environment did: the observation after its reset (index 0) and after each move, and
+// each move's reward and end flags (terminated | truncated << 1).
+struct Trajectory {
+  std::vector<std::vector<std::uint8_t>> obs;
+  std::vector<double> rewards;
+  std::vector<int> flags;
+  int episodes_ended = 0;
+};
+
+// The reference: kEnvs single environments with the documented seeds (episode_seed), each on its
+// own thread (they share nothing), computed once for the tests below.
+const std::vector<Trajectory>& single_environments() {
+  static const std::vector<Trajectory> runs = [] {
+    std::vector<Trajectory> out(kEnvs);
+    auto run = [&](int i) {
+      Trajectory& tr = out[static_cast<size_t>(i)];
+      Env env(local_config());
+      std::uint64_t episode = 0;
+      auto record = [&] {
+        const auto& o = env.observation()[0];
+        const auto* bytes = static_cast<const std::uint8_t*>(o.data);
+        tr.obs.emplace_back(bytes, bytes + o.space->bytes());
+      };
+      env.reset(kLevel, episode_seed(kSeed, i, episode), nullptr);
+      record();
+      for (int t = 0; t < kSteps; ++t) {
+        StepResult r = env.step(action_of(i, t));
+        tr.rewards.push_back(r.reward);
+        tr.flags.push_back(int(r.terminated) | int(r.truncated) << 1);
+        if (r.terminated || r.truncated) {
+          ++tr.episodes_ended;
+          env.reset(kLevel, episode_seed(kSeed, i, ++episode), nullptr);
+        }
+        record();
+      }
+    };
+    std::vector<std::thread> threads;
+    for (int i = 0; i < kEnvs; ++i) threads.emplace_back(run, i);
+    for (auto& t : threads) t.join();
+    return out;
+  }();
+  return runs;
+}
+
+bool same_bytes(const std::vector<std::uint8_t>& a, const std::uint8_t* b) { return std::memcmp(a.data(), b, a.size()) == 0; }
+
+}  // namespace
+
+TEST(VecEnv, EqualsSingleEnvironmentsBitForBit) {
+  const auto& ref = single_environments();
+  VecEnv vec(local_config(), kEnvs, 2);
   vec.reset(kLevel, kSeed);
   const size_t bytes = vec.observation_spaces()[0].bytes();
-  std::vector<std::vector<std::uint8_t>> vec_obs;
-  std::vector<double> vec_rewards;
-  std::vector<int> vec_done;
+  for (int i = 0; i < kEnvs; ++i) EXPECT_TRUE(same_bytes(ref[i].obs[0], vec.batch()[0].data() + i * bytes)) << "env " << i;
+  std::vector<int> actions(kEnvs);
   for (int t = 0; t < kSteps; ++t) {
-    const VecStep& s = vec.step(actions[static_cast<size_t>(t)]);
-    vec_obs.push_back(vec.batch()[0]);
-    for (int i = 0; i < kEnvs; ++i) {
-      vec_rewards.push_back(s.rewards[static_cast<size_t>(i)]);
-      vec_done.push_back(s.terminated[static_cast<size_t>(i)] | s.truncated[static_cast<size_t>(i)] << 1);
+    for (int i = 0; i < kEnvs; ++i) actions[static_cast<size_t>(i)] = action_of(i, t);
+    const VecStep& s = vec.step(actions);
+    for (size_t i = 0; i < kEnvs; ++i) {
+      const std::string at = "env " + std::to_string(i) + " step " + std::to_string(t);
+      ASSERT_EQ(s.rewards[i], ref[i].rewards[static_cast<size_t>(t)]) << at;
+      ASSERT_EQ(int(s.terminated[i]) | int(s.truncated[i]) << 1, ref[i].flags[static_cast<size_t>(t)]) << at;
+      ASSERT_TRUE(same_bytes(ref[i].obs[static_cast<size_t>(t) + 1], vec.batch()[0].data() + i * bytes)) << at;
     }
   }
+  int ended = 0;
+  for (const auto& r : ref) ended += r.episodes_ended;
+  EXPECT_GE(ended, 1);  // random play falls off level 1: auto-reset was exercised
+}
 
-  // The single environments, each on its own thread (they share nothing), so the test's wall
-  // time on two cores is half of running them one after another.
-  std::atomic<int> episodes_ended = 0;
-  std::vector<std::string> failures(kEnvs);
-  auto single = [&](int i) {
-    Env env(config);
-    std::uint64_t episode = 0;
-    env.reset(kLevel, episode_seed(kSeed, i, episode), nullptr);
-    for (int t = 0; t < kSteps && failures[static_cast<size_t>(i)].empty(); ++t) {
-      StepResult r = env.step(actions[static_cast<size_t>(t)][static_cast<size_t>(i)]);
-      size_t k = static_cast<size_t>(t * kEnvs + i);
-      std::string at = "env " + std::to_string(i) + " step " + std::to_string(t) + ": ";
-      if (r.reward != vec_rewards[k]) failures[static_cast<size_t>(i)] = at + "reward differs";
-      if ((int(r.terminated) | int(r.truncated) << 1) != vec_done[k]) failures[static_cast<size_t>(i)] = at + "flags differ";
-      if (r.terminated || r.truncated) {
-        ++episodes_ended;
-        env.reset(kLevel, episode_seed(kSeed, i, ++episode), nullptr);
+// Asynchronous stepping returns environments in whatever order they finish, but each one's
+// trajectory is the single environment's: 4 environments, batches of 2, on 2 threads.
+TEST(AsyncVecEnv, EachEnvironmentEqualsItsSingleEnvironment) {
+  const auto& ref = single_environments();
+  AsyncVecEnv async(local_config(), kEnvs, 2, 2);
+  async.reset(kLevel, kSeed);
+  const size_t bytes = async.observation_spaces()[0].bytes();
+  std::vector<int> moves(kEnvs, -1);  // moves whose result was checked; -1: reset not seen yet
+  int checked = 0, batches = 0;
+  while (checked < kEnvs * (kSteps + 1)) {
+    const AsyncBatch& b = async.recv();
+    ++batches;
+    ASSERT_EQ(b.env_ids.size(), 2u);
+    std::vector<int> ids, actions;
+    for (size_t k = 0; k < b.env_ids.size(); ++k) {
+      const int i = b.env_ids[k];
+      int& done = moves[static_cast<size_t>(i)];
+      if (++done <= kSteps) {
+        const size_t t = static_cast<size_t>(done);
+        const std::string at = "env " + std::to_string(i) + " after move " + std::to_string(t);
+        ASSERT_TRUE(same_bytes(ref[i].obs[t], b.observations[0].data() + k * bytes)) << at;
+        if (t > 0) {
+          ASSERT_EQ(b.rewards[k], ref[i].rewards[t - 1]) << at;
+          ASSERT_EQ(int(b.terminated[k]) | int(b.truncated[k]) << 1, ref[i].flags[t - 1]) << at;
+        }
+        ++checked;
       }
-      if (std::memcmp(env.observation()[0].data, vec_obs[static_cast<size_t>(t)].data() + static_cast<size_t>(i) * bytes,
-                      bytes) != 0)
-        failures[static_cast<size_t>(i)] = at + "observation differs";
+      // Environments past the compared moves keep playing so that a batch can always fill.
+      ids.push_back(i);
+      actions.push_back(done < kSteps ? action_of(i, done) : 0);
     }
-  };
-  std::vector<std::thread> threads;
-  for (int i = 0; i < kEnvs; ++i) threads.emplace_back(single, i);
-  for (auto& t : threads) t.join();
-  for (const auto& f : failures) EXPECT_EQ(f, "");
-  EXPECT_GE(episodes_ended.load(), 1);  // random play falls off level 1: auto-reset was exercised
+    async.send(actions, ids);
+  }
+  EXPECT_GE(batches, kEnvs * (kSteps + 1) / 2);
+}
+
+TEST(AsyncVecEnv, RefusesMisuseWithAMessage) {
+  EXPECT_THROW(AsyncVecEnv(local_config(), 2, 3, 1), std::invalid_argument);  // batch > envs
+  AsyncVecEnv async(local_config(), 2, 1, 1);
+  EXPECT_THROW(async.recv(), std::logic_error);  // nothing in flight yet
+  async.reset(kLevel, kSeed);
+  const AsyncBatch& b = async.recv();
+  const int held = b.env_ids[0], busy = 1 - held;
+  EXPECT_THROW(async.send({0}, {busy}), std::invalid_argument);      // still in flight
+  EXPECT_THROW(async.send({0, 1}, {held, held}), std::invalid_argument);  // listed twice
+  EXPECT_THROW(async.send({4}, {held}), std::invalid_argument);       // no such action
+  EXPECT_THROW(async.send({0}, {7}), std::invalid_argument);          // no such environment
+  async.send({0}, {held});  // the refusals changed nothing: a valid send still works
+  EXPECT_EQ(async.recv().env_ids.size(), 1u);
 }

@@ -1,7 +1,7 @@
 """psxrl: a PlayStation emulator and reinforcement-learning environments, in-process.
 
 ``psxrl.Console`` is the emulator (the seed's PSXPY surface, synchronous); ``psxrl.Env`` and
-``psxrl.VecEnv`` are the C++ environments; importing the package registers the Gymnasium ids
+``psxrl.VecEnv`` (batched) and ``psxrl.AsyncVecEnv`` (EnvPool's send/recv) are the C++ environments; importing the package registers the Gymnasium ids
 ``psxrl/Tumble-v0`` and ``psxrl/Kula-v0`` (when Gymnasium is installed). See docs/python.md.
 """
 import os as _os
@@ -12,7 +12,7 @@ from ._psxrl import (BUTTONS, Console, InputError, QueryError, Recorder, Search,
                      Window, display_problem, episode_seed)
 
 __all__ = [
-    "BUTTONS", "Console", "Env", "InputError", "QueryError", "Recorder", "Search", "Session", "StateError", "VecEnv",
+    "AsyncVecEnv", "BUTTONS", "Console", "Env", "InputError", "QueryError", "Recorder", "Search", "Session", "StateError", "VecEnv",
     "WatchEvent", "Window", "display_problem", "episode_seed", "make_vec",
 ]
 
@@ -44,6 +44,13 @@ class VecEnv(_psxrl.VecEnv):
 
     def __init__(self, num_envs, threads=0, **kwargs):
         super().__init__(num_envs, threads, **_with_games(kwargs))
+
+
+class AsyncVecEnv(_psxrl.AsyncVecEnv):
+    __doc__ = _psxrl.AsyncVecEnv.__doc__
+
+    def __init__(self, num_envs, batch_size=0, threads=0, **kwargs):
+        super().__init__(num_envs, batch_size, threads, **_with_games(kwargs))
 
 
 def make_vec(id, num_envs, **kwargs):

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "rl/async_vec_env.h"
 #include "rl/vec_env.h"
 
 namespace bench {
@@ -62,6 +63,33 @@ inline double vec_moves_per_second(const std::string& obs, int envs, unsigned th
     vec.step(actions);
   }
   return static_cast<double>(steps) * envs / seconds_since(t);
+}
+
+// Moves per second of an asynchronous vector environment (EnvPool's send/recv): `moves` moves
+// in all, each batch of the first `batch` environments to finish sent straight back.
+inline double async_moves_per_second(const std::string& obs, int envs, int batch, unsigned threads, int moves) {
+  psxrl::rl::EnvConfig c;
+  c.obs = obs;
+  psxrl::rl::AsyncVecEnv vec(c, envs, batch, threads);
+  vec.reset(1, 1);
+  for (int k = 0; k < envs / batch; ++k) vec.recv();  // the resets
+  std::vector<int> ids(static_cast<size_t>(envs));
+  for (int i = 0; i < envs; ++i) ids[static_cast<size_t>(i)] = i;
+  std::uint32_t lcg = 7;
+  std::vector<int> actions(ids.size());
+  for (auto& a : actions) a = action_at(lcg);
+  auto t = Clock::now();
+  vec.send(actions, ids);
+  int done = 0;
+  while (done < moves) {
+    const psxrl::rl::AsyncBatch& b = vec.recv();
+    done += batch;
+    actions.resize(b.env_ids.size());
+    for (auto& a : actions) a = action_at(lcg);
+    vec.send(actions, b.env_ids);
+  }
+  const double s = seconds_since(t);
+  return done / s;
 }
 
 }  // namespace bench

@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 APT_PACKAGES=(
-  cmake ninja-build g++ pkg-config
+  cmake ninja-build g++ pkg-config ccache
   libgtest-dev libpng-dev libsdl2-dev libosmesa6-dev libeigen3-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev xvfb xauth xdotool
   libtorch-dev pybind11-dev liblua5.4-dev lua5.4 zlib1g-dev libtomlplusplus-dev libcli11-dev
@@ -48,6 +48,12 @@ if [ ! -x .venv-sb3/bin/python ] || ! .venv-sb3/bin/python -c "import stable_bas
   .venv-sb3/bin/python -m pip install -q --no-deps "stable-baselines3==2.4.1" "gymnasium==1.0.0" farama-notifications
 fi
 
+# ccache lets `pip install .` below reuse what this build compiles: the module's build tree
+# compiles the same core and bindings with the same flags, which would otherwise take minutes.
+# CMake takes the launcher from these variables when it first configures a build tree, and
+# scikit-build-core's compiler is g++, so this one uses g++ too (ccache keys on the name).
+export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=$PWD
+export CC=${CC:-gcc} CXX=${CXX:-g++}
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build
 # The Python module for `import psxrl` (pyproject.toml: scikit-build-core drives this CMake project

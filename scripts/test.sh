@@ -10,7 +10,9 @@ ctest --test-dir build --output-on-failure -j2
 # guest programs and user files must never make the emulator touch memory it does not own, leak,
 # or rely on undefined C++. Any finding exits with 99, a code no psxrl run uses, so that it
 # cannot pass for an expected exit code (tests/expect.cmake also reports it as a sanitizer error).
-cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSXRL_SANITIZE=ON >/dev/null
+# No benchmark programs there: they are never tests, and would only add compile and link time.
+export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=$PWD
+cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSXRL_SANITIZE=ON -DPSXRL_BUILD_BENCH=OFF >/dev/null
 cmake --build build-sanitize
 # tests/lsan.supp names the system libraries (X11, Mesa, SDL) whose process-lifetime allocations
 # LeakSanitizer would otherwise report; psxrl's own allocations are never suppressed.

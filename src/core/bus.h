@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/cpu/icache.h"
+#include "core/cpu/recompiler/code_pages.h"
 #include "core/endian.h"
 #include "core/io_device.h"
 #include "core/memory_watch.h"
@@ -113,6 +114,9 @@ class Bus {
     frame_ = frame;
   }
 
+  // The recompiler's page map (code_pages.h) sees every CPU and DMA write to RAM while attached.
+  void attach_code_pages(CodePages* pages) { code_pages_ = pages; }
+
   void do_state(StateIO& s);
 
   // Read times in CPU cycles beyond the instruction's own cycle. RAM, scratchpad and the on-chip
@@ -192,6 +196,7 @@ class Bus {
   bool unmapped_capped_ = false;
   MemoryWatches* watches_ = nullptr;
   const u64* frame_ = nullptr;
+  CodePages* code_pages_ = nullptr;
 };
 
 }  // namespace psx

@@ -6,6 +6,7 @@
 
 #include "core/cpu/cpu.h"
 #include "core/cpu/idle_skip.h"
+#include "core/cpu/recompiler/recompiler.h"
 
 namespace psx {
 
@@ -65,6 +66,10 @@ void CpuT<BusT>::set_pc(u32 pc) {
 
 template <class BusT>
 void CpuT<BusT>::run() {
+  if (recompiler_) {
+    recompiler_->run(*this);
+    return;
+  }
   stop_ = false;
   while (!stop_ && sched_.now() < sched_.next_deadline()) {
     if constexpr (std::is_same_v<BusT, Bus>) {
@@ -102,6 +107,11 @@ void CpuT<BusT>::step() {
     take_interrupt();
     return;
   }
+  execute_at_pc();
+}
+
+template <class BusT>
+void CpuT<BusT>::execute_at_pc() {
   current_pc_ = pc_;
   in_delay_slot_ = next_in_delay_;
   next_in_delay_ = false;

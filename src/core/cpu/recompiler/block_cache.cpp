@@ -1,0 +1,23 @@
+// The block cache (block_cache.h).
+#include "core/cpu/recompiler/block_cache.h"
+
+namespace psx {
+
+void BlockCache::insert(u32 pc, BlockFn fn, u32 first_page, u32 last_page) {
+  blocks_[pc] = fn;
+  if (first_page == CodePages::kNoPage) return;
+  page_blocks_[first_page].push_back(pc);
+  if (last_page != first_page) page_blocks_[last_page].push_back(pc);
+}
+
+void BlockCache::invalidate_page(u32 page) {
+  for (u32 pc : page_blocks_[page]) blocks_.erase(pc);
+  page_blocks_[page].clear();
+}
+
+void BlockCache::clear() {
+  blocks_.clear();
+  for (auto& v : page_blocks_) v.clear();
+}
+
+}  // namespace psx

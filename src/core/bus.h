@@ -49,6 +49,13 @@ class Bus {
     }
     return fetch_slow(vaddr, word, busy_until);
   }
+  // fetch()'s free path alone: the word when vaddr is an i-cache hit on a line held whole (no
+  // time, no fill), else false (fetch() would take its slow path).
+  bool fetch_hit(u32 vaddr, u32& word) const {
+    if (hot_lines_[ICache::line(vaddr)] != (vaddr & ~15u)) return false;
+    word = icache_.code(vaddr);
+    return true;
+  }
   // The word fetch() would execute at vaddr (the cached copy on a hit), without timing or fills;
   // false where fetch() would fail.
   bool peek_code(u32 vaddr, u32& word) const;

@@ -1,7 +1,7 @@
 // Compiled blocks by the address of their first instruction, and for each RAM page the blocks
-// whose code lies in it, so that a write to the page drops exactly those (code_pages.h).
+// whose code lies in it, so that a write to the page drops exactly those (code_pages.h). A small
+// direct-mapped table in front of the hash map answers most lookups.
 #pragma once
-#include <array>
 #include <unordered_map>
 #include <vector>
 
@@ -14,9 +14,13 @@ class BlockCache {
  public:
   using BlockFn = BlockEmitter::BlockFn;
 
-  BlockFn find(u32 pc) const {
+  BlockFn find(u32 pc) {
+    Recent& r = recent_[(pc >> 2) & (kRecent - 1)];
+    if (r.pc == pc) return r.fn;
     auto it = blocks_.find(pc);
-    return it == blocks_.end() ? nullptr : it->second;
+    if (it == blocks_.end()) return nullptr;
+    r = {pc, it->second};
+    return it->second;
   }
   // A block starting at pc whose instructions lie in pages first..last (CodePages::kNoPage for
   // code outside RAM).
@@ -26,8 +30,16 @@ class BlockCache {
   size_t size() const { return blocks_.size(); }
 
  private:
+  void erase(u32 pc);
+
+  static constexpr u32 kRecent = 4096;
+  struct Recent {
+    u32 pc = 1;  // never a block's (aligned) address
+    BlockFn fn = nullptr;
+  };
+  std::vector<Recent> recent_ = std::vector<Recent>(kRecent);
   std::unordered_map<u32, BlockFn> blocks_;
-  std::array<std::vector<u32>, CodePages::kPages> page_blocks_;
+  std::vector<std::vector<u32>> page_blocks_;  // sized on the first insert
 };
 
 }  // namespace psx

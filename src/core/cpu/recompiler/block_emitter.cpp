@@ -14,7 +14,8 @@ BlockEmitter::BlockEmitter(size_t buffer_bytes) : impl_(std::make_unique<Impl>(b
 BlockEmitter::~BlockEmitter() = default;
 
 BlockEmitter::BlockFn BlockEmitter::emit(void* context, std::span<const Step> steps) {
-  // An upper bound on one step's code (mov r64 imm64 twice, mov r32 imm32, call, test, jcc).
+  // An upper bound on one step's code (mov r64 r64, mov r32 imm32 twice, mov r64 imm64, call,
+  // test, jcc).
   constexpr size_t kStepBytes = 40, kFrameBytes = 32;
   Impl& g = *impl_;
   if (g.getSize() + kFrameBytes + kStepBytes * steps.size() > g.capacity) return nullptr;
@@ -28,6 +29,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(void* context, std::span<const Step> st
   for (const Step& s : steps) {
     g.mov(g.rdi, g.rbx);
     g.mov(g.esi, s.pc);
+    g.mov(g.edx, s.word);
     g.mov(g.rax, reinterpret_cast<u64>(s.fn));
     g.call(g.rax);
     g.test(g.al, g.al);

@@ -1,6 +1,6 @@
 // x86-64 code for compiled blocks, generated with xbyak into one executable buffer. A block is
-// a sequence of steps; each step is a call step.fn(context, step.pc) and the block returns at the
-// first call that answers false. Xbyak stays inside block_emitter.cpp.
+// a sequence of steps; each step is a call step.fn(context, step.pc, step.word) and the block
+// returns at the first call that answers false. Xbyak stays inside block_emitter.cpp.
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -12,10 +12,11 @@ namespace psx {
 
 class BlockEmitter {
  public:
-  using StepFn = bool (*)(void* context, u32 pc);
+  using StepFn = bool (*)(void* context, u32 pc, u32 word);
   using BlockFn = void (*)();
   struct Step {
     u32 pc;
+    u32 word;  // the instruction compiled
     StepFn fn;
   };
 

@@ -7,7 +7,9 @@
 // instructions is one step that does what one pass of the interpreter's run() loop does, minus
 // the block lookup: the same deadline, stop and idle-loop checks, the BIOS hooks and interrupts
 // through CpuT::step(), and the instruction itself through CpuT::execute_at_pc() (fetch through
-// the i-cache model with its timing, the load shadow, execute, the load delay slot). A step goes
+// the i-cache model with its timing, the load shadow, execute, the load delay slot), or, when the
+// i-cache holds the compiled word on a whole line (a fetch without time or fill), the same
+// bookkeeping without fetch and decode (recompiler_ops.h). A step goes
 // on to the next only while the CPU is where the block expects (pc + 4): an exception, an
 // interrupt, a hook that redirects, or code changed since compilation so that a branch appears
 // where none was, all leave the block for the dispatcher. Since each step fetches the word it
@@ -27,6 +29,8 @@
 #include "core/cpu/recompiler/code_pages.h"
 
 namespace psx {
+
+enum class RecOp : u32;
 
 template <class BusT>
 class RecompilerT {
@@ -53,8 +57,16 @@ class RecompilerT {
 
  private:
   BlockEmitter::BlockFn compile(Cpu& cpu, u32 pc);
-  static bool step_at(void* cpu, u32 pc);
   static bool ends_block(u32 instr);
+  // The steps (recompiler_ops.h).
+  static BlockEmitter::StepFn step_for(u32 word);
+  static RecOp classify(u32 instr);
+  [[gnu::always_inline]] static bool may_step(Cpu& c, u32 pc);
+  static bool step_at(void* cpu, u32 pc, u32 word);
+  template <RecOp K>
+  static bool step_fast(void* cpu, u32 pc, u32 word);
+  template <RecOp K>
+  static void exec(Cpu& c, u32 instr);
 
   BusT& bus_;
   CodePages pages_;
@@ -87,20 +99,6 @@ void RecompilerT<BusT>::run(Cpu& cpu) {
   }
 }
 
-// One instruction of a block, as one pass of CpuT::run()'s loop; false leaves the block.
-template <class BusT>
-bool RecompilerT<BusT>::step_at(void* context, u32 pc) {
-  Cpu& c = *static_cast<Cpu*>(context);
-  if (c.stop_ || c.sched_.now() >= c.sched_.next_deadline()) return false;
-  if (pc == c.loop_head_ && c.idle_skip_) return false;  // the dispatcher examines the loop
-  if (c.hook_armed_ || c.interrupt_pending()) {
-    c.step();
-    return false;
-  }
-  c.execute_at_pc();
-  return c.pc_ == pc + 4;
-}
-
 template <class BusT>
 bool RecompilerT<BusT>::ends_block(u32 instr) {
   const u32 op = instr >> 26;
@@ -116,7 +114,7 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
   u32 a = pc, word;
   bool delay_slot = false;
   while (steps_.size() < kMaxBlock && bus_.peek_code(a, word)) {
-    steps_.push_back({a, &step_at});
+    steps_.push_back({a, word, step_for(word)});
     if (delay_slot) break;
     delay_slot = ends_block(word);
     a += 4;
@@ -132,8 +130,7 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
     fn = emitter_->emit(&cpu, steps_);
   }
   const u32 first = CodePages::page_of(pc), last = CodePages::page_of(steps_.back().pc);
-  if (first != CodePages::kNoPage) pages_.mark_compiled(first);
-  if (last != CodePages::kNoPage) pages_.mark_compiled(last);
+  if (first != CodePages::kNoPage && last != CodePages::kNoPage) pages_.mark_compiled(pc, steps_.back().pc);
   cache_.insert(pc, fn, first, last);
   ++stats_.compiled;
   return fn;
@@ -142,3 +139,5 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
 using Recompiler = RecompilerT<Bus>;
 
 }  // namespace psx
+
+#include "core/cpu/recompiler/recompiler_ops.h"

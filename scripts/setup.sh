@@ -8,7 +8,7 @@ APT_PACKAGES=(
   cmake ninja-build g++ pkg-config ccache
   libgtest-dev libpng-dev libsdl2-dev libosmesa6-dev libeigen3-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev xvfb xauth xdotool
-  libtorch-dev pybind11-dev liblua5.4-dev lua5.4 zlib1g-dev libtomlplusplus-dev libcli11-dev
+  libtorch-dev pybind11-dev liblua5.4-dev lua5.4 zlib1g-dev libtomlplusplus-dev libcli11-dev libxbyak-dev
   gcc-mipsel-linux-gnu binutils-mipsel-linux-gnu
   clang-16 libfuzzer-16-dev
   python3 python3-dev python3-pip python3-venv

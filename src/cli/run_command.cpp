@@ -37,7 +37,8 @@ const std::map<std::string, std::string> kRunNeeds = {
     {"--cycles", "a positive whole number"}, {"--screenshot", "a file"}, {"--vram", "a file"},
     {"--wav", "a file"}, {"--input", "a file"}, {"--screenshot-at", "a frame number and a file"},
     {"--pad1", "digital, dualshock or none"}, {"--pad2", "digital, dualshock or none"},
-    {"--memcard1", "a file"}, {"--memcard2", "a file"}, {"--renderer", "software or gl"}, {"--scale", "1 to 8"}};
+    {"--memcard1", "a file"}, {"--memcard2", "a file"}, {"--renderer", "software or gl"}, {"--scale", "1 to 8"},
+    {"--cpu", "interpreter or recompiler"}};
 
 bool parse_count(const std::string& s, unsigned long long& out) {
   if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos) return false;
@@ -86,6 +87,7 @@ struct RunArgs {
   std::string exe, bios, disc, screenshot, vram_png, wav, input_path;
   std::string frames_text = "3600", cycles_text, pad_text[2] = {"digital", "none"};
   std::string memcards[2];
+  std::string cpu = "interpreter";
   std::vector<std::pair<std::string, std::string>> shot_args;
   bool expect_exit = false, quiet = false, realtime = false, no_idle_skip = false;
   RendererArgs render;
@@ -102,6 +104,9 @@ struct RunArgs {
     app.add_flag("--realtime", realtime, "run no faster than the console (59.94 frames per second), to watch");
     app.add_flag("--no-idle-skip", no_idle_skip,
                  "interpret loops that wait for the next event instead of skipping them (same results, slower)");
+    app.add_option("--cpu", cpu,
+                   "CPU core: interpreter (default, the reference) or recompiler (x86-64 code compiled per\n"
+                   "block; the same results, cycle for cycle)")->type_name("CORE");
     app.add_option("--pad1", pad_text[0], "controller in port 1: digital (default), dualshock or none")->type_name("TYPE");
     app.add_option("--pad2", pad_text[1], "controller in port 2: none (default), digital or dualshock")->type_name("TYPE");
     app.add_option("--memcard1", memcards[0], "memory card in slot 1 (raw 128 KiB image; created on the first write)")
@@ -153,6 +158,8 @@ int run_command(const std::vector<std::string>& args) {
     shots.push_back(shot);
   }
   auto usage = [&](const std::string& msg) { return usage_error(app, msg); };
+  if (a.cpu != "interpreter" && a.cpu != "recompiler")
+    return usage("--cpu must be interpreter or recompiler, not '" + a.cpu + "'");
   if (std::string why = a.render.check(); !why.empty()) return usage(why);
   if (exe.empty() && disc.empty() && bios.empty())
     return usage("--exe is required (or --disc to boot a disc, or --bios to start the BIOS alone)");
@@ -170,6 +177,7 @@ int run_command(const std::vector<std::string>& args) {
     return kBadInput;
   }
   console.set_idle_skip(!a.no_idle_skip);
+  if (a.cpu == "recompiler") console.set_cpu_mode(psx::Console::CpuMode::Recompiler);
   console.on_tty = [](char c) { std::fputc(c, stdout); };
   console.on_log = [quiet](const std::string& m) {
     if (!quiet) std::fprintf(stderr, "psxrl: %s\n", m.c_str());

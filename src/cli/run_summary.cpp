@@ -64,6 +64,12 @@ void print_run_summary(std::FILE* out, const psx::Console& console, const std::s
                        const std::vector<std::string>& written) {
   std::fprintf(out, "psxrl run: %llu frames\n", static_cast<unsigned long long>(console.frames()));
   for (const std::string& file : written) std::fprintf(out, "psxrl run: wrote %s\n", file.c_str());
+  if (console.cpu_mode() == psx::Console::CpuMode::Recompiler) {
+    const auto& r = console.recompiler_stats();
+    std::fprintf(out, "psxrl run: recompiler: %llu blocks compiled, %llu invalidations, %llu code-buffer flushes\n",
+                 static_cast<unsigned long long>(r.compiled), static_cast<unsigned long long>(r.invalidated),
+                 static_cast<unsigned long long>(r.flushes));
+  }
   if (exe.empty()) return;
   std::vector<psx::u8> bytes;
   try {

@@ -178,6 +178,7 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
   u32 p = physical(vaddr);
   if (p < 0x00800000) {
     u32 off = p & (kRamSize - 1);
+    if (code_pages_) code_pages_->on_ram_write(off);
     if (watches_ && watches_->ram_block_watched(off)) watched_store(&ram_[off], off, v, width);
     else store_width(&ram_[off], v, width);
     return true;
@@ -282,6 +283,7 @@ void Bus::expansion2_write(u32 p, u32 v, u32 width) {
 void Bus::dma_write_ram(u32 addr, const u32* words, u32 count) {
   for (u32 i = 0; i < count; ++i) {
     u32 off = (addr + i * 4) & (kRamSize - 4);
+    if (code_pages_) code_pages_->on_ram_write(off);
     if (watches_ && watches_->ram_block_watched(off)) watched_store(&ram_[off], off, words[i], 4);
     else store_le32(&ram_[off], words[i]);
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/cpu/icache.h"
+#include "core/cpu/recompiler/code_pages.h"
 #include "core/endian.h"
 #include "core/io_device.h"
 #include "core/memory_watch.h"
@@ -47,6 +48,13 @@ class Bus {
       return true;
     }
     return fetch_slow(vaddr, word, busy_until);
+  }
+  // fetch()'s free path alone: the word when vaddr is an i-cache hit on a line held whole (no
+  // time, no fill), else false (fetch() would take its slow path).
+  bool fetch_hit(u32 vaddr, u32& word) const {
+    if (hot_lines_[ICache::line(vaddr)] != (vaddr & ~15u)) return false;
+    word = icache_.code(vaddr);
+    return true;
   }
   // The word fetch() would execute at vaddr (the cached copy on a hit), without timing or fills;
   // false where fetch() would fail.
@@ -112,6 +120,9 @@ class Bus {
     watches_ = w;
     frame_ = frame;
   }
+
+  // The recompiler's page map (code_pages.h) sees every CPU and DMA write to RAM while attached.
+  void attach_code_pages(CodePages* pages) { code_pages_ = pages; }
 
   void do_state(StateIO& s);
 
@@ -192,6 +203,7 @@ class Bus {
   bool unmapped_capped_ = false;
   MemoryWatches* watches_ = nullptr;
   const u64* frame_ = nullptr;
+  CodePages* code_pages_ = nullptr;
 };
 
 }  // namespace psx

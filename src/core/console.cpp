@@ -73,6 +73,12 @@ Console::Console()
 
 Console::~Console() = default;
 
+void Console::set_cpu_mode(CpuMode mode) {
+  const bool recompile = mode == CpuMode::Recompiler;
+  cpu_.set_recompiler(recompile ? &recompiler_ : nullptr);
+  bus_.attach_code_pages(recompile ? &recompiler_.code_pages() : nullptr);
+}
+
 void Console::load_bios(const std::string& path) { load_bios_image(read_file(path), path); }
 
 void Console::load_bios_image(const std::vector<u8>& image, const std::string& name) {

@@ -19,6 +19,7 @@
 #include "core/cdrom/cdrom.h"
 #include "core/cpu/cpu.h"
 #include "core/cpu/idle_skip.h"
+#include "core/cpu/recompiler/recompiler.h"
 #include "core/dma.h"
 #include "core/gte/gte.h"
 #include "core/input_error.h"
@@ -82,6 +83,14 @@ class Console : private CpuHooks {
   void set_idle_skip(bool on) { cpu_.set_idle_skip(on ? &idle_skip_ : nullptr); }
   bool idle_skip() const { return cpu_.idle_skip_enabled(); }
   const IdleSkip::Stats& idle_skip_stats() const { return idle_skip_.stats(); }
+
+  // Which CPU core runs programs: the interpreter (the default and the reference) or the
+  // recompiler (core/cpu/recompiler/recompiler.h). Both compute the same states, cycle for cycle;
+  // the mode is a host setting, not machine state (save states do not record it).
+  enum class CpuMode { Interpreter, Recompiler };
+  void set_cpu_mode(CpuMode mode);
+  CpuMode cpu_mode() const { return cpu_.recompiler_enabled() ? CpuMode::Recompiler : CpuMode::Interpreter; }
+  const Recompiler::Stats& recompiler_stats() const { return recompiler_.stats(); }
 
   Cycles cycles() const { return sched_.now(); }
   u64 frames() const { return frames_; }
@@ -221,6 +230,7 @@ class Console : private CpuHooks {
   Gte gte_;
   Cpu cpu_;
   IdleSkip idle_skip_;
+  Recompiler recompiler_{bus_};
   HleBios hle_;
   Cdrom cdrom_;
   Sio0 sio0_;

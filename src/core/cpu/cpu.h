@@ -16,6 +16,8 @@ namespace psx {
 
 class Bus;
 class IdleSkip;
+template <class BusT>
+class RecompilerT;
 
 // Called before the instruction at a hooked address runs (the BIOS call vectors A0h/B0h/C0h and
 // one extra address, e.g. the shell entry 0x80030000). A hook may redirect the CPU with set_pc().
@@ -86,11 +88,20 @@ class CpuT {
   void set_idle_skip(IdleSkip* skip) { idle_skip_ = skip; }
   bool idle_skip_enabled() const { return idle_skip_ != nullptr; }
 
+  // The recompiler (recompiler/recompiler.h) runs run()'s instructions from compiled blocks; with
+  // nullptr run() interprets. Either way the machine state evolves identically.
+  void set_recompiler(RecompilerT<BusT>* r) { recompiler_ = r; }
+  bool recompiler_enabled() const { return recompiler_ != nullptr; }
+
  private:
   friend class IdleSkip;
+  friend class RecompilerT<BusT>;
   // A short backward branch or jump marks its target as a loop head worth examining.
   static constexpr u32 kIdleLoopBytes = 256;
   static constexpr u32 kNoLoopHead = 1;  // never equals an aligned pc
+  // step() after its hook and interrupt checks: one instruction at pc_, its timing and the load
+  // delay slot's bookkeeping.
+  void execute_at_pc();
   void execute(u32 instr);
   void execute_special(u32 instr);
   void execute_bcondz(u32 instr);
@@ -205,6 +216,7 @@ class CpuT {
   u32 hook_pc_ = 0;
   // Host-side idle-skip bookkeeping (not machine state, not saved).
   IdleSkip* idle_skip_ = nullptr;
+  RecompilerT<BusT>* recompiler_ = nullptr;
   u32 loop_head_ = kNoLoopHead;
 };
 

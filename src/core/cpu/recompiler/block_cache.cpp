@@ -1,0 +1,32 @@
+// The block cache (block_cache.h).
+#include "core/cpu/recompiler/block_cache.h"
+
+namespace psx {
+
+void BlockCache::insert(u32 pc, BlockFn fn, u32 first_page, u32 last_page) {
+  blocks_[pc] = fn;
+  if (first_page == CodePages::kNoPage) return;
+  if (page_blocks_.empty()) page_blocks_.resize(CodePages::kPages);
+  page_blocks_[first_page].push_back(pc);
+  if (last_page != first_page) page_blocks_[last_page].push_back(pc);
+}
+
+void BlockCache::invalidate_page(u32 page) {
+  if (page_blocks_.empty()) return;
+  for (u32 pc : page_blocks_[page]) erase(pc);
+  page_blocks_[page].clear();
+}
+
+void BlockCache::erase(u32 pc) {
+  blocks_.erase(pc);
+  Recent& r = recent_[(pc >> 2) & (kRecent - 1)];
+  if (r.pc == pc) r = Recent{};
+}
+
+void BlockCache::clear() {
+  blocks_.clear();
+  recent_.assign(kRecent, Recent{});
+  for (auto& v : page_blocks_) v.clear();
+}
+
+}  // namespace psx

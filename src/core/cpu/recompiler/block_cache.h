@@ -1,0 +1,45 @@
+// Compiled blocks by the address of their first instruction, and for each RAM page the blocks
+// whose code lies in it, so that a write to the page drops exactly those (code_pages.h). A small
+// direct-mapped table in front of the hash map answers most lookups.
+#pragma once
+#include <unordered_map>
+#include <vector>
+
+#include "core/cpu/recompiler/block_emitter.h"
+#include "core/cpu/recompiler/code_pages.h"
+
+namespace psx {
+
+class BlockCache {
+ public:
+  using BlockFn = BlockEmitter::BlockFn;
+
+  BlockFn find(u32 pc) {
+    Recent& r = recent_[(pc >> 2) & (kRecent - 1)];
+    if (r.pc == pc) return r.fn;
+    auto it = blocks_.find(pc);
+    if (it == blocks_.end()) return nullptr;
+    r = {pc, it->second};
+    return it->second;
+  }
+  // A block starting at pc whose instructions lie in pages first..last (CodePages::kNoPage for
+  // code outside RAM).
+  void insert(u32 pc, BlockFn fn, u32 first_page, u32 last_page);
+  void invalidate_page(u32 page);
+  void clear();
+  size_t size() const { return blocks_.size(); }
+
+ private:
+  void erase(u32 pc);
+
+  static constexpr u32 kRecent = 4096;
+  struct Recent {
+    u32 pc = 1;  // never a block's (aligned) address
+    BlockFn fn = nullptr;
+  };
+  std::vector<Recent> recent_ = std::vector<Recent>(kRecent);
+  std::unordered_map<u32, BlockFn> blocks_;
+  std::vector<std::vector<u32>> page_blocks_;  // sized on the first insert
+};
+
+}  // namespace psx

@@ -1,0 +1,63 @@
+// Which words of RAM hold recompiled code, by 256-byte page (one bit per word), and which pages
+// have had such a word written since they were compiled. The bus reports every CPU and DMA write to RAM here; the recompiler drops the
+// blocks of the pages written before it runs another block. (Compiled blocks stay exact even when
+// stale, recompiler.h, so this keeps the block cache current rather than making it correct.)
+#pragma once
+#include <vector>
+
+#include "core/types.h"
+
+namespace psx {
+
+class CodePages {
+ public:
+  static constexpr u32 kRamSize = 2 * 1024 * 1024;
+  // Word bits, so that stores to data next to code (a program's variables right after its code)
+  // drop no blocks: recompiling is far dearer than a store. 64 words a page: one u64 of bits.
+  static constexpr u32 kPageBits = 8;
+  static constexpr u32 kPages = kRamSize >> kPageBits;
+  static constexpr u32 kNoPage = 0xFFFFFFFF;
+
+  // The RAM page holding the code at vaddr (KUSEG/KSEG0/KSEG1, RAM and its mirrors in the first
+  // 8 MiB), or kNoPage (the BIOS ROM, which nothing writes).
+  static u32 page_of(u32 vaddr) {
+    const u32 p = vaddr >= 0x80000000 && vaddr < 0xC0000000 ? vaddr & 0x1FFFFFFF : vaddr;
+    return p < 0x00800000 ? ram_offset(vaddr) >> kPageBits : kNoPage;
+  }
+
+  // The words from vaddr `first` to `last` (both in RAM, at most a page apart) hold compiled code.
+  void mark_compiled(u32 first, u32 last) {
+    for (u32 a = first; a != last + 4; a += 4) {
+      const u32 off = ram_offset(a);
+      code_[off >> kPageBits] |= u64{1} << ((off >> 2) & 63);
+    }
+  }
+  // A write at RAM offset `off` (0 to 2 MiB - 1; every write stays within one word).
+  void on_ram_write(u32 off) {
+    u64& bits = code_[off >> kPageBits];
+    if (!((bits >> ((off >> 2) & 63)) & 1)) return;
+    bits = 0;
+    dirty_.push_back(off >> kPageBits);
+  }
+  bool any_dirty() const { return !dirty_.empty(); }
+  // The pages written since the last call, each once.
+  std::vector<u32> take_dirty() {
+    std::vector<u32> out;
+    out.swap(dirty_);
+    return out;
+  }
+  void clear() {
+    code_.assign(kPages, 0);
+    dirty_.clear();
+  }
+
+ private:
+  static u32 ram_offset(u32 vaddr) {
+    const u32 p = vaddr >= 0x80000000 && vaddr < 0xC0000000 ? vaddr & 0x1FFFFFFF : vaddr;
+    return p & (kRamSize - 1);
+  }
+  std::vector<u64> code_ = std::vector<u64>(kPages);  // bit w of page p: word p * 64 + w
+  std::vector<u32> dirty_;
+};
+
+}  // namespace psx

@@ -1,0 +1,143 @@
+// The R3000A recompiler: runs CpuT::run()'s instructions from blocks of x86-64 code compiled on
+// a block's first execution (block_emitter.h), kept in a cache by address and dropped when RAM
+// holding them is written (block_cache.h, code_pages.h).
+//
+// Exact by construction: a block is the straight-line code from its first address up to and
+// including a branch or jump and its delay slot (or kMaxBlock instructions), and each of its
+// instructions is one step that does what one pass of the interpreter's run() loop does, minus
+// the block lookup: the same deadline, stop and idle-loop checks, the BIOS hooks and interrupts
+// through CpuT::step(), and the instruction itself through CpuT::execute_at_pc() (fetch through
+// the i-cache model with its timing, the load shadow, execute, the load delay slot), or, when the
+// i-cache holds the compiled word on a whole line (a fetch without time or fill), the same
+// bookkeeping without fetch and decode (recompiler_ops.h). A step goes
+// on to the next only while the CPU is where the block expects (pc + 4): an exception, an
+// interrupt, a hook that redirects, or code changed since compilation so that a branch appears
+// where none was, all leave the block for the dispatcher. Since each step fetches the word it
+// executes, a stale block still runs what the interpreter would.
+//
+// The interpreter stays the reference (tests/unit/recompiler_test.cpp runs both and compares
+// whole save states) and the fallback: where no code can be read, run() steps the interpreter.
+#pragma once
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+#include "core/cpu/cpu.h"
+#include "core/cpu/idle_skip.h"
+#include "core/cpu/recompiler/block_cache.h"
+#include "core/cpu/recompiler/block_emitter.h"
+#include "core/cpu/recompiler/code_pages.h"
+
+namespace psx {
+
+enum class RecOp : u32;
+
+template <class BusT>
+class RecompilerT {
+ public:
+  using Cpu = CpuT<BusT>;
+  static constexpr u32 kMaxBlock = 32;
+  static constexpr size_t kCodeBytes = 4 << 20;
+
+  struct Stats {
+    u64 compiled = 0;      // blocks compiled
+    u64 invalidated = 0;   // times written pages' blocks were dropped
+    u64 flushes = 0;       // times the code buffer filled up and every block was dropped
+  };
+
+  // BusT provides peek_code(vaddr, word): the word a fetch would execute, false where none.
+  explicit RecompilerT(BusT& bus) : bus_(bus) {}
+
+  // CpuT::run() with the recompiler attached.
+  void run(Cpu& cpu);
+  // The page map the bus reports RAM writes to.
+  CodePages& code_pages() { return pages_; }
+  const Stats& stats() const { return stats_; }
+  size_t blocks() const { return cache_.size(); }
+
+ private:
+  BlockEmitter::BlockFn compile(Cpu& cpu, u32 pc);
+  static bool ends_block(u32 instr);
+  // The steps (recompiler_ops.h).
+  static BlockEmitter::StepFn step_for(u32 word);
+  static RecOp classify(u32 instr);
+  [[gnu::always_inline]] static bool may_step(Cpu& c, u32 pc);
+  static bool step_at(void* cpu, u32 pc, u32 word);
+  template <RecOp K>
+  static bool step_fast(void* cpu, u32 pc, u32 word);
+  template <RecOp K>
+  static void exec(Cpu& c, u32 instr);
+
+  BusT& bus_;
+  CodePages pages_;
+  BlockCache cache_;
+  std::unique_ptr<BlockEmitter> emitter_;  // made on first use: consoles that never recompile
+                                           // allocate no code buffer
+  Stats stats_;
+  std::vector<BlockEmitter::Step> steps_;
+};
+
+template <class BusT>
+void RecompilerT<BusT>::run(Cpu& cpu) {
+  cpu.stop_ = false;
+  while (!cpu.stop_ && cpu.sched_.now() < cpu.sched_.next_deadline()) {
+    if constexpr (std::is_same_v<BusT, Bus>) {  // as CpuT::run()
+      if (cpu.pc_ == cpu.loop_head_ && cpu.idle_skip_) {
+        cpu.loop_head_ = Cpu::kNoLoopHead;
+        cpu.idle_skip_->at_loop_head(cpu);
+        continue;
+      }
+    }
+    if (pages_.any_dirty()) {
+      for (u32 page : pages_.take_dirty()) cache_.invalidate_page(page);
+      ++stats_.invalidated;
+    }
+    BlockEmitter::BlockFn block = cache_.find(cpu.pc_);
+    if (!block) block = compile(cpu, cpu.pc_);
+    if (block) block();
+    else cpu.step();
+  }
+}
+
+template <class BusT>
+bool RecompilerT<BusT>::ends_block(u32 instr) {
+  const u32 op = instr >> 26;
+  if (op >= 0x01 && op <= 0x07) return true;  // BcondZ, J, JAL, BEQ, BNE, BLEZ, BGTZ
+  if (op != 0) return false;
+  const u32 funct = instr & 63;
+  return funct == 0x08 || funct == 0x09;  // JR, JALR
+}
+
+template <class BusT>
+BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
+  steps_.clear();
+  u32 a = pc, word;
+  bool delay_slot = false;
+  while (steps_.size() < kMaxBlock && bus_.peek_code(a, word)) {
+    steps_.push_back({a, word, step_for(word)});
+    if (delay_slot) break;
+    delay_slot = ends_block(word);
+    a += 4;
+  }
+  if (steps_.empty()) return nullptr;  // no code there: the interpreter raises the bus error
+  if (!emitter_) emitter_ = std::make_unique<BlockEmitter>(kCodeBytes);
+  BlockEmitter::BlockFn fn = emitter_->emit(&cpu, steps_);
+  if (!fn) {
+    ++stats_.flushes;
+    cache_.clear();
+    pages_.clear();
+    emitter_->clear();
+    fn = emitter_->emit(&cpu, steps_);
+  }
+  const u32 first = CodePages::page_of(pc), last = CodePages::page_of(steps_.back().pc);
+  if (first != CodePages::kNoPage && last != CodePages::kNoPage) pages_.mark_compiled(pc, steps_.back().pc);
+  cache_.insert(pc, fn, first, last);
+  ++stats_.compiled;
+  return fn;
+}
+
+using Recompiler = RecompilerT<Bus>;
+
+}  // namespace psx
+
+#include "core/cpu/recompiler/recompiler_ops.h"

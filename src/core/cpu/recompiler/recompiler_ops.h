@@ -1,0 +1,138 @@
+// The recompiler's steps (recompiler.h): the generic one, which runs CpuT::execute_at_pc(), and
+// the fast one for code on the console's bus, which skips fetch and decode when the i-cache holds
+// the word the block was compiled from, running that instruction's semantics chosen at compile
+// time. Each does exactly what one pass of CpuT::run()'s loop does.
+#pragma once
+#include "core/cpu/decode.h"
+
+namespace psx {
+
+// The instructions with a handler of their own: register-only ALU operations, which touch neither
+// memory nor coprocessors and raise no exception. Everything else runs through CpuT::execute().
+enum class RecOp : u32 {
+  Other, Addiu, Slti, Sltiu, Andi, Ori, Xori, Lui,
+  Sll, Srl, Sra, Addu, Subu, And, Or, Xor, Nor, Slt, Sltu,
+};
+
+template <class BusT>
+RecOp RecompilerT<BusT>::classify(u32 i) {
+  static constexpr RecOp kPrimary[16] = {RecOp::Other, RecOp::Other, RecOp::Other, RecOp::Other,
+                                         RecOp::Other, RecOp::Other, RecOp::Other, RecOp::Other,
+                                         RecOp::Other, RecOp::Addiu, RecOp::Slti, RecOp::Sltiu,
+                                         RecOp::Andi, RecOp::Ori, RecOp::Xori, RecOp::Lui};
+  const u32 op = i >> 26;
+  if (op != 0) return op < 16 ? kPrimary[op] : RecOp::Other;
+  switch (i & 63) {
+    case 0x00: return RecOp::Sll;
+    case 0x02: return RecOp::Srl;
+    case 0x03: return RecOp::Sra;
+    case 0x21: return RecOp::Addu;
+    case 0x23: return RecOp::Subu;
+    case 0x24: return RecOp::And;
+    case 0x25: return RecOp::Or;
+    case 0x26: return RecOp::Xor;
+    case 0x27: return RecOp::Nor;
+    case 0x2A: return RecOp::Slt;
+    case 0x2B: return RecOp::Sltu;
+    default: return RecOp::Other;
+  }
+}
+
+// The semantics of CpuT::execute() for the instructions RecOp names (cpu_execute.h).
+template <class BusT>
+template <RecOp K>
+void RecompilerT<BusT>::exec(Cpu& c, u32 i) {
+  using namespace cpu_detail;
+  const u32 s = c.regs_[rs(i)], t = c.regs_[rt(i)];
+  if constexpr (K == RecOp::Addiu) c.write_reg(rt(i), s + simm(i));
+  else if constexpr (K == RecOp::Slti) c.write_reg(rt(i), s32(s) < s32(simm(i)));
+  else if constexpr (K == RecOp::Sltiu) c.write_reg(rt(i), s < simm(i));
+  else if constexpr (K == RecOp::Andi) c.write_reg(rt(i), s & imm(i));
+  else if constexpr (K == RecOp::Ori) c.write_reg(rt(i), s | imm(i));
+  else if constexpr (K == RecOp::Xori) c.write_reg(rt(i), s ^ imm(i));
+  else if constexpr (K == RecOp::Lui) c.write_reg(rt(i), imm(i) << 16);
+  else if constexpr (K == RecOp::Sll) c.write_reg(rd(i), t << shamt(i));
+  else if constexpr (K == RecOp::Srl) c.write_reg(rd(i), t >> shamt(i));
+  else if constexpr (K == RecOp::Sra) c.write_reg(rd(i), u32(s32(t) >> shamt(i)));
+  else if constexpr (K == RecOp::Addu) c.write_reg(rd(i), s + t);
+  else if constexpr (K == RecOp::Subu) c.write_reg(rd(i), s - t);
+  else if constexpr (K == RecOp::And) c.write_reg(rd(i), s & t);
+  else if constexpr (K == RecOp::Or) c.write_reg(rd(i), s | t);
+  else if constexpr (K == RecOp::Xor) c.write_reg(rd(i), s ^ t);
+  else if constexpr (K == RecOp::Nor) c.write_reg(rd(i), ~(s | t));
+  else if constexpr (K == RecOp::Slt) c.write_reg(rd(i), s32(s) < s32(t));
+  else if constexpr (K == RecOp::Sltu) c.write_reg(rd(i), s < t);
+  else c.execute(i);
+}
+
+// The checks at the top of CpuT::run()'s loop and CpuT::step(): whether the step can run the
+// instruction itself (true), or must leave the block (false, having stepped the CPU through a
+// hook or an interrupt where one was due).
+template <class BusT>
+inline bool RecompilerT<BusT>::may_step(Cpu& c, u32 pc) {
+  if (c.stop_ || c.sched_.now() >= c.sched_.next_deadline()) return false;
+  if (pc == c.loop_head_ && c.idle_skip_) return false;  // the dispatcher examines the loop
+  if (c.hook_armed_ || c.interrupt_pending()) {
+    c.step();
+    return false;
+  }
+  return true;
+}
+
+template <class BusT>
+bool RecompilerT<BusT>::step_at(void* context, u32 pc, u32) {
+  Cpu& c = *static_cast<Cpu*>(context);
+  if (!may_step(c, pc)) return false;
+  c.execute_at_pc();
+  return c.pc_ == pc + 4;
+}
+
+// CpuT::execute_at_pc() for an instruction fetched from a whole i-cache line (no time, no fill)
+// that is still the word compiled: the same bookkeeping in the same order, with K's semantics.
+template <class BusT>
+template <RecOp K>
+bool RecompilerT<BusT>::step_fast(void* context, u32 pc, u32 word) {
+  Cpu& c = *static_cast<Cpu*>(context);
+  if (!may_step(c, pc)) return false;
+  u32 fetched;
+  if ((c.cop0_.dcic & Cop0::kDcicPCE) || !c.bus_.fetch_hit(pc, fetched) || fetched != word) {
+    c.execute_at_pc();
+    return c.pc_ == pc + 4;
+  }
+  c.current_pc_ = pc;
+  c.in_delay_slot_ = c.next_in_delay_;
+  c.next_in_delay_ = false;
+  ++c.instructions_;
+  c.sched_.advance(1);
+  if (c.shadow_reg_) c.shadow_stall(word);
+  c.pc_ = c.next_pc_;
+  c.next_pc_ += 4;
+  exec<K>(c, word);
+  c.regs_[c.load_reg_] = c.load_val_;
+  c.regs_[0] = 0;
+  c.load_reg_ = c.new_load_reg_;
+  c.load_val_ = c.new_load_val_;
+  c.new_load_reg_ = 0;
+  c.new_load_val_ = 0;
+  return c.pc_ == pc + 4;
+}
+
+template <class BusT>
+BlockEmitter::StepFn RecompilerT<BusT>::step_for(u32 word) {
+  if constexpr (!std::is_same_v<BusT, Bus>) {
+    return &step_at;  // a bus without the i-cache model: every step fetches
+  } else {
+    switch (classify(word)) {
+#define PSXRL_REC_OP(name) \
+  case RecOp::name: return &step_fast<RecOp::name>;
+      PSXRL_REC_OP(Addiu) PSXRL_REC_OP(Slti) PSXRL_REC_OP(Sltiu) PSXRL_REC_OP(Andi) PSXRL_REC_OP(Ori)
+      PSXRL_REC_OP(Xori) PSXRL_REC_OP(Lui) PSXRL_REC_OP(Sll) PSXRL_REC_OP(Srl) PSXRL_REC_OP(Sra)
+      PSXRL_REC_OP(Addu) PSXRL_REC_OP(Subu) PSXRL_REC_OP(And) PSXRL_REC_OP(Or) PSXRL_REC_OP(Xor)
+      PSXRL_REC_OP(Nor) PSXRL_REC_OP(Slt) PSXRL_REC_OP(Sltu) PSXRL_REC_OP(Other)
+#undef PSXRL_REC_OP
+    }
+    return &step_at;
+  }
+}
+
+}  // namespace psx

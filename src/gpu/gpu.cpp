@@ -234,9 +234,18 @@ void Gpu::do_state(StateIO& s) {
     draw_.drop();
   else
     draw_.frame_ready();
-  std::vector<u16> vram(renderer_->vram(), renderer_->vram() + gpu::kVramPixels);
-  s.bytes(vram.data(), vram.size() * sizeof(u16));
-  if (s.loading()) renderer_->load_vram(vram.data());
+  // VRAM goes straight between the state and the renderer where it can (no 1 MiB copy; it was
+  // most of a snapshot restore). Saving only reads through the pointer.
+  constexpr size_t kVramBytes = size_t{gpu::kVramPixels} * sizeof(u16);
+  if (!s.loading()) {
+    s.bytes(const_cast<u16*>(renderer_->vram()), kVramBytes);
+  } else if (u16* direct = renderer_->vram_in_place()) {
+    s.bytes(direct, kVramBytes);
+  } else {
+    std::vector<u16> vram(gpu::kVramPixels);
+    s.bytes(vram.data(), kVramBytes);
+    renderer_->load_vram(vram.data());
+  }
   s.pod(gp0_mode_);
   if (s.loading() && gp0_mode_ > Gp0Mode::CpuToVram) s.fail("bad GP0 mode");
   s.pod(fifo_);

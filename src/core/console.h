@@ -164,6 +164,10 @@ class Console : private CpuHooks {
     return {d.native_rgb(), d.native_width(), d.native_height()};
   }
   const u16* vram() const { return gpu_.vram(); }
+  // Whether anything looks at pixels (on at power-on). Off, drawing waits until something reads
+  // VRAM or asks for a frame, and is then done exactly as it would have been (gpu/draw_queue.h):
+  // for runs whose observations are not pictures.
+  void set_pixels_observed(bool observed) { gpu_.set_deferred_drawing(!observed); }
   static constexpr u32 kVramWidth = 1024, kVramHeight = 512;
   void take_audio(std::vector<StereoSample>& out) { spu_.take_samples(out); }
   // Untaken audio is capped at one minute (the oldest half is dropped) unless the whole run's

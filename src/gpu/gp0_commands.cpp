@@ -118,10 +118,10 @@ void Gpu::gp0_polygon() {
   t.shaded = shaded, t.textured = textured, t.semi = c & 0x02, t.raw = c & 0x01;
   const gpu::DrawState& ds = draw_state();
   t.v[0] = v[0], t.v[1] = v[1], t.v[2] = v[2];
-  renderer_->draw_triangle(t, ds);
+  draw_.triangle(t, ds);
   if (corners == 4) {
     t.v[0] = v[1], t.v[1] = v[2], t.v[2] = v[3];
-    renderer_->draw_triangle(t, ds);
+    draw_.triangle(t, ds);
   }
 }
 
@@ -134,7 +134,7 @@ void Gpu::gp0_line() {
   set_colour(l.v[0], fifo_[0]);
   l.v[1] = decode_vertex(fifo_[l.shaded ? 3 : 2]);
   set_colour(l.v[1], fifo_[l.shaded ? 2 : 0]);
-  renderer_->draw_line(l, draw_state());
+  draw_.line(l, draw_state());
   if (!(c & 0x08)) return;
   gp0_mode_ = Gp0Mode::Polyline;
   polyline_last_ = l.v[1];
@@ -160,7 +160,7 @@ void Gpu::gp0_polyline_word(u32 word) {
   l.v[0] = polyline_last_;
   l.v[1] = decode_vertex(word);
   set_colour(l.v[1], polyline_colour_);
-  renderer_->draw_line(l, draw_state());
+  draw_.line(l, draw_state());
   polyline_last_ = l.v[1];
 }
 
@@ -186,7 +186,7 @@ void Gpu::gp0_rectangle() {
   } else {
     r.width = r.height = kSizes[size];
   }
-  renderer_->draw_rectangle(r, draw_state());
+  draw_.rectangle(r, draw_state());
 }
 
 // GP0(02): X rounded down and width rounded up to 16 pixels; Y and height as given (9 bits).
@@ -194,13 +194,13 @@ void Gpu::gp0_fill_rectangle() {
   const u32 xy = fifo_[1], wh = fifo_[2];
   const u32 x = xy & 0x3F0, y = (xy >> 16) & 0x1FF;
   const u32 width = ((wh & 0x3FF) + 0xF) & ~0xFu, height = (wh >> 16) & 0x1FF;
-  renderer_->fill(x, y, width, height, gpu::rgb24_to_15(fifo_[0]));
+  draw_.fill(x, y, width, height, gpu::rgb24_to_15(fifo_[0]));
 }
 
 void Gpu::gp0_copy_rectangle() {
   const u32 src = fifo_[1], dst = fifo_[2], wh = fifo_[3];
   gpu::MaskMode m{(mask_bits_ & 1) != 0, (mask_bits_ & 2) != 0};
-  renderer_->copy(src & 0x3FF, (src >> 16) & 0x1FF, dst & 0x3FF, (dst >> 16) & 0x1FF, transfer_width(wh),
+  draw_.copy(src & 0x3FF, (src >> 16) & 0x1FF, dst & 0x3FF, (dst >> 16) & 0x1FF, transfer_width(wh),
                   transfer_height(wh), m);
 }
 
@@ -222,7 +222,7 @@ void Gpu::upload_pixels(const u16* pixels, u32 count) {
   u32 i = 0;
   while (i < count && upload_.active) {
     u32 take = std::min(count - i, upload_.width - upload_.col);
-    renderer_->write_row(upload_.x + upload_.col, upload_.y + upload_.row, pixels + i, take, m);
+    draw_.write_row(upload_.x + upload_.col, upload_.y + upload_.row, pixels + i, take, m);
     i += take;
     upload_.col += take;
     if (upload_.col < upload_.width) continue;

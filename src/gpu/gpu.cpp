@@ -15,6 +15,7 @@ Gpu::Gpu(Scheduler& sched, InterruptController& irq)
       irq_(irq),
       renderer_(std::make_unique<gpu::SoftwareRenderer>()),
       timing_(sched, [this] { vblank_started(); }) {
+  draw_.set_target(renderer_.get());
   gp1_reset();
 }
 
@@ -72,7 +73,7 @@ bool Gpu::dma_request() const { return (gpustat() >> 25) & 1; }
 u32 Gpu::gpuread() {
   if (!download_.active) return gpuread_latch_;
   // GP0(C0): two pixels per word, low halfword first, wrapping at the VRAM edges.
-  const u16* v = renderer_->vram();
+  const u16* v = vram();
   u32 word = 0;
   for (u32 half = 0; half < 2 && download_.active; ++half) {
     word |= u32{v[gpu::vram_index(download_.x + download_.col, download_.y + download_.row)]} << (16 * half);
@@ -186,26 +187,35 @@ gpu::DisplayArea Gpu::display_area() const {
   return a;
 }
 
+// The picture is taken again from the new renderer, at its scale, from VRAM as it is now.
 void Gpu::set_renderer(std::unique_ptr<gpu::Renderer> renderer) {
-  renderer->load_vram(renderer_->vram());
+  renderer->load_vram(vram());
   renderer_ = std::move(renderer);
-  output_.refresh(*renderer_, display_area());
+  draw_.set_target(renderer_.get());
+  draw_.frame_due(display_area());
+  set_deferred_drawing(deferral_wanted_);
+}
+
+void Gpu::set_deferred_drawing(bool on) {
+  deferral_wanted_ = on;
+  draw_.set_deferred(on && dynamic_cast<gpu::SoftwareRenderer*>(renderer_.get()) != nullptr);
 }
 
 void Gpu::vblank_started() {
-  output_.refresh(*renderer_, display_area());
+  draw_.frame_due(display_area());
   irq_.raise(Irq::VBlank);
   if (on_vblank) on_vblank();
 }
 
 const u8* Gpu::vram_rgb() {
   vram_rgb_.resize(size_t{gpu::kVramPixels} * 3);
-  gpu::FrameOutput::vram_to_rgb(renderer_->vram(), vram_rgb_.data());
+  gpu::FrameOutput::vram_to_rgb(vram(), vram_rgb_.data());
   return vram_rgb_.data();
 }
 
 // Converts the display area as VRAM holds it now (a program may have drawn since the last VBlank).
 bool Gpu::write_display_png(const std::string& path, std::string& error) const {
+  draw_.flush();
   gpu::FrameOutput now;
   now.refresh(*renderer_, display_area());
   return gpu::write_png_rgb(path, now.rgb(), now.width(), now.height(), error);
@@ -219,9 +229,23 @@ void Gpu::do_state(StateIO& s) {
   // Version 2 saves the polyline vertex field by field; version 1 saved the struct whole, with
   // its padding bytes, which made equal consoles give unequal states.
   const u32 version = s.section("GPU ", 2, 1);
-  std::vector<u16> vram(renderer_->vram(), renderer_->vram() + gpu::kVramPixels);
-  s.bytes(vram.data(), vram.size() * sizeof(u16));
-  if (s.loading()) renderer_->load_vram(vram.data());
+  // A state holds what eager drawing would have: everything drawn, the last VBlank's picture.
+  if (s.loading())
+    draw_.drop();
+  else
+    draw_.frame_ready();
+  // VRAM goes straight between the state and the renderer where it can (no 1 MiB copy; it was
+  // most of a snapshot restore). Saving only reads through the pointer.
+  constexpr size_t kVramBytes = size_t{gpu::kVramPixels} * sizeof(u16);
+  if (!s.loading()) {
+    s.bytes(const_cast<u16*>(renderer_->vram()), kVramBytes);
+  } else if (u16* direct = renderer_->vram_in_place()) {
+    s.bytes(direct, kVramBytes);
+  } else {
+    std::vector<u16> vram(gpu::kVramPixels);
+    s.bytes(vram.data(), kVramBytes);
+    renderer_->load_vram(vram.data());
+  }
   s.pod(gp0_mode_);
   if (s.loading() && gp0_mode_ > Gp0Mode::CpuToVram) s.fail("bad GP0 mode");
   s.pod(fifo_);

@@ -13,6 +13,7 @@
 #include "core/scheduler.h"
 #include "core/state.h"
 #include "core/types.h"
+#include "gpu/draw_queue.h"
 #include "gpu/frame_output.h"
 #include "gpu/renderer.h"
 #include "gpu/video_timing.h"
@@ -43,15 +44,29 @@ class Gpu final : public IoDevice, public DmaPort {
   const gpu::Renderer& renderer() const { return *renderer_; }
 
   void set_video_signals(VideoSignals* signals) { timing_.set_signals(signals); }
-  // Called at the start of each VBlank, after the display buffer was refreshed.
+  // Called at the start of each VBlank, after the frame was noted.
   std::function<void()> on_vblank;
 
-  // The displayed picture as RGB888 at the renderer's scale, refreshed at each VBlank.
-  const u8* display_rgb() const { return output_.rgb(); }
-  u32 display_width() const { return output_.width(); }
-  u32 display_height() const { return output_.height(); }
-  const gpu::FrameOutput& display() const { return output_; }
-  const u16* vram() const { return renderer_->vram(); }
+  // The displayed picture as RGB888 at the renderer's scale, as VRAM was at the last VBlank. It
+  // is converted on the first request after that VBlank (draw_queue.h), so these draw what is
+  // queued first; they are const because the answer is the same as if done at the VBlank.
+  const u8* display_rgb() const { return display().rgb(); }
+  u32 display_width() const { return display().width(); }
+  u32 display_height() const { return display().height(); }
+  const gpu::FrameOutput& display() const {
+    draw_.frame_ready();
+    return output_;
+  }
+  const u16* vram() const {
+    draw_.flush();
+    return renderer_->vram();
+  }
+  // When nothing looks at pixels, drawing commands may wait until something reads VRAM or asks
+  // for a frame (draw_queue.h); the results are the same either way. Off draws what waits. Only
+  // the software renderer defers: the queue's pruning follows its coverage rules.
+  void set_deferred_drawing(bool on);
+  bool deferred_drawing() const { return draw_.deferred(); }
+  size_t queued_draws() const { return draw_.size(); }
   // The whole VRAM as 1024x512 RGB888, converted on each call.
   const u8* vram_rgb();
 
@@ -108,8 +123,11 @@ class Gpu final : public IoDevice, public DmaPort {
   InterruptController& irq_;
   std::unique_ptr<gpu::Renderer> renderer_;
   gpu::VideoTiming timing_;
-  gpu::FrameOutput output_;
+  // Converted and drawn on demand, which const readers may trigger.
+  mutable gpu::FrameOutput output_;
+  mutable gpu::DrawQueue draw_{output_};
   std::vector<u8> vram_rgb_;
+  bool deferral_wanted_ = false;
 
   // GP0 state
   Gp0Mode gp0_mode_ = Gp0Mode::Command;

@@ -87,6 +87,9 @@ class Renderer {
   virtual const u16* vram() const = 0;
   // Replaces all of VRAM (save-state load, reset tests).
   virtual void load_vram(const u16* pixels) = 0;
+  // The backend's own VRAM when a state load may write it in place (the software renderer's),
+  // saving a 1 MiB copy per load; nullptr means load_vram must be used.
+  virtual u16* vram_in_place() { return nullptr; }
 
   // A backend may draw at a multiple of the native resolution (the OpenGL one, 1 to 8); vram()
   // is still the native contents (each N x N block's top-left sub-pixel, the native sample).

@@ -23,6 +23,7 @@ class SoftwareRenderer final : public Renderer {
 
   const u16* vram() const override { return vram_.data(); }
   void load_vram(const u16* pixels) override;
+  u16* vram_in_place() override { return vram_.data(); }
 
  private:
   template <int kTex, bool kRaw, bool kSemi, bool kShaded>

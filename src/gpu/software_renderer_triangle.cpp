@@ -14,15 +14,6 @@
 namespace psx::gpu {
 namespace {
 
-// ceil(n / d) for d > 0.
-inline s64 ceil_div(s64 n, s64 d) { return n >= 0 ? (n + d - 1) / d : -((-n) / d); }
-
-// x of the edge a->b on row y, rounded up to the first pixel at or right of it.
-inline s32 edge_x(const Vertex& a, const Vertex& b, s32 y) {
-  s64 dy = b.y - a.y;
-  return static_cast<s32>(ceil_div(s64{a.x} * dy + s64{y - a.y} * (b.x - a.x), dy));
-}
-
 // An attribute's value at (x, y): the top vertex's value plus half a unit, stepped by the plane.
 inline s32 attribute_at(s32 base, const Gradient& g, s32 dx, s32 dy) {
   return static_cast<s32>((s64{base} << kFrac) + (1 << (kFrac - 1)) + s64{g.dx} * dx + s64{g.dy} * dy);
@@ -55,16 +46,12 @@ void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds
 
   // Dither applies to Gouraud-shaded and texture-modulated polygons (psx-spx GP0(E1).9).
   PixelContext ctx(vram_.data(), ds, t.clut_x, t.clut_y, kGouraud || (kTex != kUntextured && !kRaw));
-  // cross > 0: the middle vertex lies right of the long edge a->c.
-  const bool long_edge_left = cross > 0;
   s32 y_begin = std::max(a.y, ds.area_top);
   s32 y_end = std::min(c.y - 1, ds.area_bottom);
   for (s32 y = y_begin; y <= y_end; ++y) {
     if ((y & 1) == ds.skip_row_parity) continue;
-    s32 x_long = edge_x(a, c, y);
-    s32 x_short = y < b.y ? edge_x(a, b, y) : edge_x(b, c, y);
-    s32 x_left = long_edge_left ? x_long : x_short;
-    s32 x_right = (long_edge_left ? x_short : x_long) - 1;
+    s32 x_left, x_right;
+    row_span(sorted, y, x_left, x_right);
     x_left = std::max(x_left, ds.area_left);
     x_right = std::min(x_right, ds.area_right);
     if (x_left > x_right) continue;

@@ -29,6 +29,27 @@ inline SortedTriangle sort_by_y(const Triangle& t) {
   return s;
 }
 
+// ceil(n / d) for d > 0.
+inline s64 ceil_div(s64 n, s64 d) { return n >= 0 ? (n + d - 1) / d : -((-n) / d); }
+
+// x of the edge a->b on row y, rounded up to the first pixel at or right of it.
+inline s32 edge_x(const Vertex& a, const Vertex& b, s32 y) {
+  s64 dy = b.y - a.y;
+  return static_cast<s32>(ceil_div(s64{a.x} * dy + s64{y - a.y} * (b.x - a.x), dy));
+}
+
+// The pixels a non-degenerate sorted triangle covers on row y (a.y <= y < c.y), before clipping:
+// left <= x <= right, the top-left fill rule leaving out the right edge. The rasterizer and the
+// deferred-drawing coverage test both use this, so they agree on every pixel.
+inline void row_span(const SortedTriangle& s, s32 y, s32& left, s32& right) {
+  const Vertex &a = *s.p[0], &b = *s.p[1], &c = *s.p[2];
+  const s32 x_long = edge_x(a, c, y);
+  const s32 x_short = y < b.y ? edge_x(a, b, y) : edge_x(b, c, y);
+  const bool long_edge_left = s.cross > 0;  // the middle vertex lies right of the long edge a->c
+  left = long_edge_left ? x_long : x_short;
+  right = (long_edge_left ? x_short : x_long) - 1;
+}
+
 // d(attribute)/dx and d(attribute)/dy in 12-bit fixed point for the plane through three vertices.
 struct Gradient {
   s32 dx = 0, dy = 0;

@@ -74,6 +74,9 @@ Env::Env(const EnvConfig& config) : config_(config) {
                                                      config_.obs + "'");
   console_ = std::make_unique<psx::Console>();
   use_renderer();
+  // Pictures are drawn only when asked for unless the observation is one (frame requests for a
+  // window or a video still get every frame, exactly).
+  console_->set_pixels_observed(obs_kind_ == ObsKind::Visual || obs_kind_ == ObsKind::Multimodal);
   boot();
 
   auto space = [&](std::string name, std::vector<std::int64_t> shape, DType d, double lo, double hi) {

@@ -1,0 +1,61 @@
+// One renderer call kept for later (deferred drawing, draw_queue.h), and the VRAM rectangles it
+// may write, may read, and surely overwrites. Write and read rectangles are supersets of what the
+// renderer touches (conservative: a command never touches VRAM outside them); the overwrite
+// rectangle is a subset of what it replaces whatever VRAM held before (exact, from the same span
+// rules the software rasterizer uses), or empty.
+#pragma once
+#include "core/types.h"
+#include "gpu/renderer.h"
+
+namespace psx::gpu {
+
+// A half-open VRAM rectangle [x0, x1) x [y0, y1); empty when x0 >= x1 or y0 >= y1.
+struct Rect {
+  s32 x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+  bool intersects(const Rect& o) const {
+    return !empty() && !o.empty() && x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1;
+  }
+  // An empty rectangle lies inside every rectangle.
+  bool contains(const Rect& o) const {
+    return o.empty() || (x0 <= o.x0 && o.x1 <= x1 && y0 <= o.y0 && o.y1 <= y1);
+  }
+  s64 area() const { return empty() ? 0 : s64{x1 - x0} * (y1 - y0); }
+};
+
+// A VRAM block starting at (x, y), wrapping at the VRAM edges: the block itself, or whole rows or
+// the whole VRAM where it wraps (a superset, for write and read rectangles).
+Rect wrapped_block(u32 x, u32 y, u32 width, u32 height);
+
+struct DrawCommand {
+  enum class Kind : u8 { Triangle, Line, Rectangle, Fill, Copy, Row };
+  Kind kind = Kind::Fill;
+  DrawState ds;  // Triangle, Line, Rectangle
+  Triangle triangle;
+  Line line;
+  Rectangle rectangle;
+  // Fill: x, y, width, height, pixel. Copy: src (sx, sy) to (x, y), width x height, mask.
+  // Row: width pixels at (x, y) from the queue's pixel store at `pixels`, mask.
+  u32 x = 0, y = 0, width = 0, height = 0, sx = 0, sy = 0;
+  u16 pixel = 0;
+  MaskMode mask;
+  u32 pixels = 0;
+  // Set by the queue: what this call (with the next one, for a triangle pair) surely replaces.
+  Rect cover;
+  bool cover_with_next = false;
+
+  Rect write_rect() const;
+  // Up to three rectangles of VRAM whose contents change what the command writes; returns the count.
+  u32 read_rects(Rect out[3]) const;
+  // What the command replaces whatever was there (fills, opaque untextured rectangles without
+  // the mask check); triangles are handled in pairs by triangle_pair_cover.
+  Rect overwrite_rect() const;
+};
+
+// The rectangle two triangles drawn one after the other surely replace together (a quad's two
+// halves, e.g. a full-screen Gouraud background), or empty when their union is not a rectangle
+// or either could keep old pixels (textured, semi-transparent, mask check, interlaced rows).
+Rect triangle_pair_cover(const DrawCommand& first, const DrawCommand& second);
+
+}  // namespace psx::gpu

@@ -1,0 +1,210 @@
+// Deferred drawing and on-demand frame conversion (see draw_queue.h).
+#include "gpu/draw_queue.h"
+
+#include <algorithm>
+
+namespace psx::gpu {
+namespace {
+
+// The VRAM a frame of `area` converts (FrameOutput::refresh): 15-bit pixels, or three bytes per
+// pixel in 24-bit mode; a disabled display reads nothing.
+Rect display_source(const DisplayArea& area) {
+  if (!area.enabled) return {};
+  const u32 width = std::clamp<u32>(area.width, 1, FrameOutput::kMaxWidth);
+  const u32 height = std::clamp<u32>(area.height, 1, FrameOutput::kMaxHeight);
+  return wrapped_block(area.x, area.y, area.rgb24 ? (width * 3 + 1) / 2 : width, height);
+}
+
+// Rectangles some kept later call may read, merged into their bounding box past a few (a
+// superset, so the pruning stays on the safe side).
+class Readers {
+ public:
+  void add(const Rect& r) {
+    if (r.empty()) return;
+    for (u32 i = 0; i < n_; ++i)
+      if (rects_[i].contains(r)) return;
+    if (n_ < kMax) {
+      rects_[n_++] = r;
+      return;
+    }
+    Rect& m = rects_[kMax - 1];
+    m = {std::min(m.x0, r.x0), std::min(m.y0, r.y0), std::max(m.x1, r.x1), std::max(m.y1, r.y1)};
+  }
+  // Reads inside `cover`, seen from before the call that replaces it, read that call's pixels.
+  void forget_inside(const Rect& cover) {
+    u32 kept = 0;
+    for (u32 i = 0; i < n_; ++i)
+      if (!cover.contains(rects_[i])) rects_[kept++] = rects_[i];
+    n_ = kept;
+  }
+  bool read(const Rect& w) const {
+    for (u32 i = 0; i < n_; ++i)
+      if (rects_[i].intersects(w)) return true;
+    return false;
+  }
+
+ private:
+  static constexpr u32 kMax = 16;
+  Rect rects_[kMax];
+  u32 n_ = 0;
+};
+
+}  // namespace
+
+void DrawQueue::set_deferred(bool on) {
+  if (!on) flush();
+  deferred_ = on;
+}
+
+void DrawQueue::triangle(const Triangle& t, const DrawState& ds) {
+  DrawCommand c;
+  c.kind = DrawCommand::Kind::Triangle, c.triangle = t, c.ds = ds;
+  push(c);
+}
+
+void DrawQueue::line(const Line& l, const DrawState& ds) {
+  DrawCommand c;
+  c.kind = DrawCommand::Kind::Line, c.line = l, c.ds = ds;
+  push(c);
+}
+
+void DrawQueue::rectangle(const Rectangle& r, const DrawState& ds) {
+  DrawCommand c;
+  c.kind = DrawCommand::Kind::Rectangle, c.rectangle = r, c.ds = ds;
+  push(c);
+}
+
+void DrawQueue::fill(u32 x, u32 y, u32 width, u32 height, u16 pixel) {
+  DrawCommand c;
+  c.kind = DrawCommand::Kind::Fill, c.x = x, c.y = y, c.width = width, c.height = height, c.pixel = pixel;
+  push(c);
+}
+
+void DrawQueue::copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 height, MaskMode m) {
+  DrawCommand c;
+  c.kind = DrawCommand::Kind::Copy, c.sx = src_x, c.sy = src_y, c.x = dst_x, c.y = dst_y;
+  c.width = width, c.height = height, c.mask = m;
+  push(c);
+}
+
+void DrawQueue::write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m) {
+  DrawCommand c;
+  c.kind = DrawCommand::Kind::Row, c.x = x, c.y = y, c.width = count, c.mask = m;
+  if (!deferred_) {
+    // Drawn now: the pixels need not be kept (execute reads them from `pixels`).
+    if (frame_pending_ && c.write_rect().intersects(frame_rect_)) convert_frame();
+    target_->write_row(x, y, pixels, count, m);
+    return;
+  }
+  c.pixels = static_cast<u32>(pixels_.size());
+  pixels_.insert(pixels_.end(), pixels, pixels + count);
+  push(c);
+}
+
+void DrawQueue::push(const DrawCommand& c) {
+  if (!deferred_) return execute(c, true);
+  queue_.push_back(c);
+  const size_t n = queue_.size();
+  DrawCommand& last = queue_.back();
+  last.cover = last.overwrite_rect();
+  size_t end = n - 1;
+  // Two triangles pair up unless a VBlank came between them (its frame sees only the first).
+  if (last.cover.empty() && n >= 2 && !(frame_pending_ && frame_position_ == n - 1)) {
+    DrawCommand& first = queue_[n - 2];
+    const Rect a = first.write_rect(), b = last.write_rect();
+    const Rect bounds{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+    const Rect pair = bounds.area() >= kMinCover ? triangle_pair_cover(first, last) : Rect{};
+    if (!pair.empty()) first.cover = pair, first.cover_with_next = true, end = n - 2;
+  }
+  if (queue_[end].cover.area() >= kMinCover) prune(queue_[end].cover, end);
+  if (queue_.size() > kMaxCommands || pixels_.size() > kMaxPixels) flush();
+}
+
+void DrawQueue::execute(const DrawCommand& c, bool after_frame) {
+  if (frame_pending_ && after_frame && c.write_rect().intersects(frame_rect_)) convert_frame();
+  using Kind = DrawCommand::Kind;
+  switch (c.kind) {
+    case Kind::Triangle: return target_->draw_triangle(c.triangle, c.ds);
+    case Kind::Line: return target_->draw_line(c.line, c.ds);
+    case Kind::Rectangle: return target_->draw_rectangle(c.rectangle, c.ds);
+    case Kind::Fill: return target_->fill(c.x, c.y, c.width, c.height, c.pixel);
+    case Kind::Copy: return target_->copy(c.sx, c.sy, c.x, c.y, c.width, c.height, c.mask);
+    case Kind::Row: return target_->write_row(c.x, c.y, pixels_.data() + c.pixels, c.width, c.mask);
+  }
+}
+
+void DrawQueue::flush() {
+  for (size_t i = 0; i < queue_.size(); ++i) execute(queue_[i], i >= frame_position_);
+  queue_.clear();
+  pixels_.clear();
+  frame_position_ = 0;
+}
+
+void DrawQueue::frame_due(const DisplayArea& area) {
+  frame_pending_ = true;
+  frame_area_ = area;
+  frame_rect_ = display_source(area);
+  frame_position_ = queue_.size();
+}
+
+void DrawQueue::frame_ready() {
+  flush();
+  if (frame_pending_) convert_frame();
+}
+
+void DrawQueue::convert_frame() {
+  output_.refresh(*target_, frame_area_);
+  frame_pending_ = false;
+}
+
+void DrawQueue::drop() {
+  queue_.clear();
+  pixels_.clear();
+  frame_pending_ = false;
+  frame_position_ = 0;
+}
+
+// Drops the calls before `end` that write only inside `cover` (which the call at `end` replaces)
+// and that nothing kept between them and the cover reads: walking back from the cover, each
+// kept call adds what it reads, the frame due reads its display area at its VBlank, and a kept
+// call that itself replaces a rectangle hides the reads inside it from the calls before it.
+void DrawQueue::prune(const Rect& cover, size_t end) {
+  std::vector<bool> keep(queue_.size(), true);
+  Readers readers;
+  bool frame_added = !frame_pending_;
+  bool any_dropped = false;
+  for (size_t i = end; i-- > 0;) {
+    if (!frame_added && i < frame_position_) readers.add(frame_rect_), frame_added = true;
+    const DrawCommand& c = queue_[i];
+    const Rect w = c.write_rect();
+    if (cover.contains(w) && !readers.read(w)) {
+      keep[i] = false, any_dropped = true;
+      continue;
+    }
+    if (!c.cover.empty() && (!c.cover_with_next || keep[i + 1])) readers.forget_inside(c.cover);
+    Rect reads[3];
+    const u32 n = c.read_rects(reads);
+    for (u32 k = 0; k < n; ++k) readers.add(reads[k]);
+  }
+  if (!any_dropped) return;
+  std::vector<DrawCommand> kept;
+  std::vector<u16> kept_pixels;
+  size_t position = 0;
+  for (size_t i = 0; i < queue_.size(); ++i) {
+    if (!keep[i]) continue;
+    if (i < frame_position_) ++position;
+    DrawCommand c = queue_[i];
+    if (c.cover_with_next && !keep[i + 1]) c.cover = {}, c.cover_with_next = false;
+    if (c.kind == DrawCommand::Kind::Row) {
+      const u32 at = static_cast<u32>(kept_pixels.size());
+      kept_pixels.insert(kept_pixels.end(), pixels_.begin() + c.pixels, pixels_.begin() + c.pixels + c.width);
+      c.pixels = at;
+    }
+    kept.push_back(c);
+  }
+  queue_.swap(kept);
+  pixels_.swap(kept_pixels);
+  frame_position_ = position;
+}
+
+}  // namespace psx::gpu

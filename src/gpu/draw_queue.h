@@ -1,0 +1,75 @@
+// Drawing and frame conversion on demand. Every renderer call of the GPU passes through here.
+//
+// Frames: at each VBlank the GPU only notes the display area (frame_due); the picture is
+// converted when someone asks for it (frame_ready), or earlier, just before a drawing call would
+// change a pixel it shows, so it is always VRAM as it was at that VBlank.
+//
+// Deferred drawing (set_deferred(true), for when nothing looks at pixels): calls are kept in
+// order instead of drawn, and drawn exactly as they would have been when anything needs VRAM
+// (flush). To keep the queue small when nothing ever looks, a call that surely replaces a large
+// rectangle (a GP0(02) fill, an opaque untextured rectangle, or two opaque untextured triangles
+// that together cover a rectangle, like a full-screen background quad) drops every earlier call
+// that writes only inside it, unless a later kept call, or the frame due, may read what it wrote.
+// Past a size cap the queue is drawn.
+#pragma once
+#include <vector>
+
+#include "gpu/draw_command.h"
+#include "gpu/frame_output.h"
+#include "gpu/renderer.h"
+
+namespace psx::gpu {
+
+class DrawQueue {
+ public:
+  // Calls beyond these are drawn at once (bounds the memory of a queue no one looks at).
+  static constexpr size_t kMaxCommands = 16384;
+  static constexpr size_t kMaxPixels = 256 * 1024;  // GP0(A0) pixels kept
+  // Covers smaller than this do not prune (a scan of the queue per small tile costs more than
+  // drawing it); a full-screen clear is 320x240 or more.
+  static constexpr s64 kMinCover = 128 * 128;
+
+  explicit DrawQueue(FrameOutput& output) : output_(output) {}
+
+  void set_target(Renderer* target) { target_ = target; }
+  // Off draws everything queued first.
+  void set_deferred(bool on);
+  bool deferred() const { return deferred_; }
+  size_t size() const { return queue_.size(); }
+
+  void triangle(const Triangle& t, const DrawState& ds);
+  void line(const Line& l, const DrawState& ds);
+  void rectangle(const Rectangle& r, const DrawState& ds);
+  void fill(u32 x, u32 y, u32 width, u32 height, u16 pixel);
+  void copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 height, MaskMode m);
+  void write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m);
+
+  // Draws everything queued, in order.
+  void flush();
+  // The frame of this VBlank shows `area` of VRAM as it is now.
+  void frame_due(const DisplayArea& area);
+  // Makes the frame due (if any) the output's picture.
+  void frame_ready();
+  // Forgets the queue and the frame due (VRAM and the picture are being replaced: state load).
+  void drop();
+
+ private:
+  void push(const DrawCommand& c);
+  void execute(const DrawCommand& c, bool after_frame);
+  void convert_frame();
+  void prune(const Rect& cover, size_t end);
+
+  FrameOutput& output_;
+  Renderer* target_ = nullptr;
+  bool deferred_ = false;
+  std::vector<DrawCommand> queue_;
+  std::vector<u16> pixels_;  // the kept GP0(A0) rows' pixels
+  // The frame not yet converted: its area, the VRAM it reads, and how many queued calls came
+  // before its VBlank.
+  bool frame_pending_ = false;
+  DisplayArea frame_area_;
+  Rect frame_rect_;
+  size_t frame_position_ = 0;
+};
+
+}  // namespace psx::gpu

@@ -1,0 +1,309 @@
+// Deferred drawing and on-demand frames (gpu/draw_queue.h) must be invisible: a GPU that queues
+// its drawing ends with the same VRAM, pictures, GPUREAD words and save state as one that draws
+// at once (the reference), on random GP0/GP1 streams and on Tumble playing; a queue no one
+// reads stays small; a GPUREAD sees exactly the pixels drawn before it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "core/irq.h"
+#include "core/scheduler.h"
+#include "gpu/gpu.h"
+#include "tumble_console_util.h"
+
+namespace {
+
+using psx::u16;
+using psx::u32;
+using psx::u64;
+using psx::u8;
+
+// One GPU on its own scheduler.
+struct Rig {
+  psx::Scheduler sched;
+  psx::InterruptController irq;
+  psx::Gpu gpu{sched, irq};
+  u64 vblanks = 0;
+
+  Rig() { gpu.on_vblank = [this] { ++vblanks; }; }
+
+  void gp0(u32 w) { gpu.io_write(0, w, 4); }
+  void gp1(u32 w) { gpu.io_write(4, w, 4); }
+  u32 read() { return gpu.io_read(0, 4); }
+  // Runs to the next VBlank's start.
+  void frame() {
+    const u64 start = vblanks;
+    while (vblanks == start) {
+      sched.advance(sched.next_deadline() - sched.now());
+      sched.run_due_events();
+    }
+  }
+  std::vector<u8> state() {
+    psx::StateIO s;
+    gpu.do_state(s);
+    return s.buffer();
+  }
+  std::vector<u8> picture() const {
+    const u8* p = gpu.display_rgb();
+    return {p, p + size_t{gpu.display_width()} * gpu.display_height() * 3};
+  }
+};
+
+// The reference draws at once; the other defers. Every word goes to both.
+struct Twins {
+  Rig eager, lazy;
+  Twins() { lazy.gpu.set_deferred_drawing(true); }
+  void gp0(u32 w) { eager.gp0(w), lazy.gp0(w); }
+  void gp1(u32 w) { eager.gp1(w), lazy.gp1(w); }
+  void frame() { eager.frame(), lazy.frame(); }
+};
+
+u32 xy(int x, int y) { return (static_cast<u32>(y) & 0xFFFF) << 16 | (static_cast<u32>(x) & 0xFFFF); }
+
+// Random but valid GP0/GP1 traffic, weighted toward what games send: drawing-mode changes, small
+// primitives of every kind, large opaque covers (fills, rectangles, background quads) that let
+// the queue prune, transfers, VRAM copies, display changes and VBlanks.
+class Stream {
+ public:
+  explicit Stream(u32 seed) : rng_(seed) {}
+
+  void step(Twins& t, u32& frames, u32& reads) {
+    const u32 kind = pick(100);
+    if (kind < 8) return t.gp0(0xE1000000 | pick(0x4000));
+    if (kind < 10) return t.gp0(0xE2000000 | pick(1u << 20));
+    if (kind < 13) return area(t);
+    if (kind < 15) return t.gp0(0xE5000000 | pick(64) | pick(64) << 11);
+    if (kind < 17) return t.gp0(0xE6000000 | (pick(4) == 0 ? pick(4) : 0));
+    if (kind < 40) return polygon(t);
+    if (kind < 46) return cover(t);
+    if (kind < 56) return rectangle(t);
+    if (kind < 62) return line(t);
+    if (kind < 66) return fill(t);
+    if (kind < 69) {
+      t.gp0(0x80000000), t.gp0(xy(pick(1024), pick(512))), t.gp0(xy(pick(1024), pick(512)));
+      return t.gp0(xy(1 + pick(96), 1 + pick(96)));
+    }
+    if (kind < 73) return upload(t);
+    if (kind < 75) return download(t, reads);
+    if (kind < 78) return display(t);
+    ++frames;
+    t.frame();
+  }
+
+ private:
+  u32 pick(u32 n) { return std::uniform_int_distribution<u32>(0, n - 1)(rng_); }
+  u32 colour() { return pick(1u << 24); }
+  u32 vertex() { return xy(static_cast<int>(pick(420)) - 40, static_cast<int>(pick(300)) - 30); }
+
+  void area(Twins& t) {
+    if (pick(2)) {  // a full screen buffer, as games set it
+      const u32 y = pick(2) * 240;
+      t.gp0(0xE3000000 | y << 10), t.gp0(0xE4000000 | (y + 239) << 10 | 319);
+      return;
+    }
+    t.gp0(0xE3000000 | pick(1u << 19)), t.gp0(0xE4000000 | pick(1u << 19));
+  }
+  void polygon(Twins& t) {
+    const u32 c = 0x20 | pick(32);
+    t.gp0(c << 24 | colour());
+    const u32 corners = (c & 8) ? 4 : 3;
+    for (u32 k = 0; k < corners; ++k) {
+      if ((c & 0x10) && k > 0) t.gp0(colour());
+      t.gp0(vertex());
+      if (c & 4) t.gp0(pick(1u << 16) | (k == 0 ? pick(1u << 16) : k == 1 ? pick(0x1000) : 0) << 16);
+    }
+  }
+  // An opaque untextured cover of the drawing area's usual buffer: a background quad, as
+  // Tumble draws its sky, or an opaque rectangle.
+  void cover(Twins& t) {
+    const int y = pick(2) ? 0 : 240;
+    const int w = pick(4) == 0 ? 256 : 320, h = 240 - static_cast<int>(pick(2)) * 16;
+    if (pick(3) == 0) {
+      t.gp0(0x60000000 | colour()), t.gp0(xy(0, y)), t.gp0(xy(w, h));
+      return;
+    }
+    const u32 shaded = pick(2) ? 0x10 : 0;
+    t.gp0((0x28 | shaded) << 24 | colour()), t.gp0(xy(0, y));
+    if (shaded) t.gp0(colour());
+    t.gp0(xy(w, y));
+    if (shaded) t.gp0(colour());
+    t.gp0(xy(0, y + h));
+    if (shaded) t.gp0(colour());
+    t.gp0(xy(w, y + h));
+  }
+  void rectangle(Twins& t) {
+    const u32 c = 0x60 | pick(32);
+    t.gp0(c << 24 | colour()), t.gp0(vertex());
+    if (c & 4) t.gp0(pick(1u << 16) | pick(1u << 16) << 16);
+    if (((c >> 3) & 3) == 0) t.gp0(xy(pick(200), pick(200)));
+  }
+  void line(Twins& t) {
+    const u32 c = 0x40 | pick(32);
+    const bool shaded = c & 0x10;
+    t.gp0(c << 24 | colour()), t.gp0(vertex());
+    if (shaded) t.gp0(colour());
+    t.gp0(vertex());
+    if (!(c & 8)) return;
+    for (u32 k = pick(4); k > 0; --k) {
+      if (shaded) t.gp0(colour());
+      t.gp0(vertex());
+    }
+    t.gp0(0x55555555);
+  }
+  void fill(Twins& t) {
+    t.gp0(0x02000000 | colour());
+    if (pick(2)) {
+      t.gp0(xy(0, pick(2) * 240)), t.gp0(xy(320, 240));
+      return;
+    }
+    t.gp0(xy(pick(1024), pick(512))), t.gp0(xy(pick(1024), pick(512)));
+  }
+  void upload(Twins& t) {
+    const u32 w = 1 + pick(40), h = 1 + pick(40);
+    t.gp0(0xA0000000), t.gp0(xy(pick(1024), pick(512))), t.gp0(xy(w, h));
+    for (u32 i = 0; i < (w * h + 1) / 2; ++i) t.gp0(pick(0xFFFFFFFFu));
+  }
+  void download(Twins& t, u32& reads) {
+    const u32 w = 1 + pick(24), h = 1 + pick(24);
+    t.gp0(0xC0000000), t.gp0(xy(pick(1024), pick(512))), t.gp0(xy(w, h));
+    for (u32 i = 0; i < (w * h + 1) / 2; ++i) {
+      const u32 a = t.eager.read(), b = t.lazy.read();
+      ASSERT_EQ(a, b) << "GPUREAD word " << i;
+    }
+    ++reads;
+  }
+  void display(Twins& t) {
+    switch (pick(4)) {
+      case 0: return t.gp1(0x05000000 | pick(1024) | pick(512) << 10);
+      case 1: return t.gp1(0x08000000 | pick(0x80));
+      case 2: return t.gp1(0x03000000 | (pick(4) == 0));
+      default: return t.gp1(0x07000000 | 16 | (16 + 1 + pick(300)) << 10);
+    }
+  }
+
+  std::mt19937 rng_;
+};
+
+TEST(GpuDeferred, RandomStreamsEqualEagerDrawing) {
+  for (u32 seed = 1; seed <= 24; ++seed) {
+    SCOPED_TRACE(seed);
+    Twins t;
+    t.gp1(0x03000000);
+    Stream s(seed);
+    u32 frames = 0, reads = 0;
+    size_t most_queued = 0;
+    for (int i = 0; i < 4000; ++i) {
+      s.step(t, frames, reads);
+      most_queued = std::max(most_queued, t.lazy.gpu.queued_draws());
+      if (i % 500 == 499) {  // a frame request in the middle, sometimes
+        ASSERT_EQ(t.eager.picture(), t.lazy.picture()) << "picture at step " << i;
+      }
+      if (HasFatalFailure()) return;
+    }
+    EXPECT_GT(most_queued, 0u);  // the lazy GPU did defer
+    EXPECT_GT(frames, 0u);
+    EXPECT_GT(reads, 0u);
+    ASSERT_EQ(t.eager.state(), t.lazy.state());
+    ASSERT_EQ(std::memcmp(t.eager.gpu.vram(), t.lazy.gpu.vram(), psx::gpu::kVramPixels * 2), 0);
+    ASSERT_EQ(t.eager.picture(), t.lazy.picture());
+  }
+}
+
+// A frame is VRAM as it was at its VBlank, even when drawing afterwards changes the display
+// area before anyone asks (eager and deferred alike).
+TEST(GpuDeferred, FrameIsVramAtItsVblank) {
+  for (bool deferred : {false, true}) {
+    Rig r;
+    r.gpu.set_deferred_drawing(deferred);
+    r.gp1(0x08000001), r.gp1(0x03000000), r.gp1(0x05000000);
+    r.gp0(0x020000F8), r.gp0(xy(0, 0)), r.gp0(xy(320, 240));  // red (0xF8 -> 31) everywhere shown
+    r.frame();
+    r.gp0(0x0200F800), r.gp0(xy(0, 0)), r.gp0(xy(320, 240));  // green after the VBlank
+    const u8* rgb = r.gpu.display_rgb();
+    EXPECT_EQ(rgb[0], 255) << deferred;
+    EXPECT_EQ(rgb[1], 0) << deferred;
+    EXPECT_EQ(r.gpu.vram()[0], 31u << 5) << deferred;  // VRAM itself is green by now
+  }
+}
+
+// GPUREAD after queued drawing answers with the drawn pixels: a flat opaque rectangle of colour
+// (0xF8, 0x10, 0x80) stores 31 | 2 << 5 | 16 << 10 (the top five bits of each channel).
+TEST(GpuDeferred, GpureadSeesQueuedDrawing) {
+  Rig r;
+  r.gpu.set_deferred_drawing(true);
+  r.gp0(0xE3000000), r.gp0(0xE4000000 | 511u << 10 | 1023u);
+  r.gp0(0x608010F8), r.gp0(xy(100, 50)), r.gp0(xy(8, 4));
+  EXPECT_EQ(r.gpu.queued_draws(), 1u);
+  r.gp0(0xC0000000), r.gp0(xy(106, 53)), r.gp0(xy(4, 1));
+  const u32 pixel = 31u | 2u << 5 | 16u << 10;
+  EXPECT_EQ(r.read(), pixel | pixel << 16);  // (106, 53), (107, 53): inside
+  EXPECT_EQ(r.read(), 0u);                   // (108, 53), (109, 53): right of it
+  EXPECT_EQ(r.gpu.queued_draws(), 0u);
+}
+
+// A game that never lets anyone look, ordered as Tumble orders its frames: wait for the VBlank,
+// show the buffer drawn last frame, then draw the other one (the one the VBlank's frame showed):
+// a full-screen background quad and a few hundred small textured triangles. The queue holds
+// about two frames, far below its cap (so it is pruning, not flushing), and drawing it all gives
+// what eager drawing gave.
+TEST(GpuDeferred, QueueStaysBoundedWithoutObserver) {
+  Twins t;
+  t.gp1(0x08000001), t.gp1(0x03000000);
+  std::mt19937 rng(7);
+  size_t most = 0;
+  for (u32 frame = 0; frame < 600; ++frame) {
+    const u32 y = (frame & 1) * 240;
+    t.frame();
+    t.gp1(0x05000000 | (y ^ 240) << 10);
+    t.gp0(0xE3000000 | y << 10), t.gp0(0xE4000000 | (y + 239) << 10 | 319), t.gp0(0xE5000000 | y << 11);
+    t.gp0(0xE1000200 | 8);  // dither, texture page x 512, 4-bit
+    t.gp0(0x38141E5A), t.gp0(xy(0, 0)), t.gp0(0x141E5A), t.gp0(xy(320, 0));
+    t.gp0(0x967878), t.gp0(xy(0, 240)), t.gp0(0x967878), t.gp0(xy(320, 240));
+    for (u32 i = 0; i < 300; ++i) {
+      const int x = static_cast<int>(rng() % 300), yy = static_cast<int>(rng() % 220);
+      t.gp0(0x24808080), t.gp0(xy(x, yy)), t.gp0(0x78000000);
+      t.gp0(xy(x + 16, yy)), t.gp0(0x00080010), t.gp0(xy(x, yy + 16)), t.gp0(0x1000);
+    }
+    most = std::max(most, t.lazy.gpu.queued_draws());
+  }
+  EXPECT_LE(most, 4u * 302);
+  EXPECT_GT(most, 302u);
+  ASSERT_EQ(t.eager.state(), t.lazy.state());
+}
+
+// Tumble, playing a level with the console's pixels unobserved, ends every move in the same
+// whole save state as with them observed.
+TEST(GpuDeferred, TumbleMovesSameStates) {
+  using tumble_test::TumbleConsole;
+  TumbleConsole seen, unseen;
+  unseen.console.set_pixels_observed(false);
+  ASSERT_TRUE(seen.start_level(1));
+  ASSERT_TRUE(unseen.start_level(1));
+  size_t queued = 0;
+  const psx::u16 moves[] = {psx::pad_button::kUp, psx::pad_button::kLeft, psx::pad_button::kUp, psx::pad_button::kRight,
+                            psx::pad_button::kCross, psx::pad_button::kUp};
+  for (psx::u16 m : moves) {
+    seen.move(m);
+    unseen.move(m);
+    queued = std::max(queued, unseen.console.gpu().queued_draws());
+    ASSERT_EQ(seen.console.save_state(false), unseen.console.save_state(false));
+  }
+  EXPECT_GT(queued, 0u);
+  // Left alone for ten seconds of play, the queue stays far below its cap (the sky quad prunes).
+  size_t most = 0;
+  for (int f = 0; f < 600; ++f) {
+    unseen.console.run_frame(), seen.console.run_frame();
+    most = std::max(most, unseen.console.gpu().queued_draws());
+  }
+  EXPECT_LT(most, psx::gpu::DrawQueue::kMaxCommands / 4);
+  ASSERT_EQ(seen.console.save_state(false), unseen.console.save_state(false));
+  const psx::Console::Frame a = seen.console.frame(), b = unseen.console.frame();
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+  EXPECT_EQ(std::memcmp(a.rgb, b.rgb, size_t{a.width} * a.height * 3), 0);
+}
+
+}  // namespace

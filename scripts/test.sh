@@ -4,7 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
-ctest --test-dir build --output-on-failure -j2
+# -j3 on 2 cores: the window tests play in real time and mostly wait.
+ctest --test-dir build --output-on-failure -j3
 
 # The same tests again under AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer:
 # guest programs and user files must never make the emulator touch memory it does not own, leak,
@@ -17,7 +18,7 @@ cmake --build build-sanitize
 # tests/lsan.supp names the system libraries (X11, Mesa, SDL) whose process-lifetime allocations
 # LeakSanitizer would otherwise report; psxrl's own allocations are never suppressed.
 ASAN_OPTIONS=detect_leaks=1:exitcode=99 UBSAN_OPTIONS=exitcode=99:print_stacktrace=1 \
-  LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp ctest --test-dir build-sanitize --output-on-failure -j2
+  LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp ctest --test-dir build-sanitize --output-on-failure -j3
 
 # Every parser of user files and the CPU/GPU guest side fuzzed briefly (fuzz/, scripts/fuzz.sh):
 # past crashes are replayed and a few seconds per target look for new ones.

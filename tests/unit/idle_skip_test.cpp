@@ -153,7 +153,9 @@ void expect_same(const std::function<void(Console&)>& boot, const std::function<
   EXPECT_EQ(off.cycles(), on.cycles());
   EXPECT_EQ(off.instructions(), on.instructions());
   EXPECT_TRUE(off.save_state(false) == on.save_state(false)) << "state differs with idle skipping";
-  if (expect_skips) EXPECT_GT(on.idle_skip_stats().skips, 0u);
+  if (expect_skips) {
+    EXPECT_GT(on.idle_skip_stats().skips, 0u);
+  }
 }
 
 TEST(IdleSkipPrograms, TumbleTitle) {

@@ -34,7 +34,7 @@ TEST(EpisodeSeed, DistinctInputsGiveDistinctSeeds) {
 // Sanitizer builds run the emulator several times slower; fewer steps still cover automatic
 // resets there (random play on level 1 ends an episode every few moves).
 #if defined(__SANITIZE_ADDRESS__)
-constexpr int kSteps = 25;
+constexpr int kSteps = 15;
 #else
 constexpr int kSteps = 60;
 #endif

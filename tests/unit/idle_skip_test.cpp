@@ -163,26 +163,11 @@ TEST(IdleSkipPrograms, TumbleTitle) {
 }
 
 TEST(IdleSkipPrograms, TumbleLevelWithMoves) {
-  auto play = [](Console& c) {
-    c.run_frames(200);
-    c.write32(tumble_test::kContractAddress + TUMBLE_FIELD(request_level), 1);
-    for (int i = 0; i < 6; ++i) {
-      c.press_for(1, psx::pad_button::kRight, 8);
-      c.run_frames(30);
-      c.press_for(1, psx::pad_button::kUp, 8);
-      c.run_frames(30);
-    }
-  };
-  expect_same([](Console& c) { c.boot_exe(TUMBLE_EXE); }, play);
+  expect_same([](Console& c) { c.boot_exe(TUMBLE_EXE); }, tumble_test::play_level_one_moves);
 }
 
 TEST(IdleSkipPrograms, CdbootRomBootsTumbleDisc) {
-  auto boot = [](Console& c) {
-    c.load_bios(PSXRL_BUILD_DIR "/tests/roms/cdboot_rom.bin");
-    c.insert_disc(TUMBLE_CUE);
-    c.boot_disc();
-  };
-  expect_same(boot, [](Console& c) { c.run_frames(300); });
+  expect_same(tumble_test::boot_disc_with_cdboot_rom, [](Console& c) { c.run_frames(300); });
 }
 
 TEST(IdleSkipPrograms, TestRoms) {

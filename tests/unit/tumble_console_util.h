@@ -19,6 +19,26 @@ constexpr psx::u32 kContractAddress = 0x80010000;
 
 enum class Boot { Exe, Disc };
 
+// Workloads the bit-identity tests (idle skipping, the recompiler) run under two configurations:
+// level 1 started through the contract, then six right/up rolls with the game's frames between.
+inline void play_level_one_moves(psx::Console& c) {
+  c.run_frames(200);
+  c.write32(kContractAddress + TUMBLE_FIELD(request_level), 1);
+  for (int i = 0; i < 6; ++i) {
+    c.press_for(1, psx::pad_button::kRight, 8);
+    c.run_frames(30);
+    c.press_for(1, psx::pad_button::kUp, 8);
+    c.run_frames(30);
+  }
+}
+
+// The cdboot test ROM as BIOS booting Tumble's disc through the emulated drive.
+inline void boot_disc_with_cdboot_rom(psx::Console& c) {
+  c.load_bios(PSXRL_BUILD_DIR "/tests/roms/cdboot_rom.bin");
+  c.insert_disc(TUMBLE_CUE);
+  c.boot_disc();
+}
+
 struct TumbleConsole {
   psx::Console console;
 

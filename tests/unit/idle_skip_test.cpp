@@ -79,6 +79,46 @@ TEST(IdleSkip, VBlankPollWithSpinCounterIsSkippedExactly) {
   EXPECT_GE(on.s1, 5u);
 }
 
+// After the event that ends a skip (the SPU's sample event, every 768 cycles, among others) the
+// loop is recorded again from its spin counter further on; the proof made the first time covers
+// it. Six frames of 564480 cycles hold over 4400 sample events, so thousands of skips, and the
+// states are equal with and without skipping (compare()).
+TEST(IdleSkip, SpinLoopReusesItsProofAfterEachEvent) {
+  Outcome on = compare(vblank_wait());
+  EXPECT_GT(on.stats.skips, 4400u);
+  EXPECT_LT(on.stats.proofs * 100, on.stats.skips);
+}
+
+// A countdown whose exit is 100 iterations after a skip must stop there even when the skip reuses
+// a proof made thousands of iterations earlier: the bound shrinks by the iterations since.
+TEST(IdleSkip, ReusedProofStillEndsACountdownOnTime) {
+  std::vector<u32> code = {lui(kT0, 0x0003), ori(kT0, kT0, 0x0D40),  // 200000
+                           addiu(kT0, kT0, -1), bne(kT0, 0, -2), kNop,
+                           addiu(kS1, kS1, 1), lui(kT0, 0x0001), ori(kT0, kT0, 0x86A0),  // 100000
+                           addiu(kT0, kT0, -1), bne(kT0, 0, -2), kNop,
+                           addiu(kS1, kS1, 1), j(0x80010000), kNop};
+  Outcome on = compare(code);
+  EXPECT_GT(on.stats.skips, 0u);
+  EXPECT_LT(on.stats.proofs * 10, on.stats.skips);
+  // Each round is 300000 iterations of 2 instructions and at least 3 cycles (1 + branch + nop
+  // slot), 900000+ cycles: six frames (3.39 M cycles) end within the fourth round.
+  EXPECT_GE(on.s1, 4u);
+}
+
+// The same loop entered again with another bound (t3, which the loop does not change) records
+// the same iteration from the same counter value, but the old proof's bound no longer holds.
+TEST(IdleSkip, LoopEnteredWithAnotherBoundIsProvenAgain) {
+  // t1 counts up to t3 = 70001, 50001, 30001, ...; s1 counts the rounds.
+  std::vector<u32> code = {lui(kT3, 1), ori(kT3, kT3, 0x1171), addiu(kT1, 0, 0),
+                           addiu(kT1, kT1, 1), bne(kT1, kT3, -2), kNop,
+                           addiu(kS1, kS1, 1), addiu(kT3, kT3, -20000), j(0x80010008), kNop};
+  Outcome on = compare(code);
+  EXPECT_GT(on.stats.skips, 0u);
+  // 70001 + 50001 + 30001 + 10001 iterations of at least 3 cycles: 480012 cycles, within the
+  // first frame (564480); the fifth bound, -9999, takes 2^32 - 9999 iterations.
+  EXPECT_EQ(on.s1, 4u);
+}
+
 TEST(IdleSkip, UncachedCodeIsSkippedExactly) {
   std::vector<u32> code = vblank_wait();
   code[15] = j(0xA0010004);

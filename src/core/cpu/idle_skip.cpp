@@ -56,6 +56,11 @@ u32 pure_load_bits(u32 sr, u32 vaddr, u32 width, bool sign) {
 // nothing can wait for it any more.
 Cycles shadow_left(Cycles done, Cycles now) { return done > now ? done - now : 0; }
 
+bool same_step(const IdleStep& a, const IdleStep& b) {
+  return a.pc == b.pc && a.instr == b.instr && a.load_addr == b.load_addr && a.load_value == b.load_value &&
+         a.load_bits == b.load_bits;
+}
+
 u32 load_width(u32 instr) {
   switch (instr >> 26) {
     case 0x20: case 0x24: return 1;  // LB, LBU
@@ -145,14 +150,27 @@ bool IdleSkip::examine(Cpu& cpu) {
   if (shadow0 != shadow1 || (shadow0 && shadow_reg0 != cpu.shadow_reg_)) return false;
 
   // 2. Prove the following iterations repeat it, each adding the same step to the registers.
-  IdleProof proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_);
-  if (!proof.run(path_.data(), path_len_)) return false;
+  u64 max_k;
+  if (!reuse_proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_, max_k)) {
+    IdleProof proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_);
+    if (!proof.run(path_.data(), path_len_)) return false;
+    max_k = proof.max_k();
+    ++stats_.proofs;
+    proven_.head = head;
+    proven_.len = path_len_;
+    std::copy(path_.begin(), path_.begin() + path_len_, proven_.path.begin());
+    proven_.before = regs0;
+    proven_.line = RegisterLine(regs0, cpu.regs_);
+    proven_.load_reg = cpu.load_reg_;
+    proven_.load_val = cpu.load_val_;
+    proven_.max_k = max_k;
+  }
 
   // 3. Skip whole iterations, ending before the deadline so the event's iteration is interpreted.
   const Cycles cost = t1 - t0;
   const u64 steps = cpu.instructions_ - i0;
   const u64 by_time = (deadline - 1 - t1) / cost;
-  const u64 n = proof.max_k() < by_time ? proof.max_k() + 1 : by_time;
+  const u64 n = max_k < by_time ? max_k + 1 : by_time;
   last_head_ = head;
   last_cost_ = cost;
   if (n == 0) return false;
@@ -163,6 +181,24 @@ bool IdleSkip::examine(Cpu& cpu) {
   ++stats_.skips;
   stats_.iterations += n;
   stats_.cycles += n * cost;
+  return true;
+}
+
+// The proof covers iterations k = 0..max_k after its recorded one, each starting from
+// before + (k+1)*step. An iteration recorded now that repeats the proven one step for step (the
+// same instructions, load addresses and values, hence the same decisions), adds the same step and
+// leaves the same load in flight, from before + j*step, is the proven iteration j - 1 or the
+// recorded one itself (j = 0); the iterations after it are the proven ones from j on.
+bool IdleSkip::reuse_proof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg,
+                           u32 load_val, u64& max_k) const {
+  const Proven& p = proven_;
+  if (p.head != path_[0].pc || p.len != path_len_ || p.load_reg != load_reg || p.load_val != load_val)
+    return false;
+  for (u32 i = 0; i < path_len_; ++i)
+    if (!same_step(p.path[i], path_[i])) return false;
+  u32 j;
+  if (!p.line.same_steps(before, after) || !p.line.iterations(p.before, before, j) || j > p.max_k) return false;
+  max_k = p.max_k == ~u64{0} ? p.max_k : p.max_k - j;
   return true;
 }
 

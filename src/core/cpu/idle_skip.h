@@ -21,10 +21,15 @@
 //     the allowed registers cannot change before the next event).
 //  3. The largest whole number of iterations that ends before the next event and within that bound
 //     is skipped.
+// A loop usually reaches its head again right after the event that ended a skip (the SPU's
+// sample event alone falls due every 768 cycles). Its next recorded iteration then mostly repeats
+// the last one proven, only started further along the same line (a spin counter a few iterations
+// on), and the proof is reused instead of redone: step 2 is most of the cost of an examination.
 #pragma once
 #include <array>
 
 #include "core/cpu/idle_proof.h"
+#include "core/cpu/register_line.h"
 #include "core/scheduler.h"
 #include "core/types.h"
 
@@ -42,6 +47,7 @@ class IdleSkip {
     u64 skips = 0;       // times iterations were skipped
     u64 iterations = 0;  // loop iterations skipped in all
     u64 cycles = 0;      // CPU cycles they took
+    u64 proofs = 0;      // proofs made (the other skips reused one)
   };
 
   // Called by the CPU's run loop with pc at a loop head; executes at least one instruction.
@@ -62,6 +68,22 @@ class IdleSkip {
     u32 failures = 0;
   };
   std::array<Backoff, 64> backoff_{};
+  // The last proof made: the iteration recorded, the registers it started from and added, the
+  // load in flight at its end, and its bound.
+  struct Proven {
+    u32 head = 1;
+    u32 len = 0;
+    std::array<IdleStep, kMaxPath> path{};
+    std::array<u32, 32> before{};
+    RegisterLine line;
+    u32 load_reg = 0, load_val = 0;
+    u64 max_k = 0;
+  };
+  // The bound for the iteration just recorded (path_, from `before` to `after`) taken from the
+  // last proof, when that proof covers it; false when the proof must be made.
+  bool reuse_proof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg,
+                   u32 load_val, u64& max_k) const;
+  Proven proven_;
   // The loop last proven and what one iteration of it costs.
   u32 last_head_ = 1;
   Cycles last_cost_ = 0;

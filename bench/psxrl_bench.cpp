@@ -173,15 +173,19 @@ void states(Json& json) {
   psxrl::rl::Env env(config);
   std::uint64_t seed = 0;
   const double reset = mean_ms(20, [&] { env.reset(1, ++seed); });
+  const psxrl::rl::Env::Snapshot start = env.snapshot();
+  const double reset_to = mean_ms(200, [&] { env.reset_to(start, ++seed); });
   std::printf("| save state (uncompressed, %.1f MiB) | %.3f ms |\n| load state | %.3f ms |\n", blob.size() / 1048576.0,
               save, load);
   std::printf("| snapshot (in memory) | %.3f ms |\n| restore snapshot | %.3f ms |\n", take, restore);
   std::printf("| environment reset (restore, then the frames that start the level) | %.3f ms |\n", reset);
+  std::printf("| environment reset to an in-memory snapshot (Env::reset_to) | %.3f ms |\n", reset_to);
   json.add("save_state_ms", save);
   json.add("load_state_ms", load);
   json.add("snapshot_ms", take);
   json.add("restore_ms", restore);
   json.add("env_reset_ms", reset);
+  json.add("env_reset_to_snapshot_ms", reset_to);
 }
 
 }  // namespace

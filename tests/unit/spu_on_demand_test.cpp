@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "rl/env.h"
 #include "spu/adpcm.h"
 #include "spu_test_util.h"
 #include "tumble_console_util.h"
@@ -230,4 +231,26 @@ TEST(SpuOnDemand, TumbleTitleAndLevelPlayGiveTheSameConsoleUnheard) {
   });
   check("after one more move");
   EXPECT_TRUE(sound) << "Tumble made no sound: the comparison did not cover the SPU's voices";
+}
+
+TEST(SpuOnDemand, EnvironmentMixesSoundOnlyWhenSomethingTakesIt) {
+  // Tumble's moves wait for silence (game.toml [moves] audio = true), so its default environment
+  // hears; with that off, only an audio observation or a front end's on_frame does.
+  auto heard = [](const std::string& obs, bool watch_audio, bool listener) {
+    psxrl::rl::EnvConfig c;
+    c.obs = obs;
+    c.watch_audio = watch_audio;
+    psxrl::rl::Env env(c);
+    env.reset(1, 1, nullptr);
+    size_t samples = 0;
+    if (listener) env.on_frame = [&](std::span<const StereoSample> audio) { samples += audio.size(); };
+    env.step(0);
+    if (listener) EXPECT_GT(samples, 0u);
+    return env.console().spu().observed();
+  };
+  EXPECT_TRUE(heard("simple", true, false));
+  EXPECT_FALSE(heard("simple", false, false));
+  EXPECT_TRUE(heard("audio", false, false));
+  EXPECT_TRUE(heard("multimodal", false, false));
+  EXPECT_TRUE(heard("simple", false, true));
 }

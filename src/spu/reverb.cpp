@@ -26,9 +26,10 @@ void Reverb::write_base(u16 value) {
 
 u32 Reverb::address(s32 rel) const {
   // Addresses wrap inside ESA..7FFFEh (halfwords base*4 .. 3FFFFh).
-  const s64 start = base_ * 4;
-  const s64 size = 0x40000 - start;
-  s64 off = (static_cast<s64>(current_) - start + rel) % size;
+  // |current - start + rel| stays below 2^20: 32-bit arithmetic is exact.
+  const s32 start = static_cast<s32>(base_) * 4;
+  const s32 size = 0x40000 - start;
+  s32 off = (static_cast<s32>(current_) - start + rel) % size;
   if (off < 0) off += size;
   return static_cast<u32>(start + off);
 }
@@ -48,8 +49,10 @@ void Reverb::write(u32 hw, s32 value, u8* ram, bool write_enable, IrqWatch& irq)
 }
 
 s32 Reverb::downsample(u32 side) const {
-  s32 sum = 0;
-  for (u32 k = 0; k < 39; ++k) sum += kFir[k] * in_history_[side][(in_pos_ - k) & (kRing - 1)];
+  // Only the even taps and the centre one are nonzero.
+  const auto& h = in_history_[side];
+  s32 sum = kFir[19] * h[(in_pos_ - 19) & (kRing - 1)];
+  for (u32 k = 0; k < 39; k += 2) sum += kFir[k] * h[(in_pos_ - k) & (kRing - 1)];
   return sat(sum >> 15);
 }
 

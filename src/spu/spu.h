@@ -102,7 +102,12 @@ class Spu final : public IoDevice, public DmaPort {
   void flush_fifo();
   void ram_write16(u32 byte_addr, u16 value);
   u16 ram_read16(u32 byte_addr);
-  void check_irq(u32 byte_addr);
+  // Every voice checks two addresses each sample, so this stays inline.
+  void check_irq(u32 byte_addr) {
+    // IRQ9 needs both the IRQ enable and the SPU enable (ATTR bits 6 and 15).
+    if ((attr_ & (kAttrIrqEnable | kAttrEnable)) != (kAttrIrqEnable | kAttrEnable)) return;
+    if (((byte_addr & (kRamSize - 1)) >> 3) == irq_address_) raise_irq();
+  }
   void raise_irq();
 
   // Sample generation (spu_mixer.cpp).

@@ -31,6 +31,7 @@ void Spu::take_samples(std::vector<StereoSample>& out) {
 
 void Spu::apply_key_events() {
   // KON/KOFF writes take effect at the next 44.1 kHz cycle (psx-spx "Unstable and Delayed I/O").
+  if ((key_on_ | key_off_) == 0) return;
   for (u32 i = 0; i < kNumVoices; ++i) {
     const u32 bit = 1u << i;
     if (key_off_ & bit) voices_[i].key_off();

@@ -245,7 +245,9 @@ TEST(SpuOnDemand, EnvironmentMixesSoundOnlyWhenSomethingTakesIt) {
     size_t samples = 0;
     if (listener) env.on_frame = [&](std::span<const StereoSample> audio) { samples += audio.size(); };
     env.step(0);
-    if (listener) EXPECT_GT(samples, 0u);
+    if (listener) {
+      EXPECT_GT(samples, 0u);
+    }
     return env.console().spu().observed();
   };
   EXPECT_TRUE(heard("simple", true, false));

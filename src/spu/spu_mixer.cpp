@@ -1,6 +1,7 @@
 // SPU sample generation, once per 768 CPU cycles: key events, the 24 voices (pitch modulation,
 // noise, envelopes, volumes), CD audio input with its volumes, the capture buffers in the first
-// 4 KiB of sound RAM, reverb, the main volume, and the 44.1 kHz stereo output.
+// 4 KiB of sound RAM, reverb, the main volume, and the 44.1 kHz stereo output. The mix and the
+// output are made only while something hears them (set_observed); the rest runs every sample.
 #include <algorithm>
 
 #include "spu/spu.h"

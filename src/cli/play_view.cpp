@@ -18,6 +18,7 @@ constexpr double kAudioAheadSeconds = 0.1;
 }  // namespace
 
 PlayView::PlayView(const ViewOptions& options, psx::Console& console) : options_(options), console_(console) {
+  console.set_sound_observed(true);  // the speaker and recordings take every sample
   frontend::Rate rate = frontend::console_frame_rate(console);
   if (!options.record.empty())
     recorder_ = std::make_unique<frontend::Recorder>(options.record, options.record_every, rate);

@@ -170,6 +170,10 @@ class Console : private CpuHooks {
   void set_pixels_observed(bool observed) { gpu_.set_deferred_drawing(!observed); }
   static constexpr u32 kVramWidth = 1024, kVramHeight = 512;
   void take_audio(std::vector<StereoSample>& out) { spu_.take_samples(out); }
+  // Whether anything listens (on at power-on). Off, the SPU makes no output samples (take_audio
+  // gets none) and skips the mixing only they need; everything else it does stays exact
+  // (spu/spu.h set_observed): for runs whose observations and move delimiting are not sound.
+  void set_sound_observed(bool observed) { spu_.set_observed(observed); }
   // Untaken audio is capped at one minute (the oldest half is dropped) unless the whole run's
   // audio is to be kept, e.g. for a recording.
   void keep_all_audio() { spu_.set_output_limit(SIZE_MAX); }

@@ -77,6 +77,8 @@ Env::Env(const EnvConfig& config) : config_(config) {
   // Pictures are drawn only when asked for unless the observation is one (frame requests for a
   // window or a video still get every frame, exactly).
   console_->set_pixels_observed(obs_kind_ == ObsKind::Visual || obs_kind_ == ObsKind::Multimodal);
+  // Likewise sound is mixed only when something hears it (re-checked each step for on_frame).
+  console_->set_sound_observed(sound_heard());
   boot();
 
   auto space = [&](std::string name, std::vector<std::int64_t> shape, DType d, double lo, double hi) {

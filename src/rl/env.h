@@ -131,6 +131,8 @@ class Env {
 
  private:
   void use_renderer();
+  // Whether anything takes the console's sound (Console::set_sound_observed).
+  bool sound_heard() const;
   void boot();
   void check_disc_identity(const std::string& path);
   std::uint64_t start_level(int level);  // returns the frames it ran

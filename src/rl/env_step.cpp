@@ -10,6 +10,13 @@
 
 namespace psxrl::rl {
 
+bool Env::sound_heard() const {
+  // The audio observations, a move delimiter that waits for silence, and a front end's on_frame
+  // (a window's speaker, a recording) take the samples; nothing else does.
+  bool delimiter = game_.mode == Integration::StepMode::Moves && game_.watch_audio;
+  return obs_kind_ == ObsKind::Audio || obs_kind_ == ObsKind::Multimodal || delimiter || on_frame != nullptr;
+}
+
 void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
   frame_audio_.clear();
   console_->take_audio(frame_audio_);
@@ -81,6 +88,7 @@ StepResult Env::step(int action) {
   const Variable* score = game_.score_variable.empty() ? nullptr : &game_.variable(game_.score_variable);
   std::int64_t score0 = score ? raw(*score) : 0;
   move_audio_.clear();
+  console_->set_sound_observed(sound_heard());
   bool hit_bound = false;
   std::uint32_t frames = game_.mode == Integration::StepMode::Moves
                              ? run_move(game_.actions[static_cast<size_t>(action)], hit_bound)

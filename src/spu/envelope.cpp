@@ -82,8 +82,7 @@ void Adsr::force_off() {
   start(Phase::Off);
 }
 
-void Adsr::tick() {
-  if (phase_ == Phase::Off) return;
+void Adsr::step() {
   level_ = envelope_tick(counter_, level_, params_);
   switch (phase_) {
     case Phase::Attack:
@@ -115,12 +114,7 @@ void VolumeSweep::write(u16 value) {
   counter_ = 0;
 }
 
-void VolumeSweep::tick() {
-  if (!(reg_ & 0x8000)) {
-    // Bits 0-14 are volume/2 as a signed 15-bit number.
-    level_ = static_cast<s16>(reg_ << 1);
-    return;
-  }
+void VolumeSweep::sweep() {
   // Sweep mode: bit 14 exponential, bit 13 decrease, bit 12 phase, bits 0-6 shift:step.
   const EnvelopeParams p{static_cast<u8>(reg_ & 0x7F), 0x7F, ((reg_ >> 13) & 1) != 0, ((reg_ >> 14) & 1) != 0,
                          ((reg_ >> 12) & 1) != 0};

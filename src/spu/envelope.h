@@ -38,7 +38,10 @@ class Adsr {
   void key_off();
   // An End+Mute ADPCM block (flags End without Repeat) silences the voice at once.
   void force_off();
-  void tick();
+  // Once per sample for every voice; an Off envelope stays at its level.
+  void tick() {
+    if (phase_ != Phase::Off) step();
+  }
 
   s16 level() const { return level_; }
   // ENVX is writable; the next step continues from the written level.
@@ -52,6 +55,7 @@ class Adsr {
 
  private:
   void start(Phase p);
+  void step();
 
   u32 reg_ = 0;
   Phase phase_ = Phase::Off;
@@ -67,13 +71,20 @@ class VolumeSweep {
   u16 reg() const { return reg_; }
   // Once per 44.1 kHz tick. A fixed volume is latched here, not on the register write (psx-spx:
   // "the Bit15=0 setting isn't applied until the next 44.1kHz cycle").
-  void tick();
+  void tick() {
+    if (reg_ & 0x8000)
+      sweep();
+    else
+      level_ = static_cast<s16>(reg_ << 1);  // bits 0-14 are volume/2, a signed 15-bit number
+  }
   s16 level() const { return level_; }
   void set_level(s16 v) { level_ = v; }
 
   void do_state(StateIO& s);
 
  private:
+  void sweep();
+
   u16 reg_ = 0;
   s16 level_ = 0;
   u32 counter_ = 0;

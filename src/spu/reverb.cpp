@@ -26,9 +26,10 @@ void Reverb::write_base(u16 value) {
 
 u32 Reverb::address(s32 rel) const {
   // Addresses wrap inside ESA..7FFFEh (halfwords base*4 .. 3FFFFh).
-  const s64 start = base_ * 4;
-  const s64 size = 0x40000 - start;
-  s64 off = (static_cast<s64>(current_) - start + rel) % size;
+  // |current - start + rel| stays below 2^20: 32-bit arithmetic is exact.
+  const s32 start = static_cast<s32>(base_) * 4;
+  const s32 size = 0x40000 - start;
+  s32 off = (static_cast<s32>(current_) - start + rel) % size;
   if (off < 0) off += size;
   return static_cast<u32>(start + off);
 }
@@ -48,8 +49,10 @@ void Reverb::write(u32 hw, s32 value, u8* ram, bool write_enable, IrqWatch& irq)
 }
 
 s32 Reverb::downsample(u32 side) const {
-  s32 sum = 0;
-  for (u32 k = 0; k < 39; ++k) sum += kFir[k] * in_history_[side][(in_pos_ - k) & (kRing - 1)];
+  // Only the even taps and the centre one are nonzero.
+  const auto& h = in_history_[side];
+  s32 sum = kFir[19] * h[(in_pos_ - 19) & (kRing - 1)];
+  for (u32 k = 0; k < 39; k += 2) sum += kFir[k] * h[(in_pos_ - k) & (kRing - 1)];
   return sat(sum >> 15);
 }
 
@@ -98,7 +101,7 @@ s16 Reverb::process_side(u32 side, s32 input, u8* ram, bool we, IrqWatch& irq) {
   return static_cast<s16>(out);
 }
 
-StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, IrqWatch& irq) {
+StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq) {
   in_pos_ = (in_pos_ + 1) & (kRing - 1);
   in_history_[0][in_pos_] = static_cast<s16>(sat(in_left));
   in_history_[1][in_pos_] = static_cast<s16>(sat(in_right));
@@ -108,8 +111,10 @@ StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable,
   out_history_[side][out_pos_[side]] = process_side(side, downsample(side), ram, write_enable, irq);
 
   StereoSample out;
-  out.left = static_cast<s16>(upsample(0, side == 0));
-  out.right = static_cast<s16>(upsample(1, side == 1));
+  if (want_output) {
+    out.left = static_cast<s16>(upsample(0, side == 0));
+    out.right = static_cast<s16>(upsample(1, side == 1));
+  }
   if (side == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
   phase_ ^= 1;
   return out;

@@ -33,9 +33,10 @@ class Reverb {
   };
 
   // One 44.1 kHz tick. `in` is the sum of reverb-enabled voices and CD audio; the result is the
-  // reverb output before the EVOLL/EVOLR volumes. Writes to the work area only when
+  // reverb output before the EVOLL/EVOLR volumes, computed only if `want_output` (zero
+  // otherwise: the output filter holds no state of its own). Writes to the work area only when
   // `write_enable` (ATTR bit 7); reads always happen.
-  StereoSample tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, IrqWatch& irq);
+  StereoSample tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq);
 
   void do_state(StateIO& s);
 

@@ -47,6 +47,13 @@ class Spu final : public IoDevice, public DmaPort {
   // Bounds the untaken output so a console nobody listens to does not grow without end: when
   // the limit is reached the older half is dropped. Default one minute; SIZE_MAX keeps all.
   void set_output_limit(size_t samples) { output_limit_ = samples < 2 ? 2 : samples; }
+  // Whether anything takes the output samples (on at power-on). Off, the SPU still advances
+  // voices, envelopes, sweeps, noise, reverb, the capture buffers, ENDX and the IRQ address
+  // checks exactly, but skips the final mix, the reverb output filter and the interpolation of
+  // voices whose output reaches nothing else, and produces no output samples. A running
+  // capture keeps the output mixed.
+  void set_observed(bool observed) { observed_ = observed; }
+  bool observed() const { return observed_; }
 
   // --- Capture (seed §2.5) ----------------------------------------------------------------
   void start_capture(const spu::CaptureOptions& options) { capture_.start(options); }
@@ -95,14 +102,27 @@ class Spu final : public IoDevice, public DmaPort {
   void flush_fifo();
   void ram_write16(u32 byte_addr, u16 value);
   u16 ram_read16(u32 byte_addr);
-  void check_irq(u32 byte_addr);
+  // Every voice checks two addresses each sample, so this stays inline.
+  void check_irq(u32 byte_addr) {
+    // IRQ9 needs both the IRQ enable and the SPU enable (ATTR bits 6 and 15).
+    if ((attr_ & (kAttrIrqEnable | kAttrEnable)) != (kAttrIrqEnable | kAttrEnable)) return;
+    if (((byte_addr & (kRamSize - 1)) >> 3) == irq_address_) raise_irq();
+  }
   void raise_irq();
 
   // Sample generation (spu_mixer.cpp).
   void on_sample(Cycles late);
   void generate_sample();
   void apply_key_events();
-  void sample_voice(u32 i, s32& left, s32& right, s32& reverb_left, s32& reverb_right);
+  struct Mix {
+    s32 left = 0, right = 0, reverb_left = 0, reverb_right = 0;
+  };
+  bool mixing() const { return observed_ || capture_.active(); }
+  // Voices (bit mask) whose output this sample is read by anything.
+  u32 voices_needed() const;
+  // One voice's sample: IRQ checks, envelope, pitch and block advance always; its output (into
+  // Voice::output) and contribution to `mix` only when `needed`.
+  void sample_voice(u32 i, bool needed, Mix& mix);
   void write_capture_buffers(StereoSample cd, s16 voice1, s16 voice3);
 
   Scheduler& sched_;
@@ -134,6 +154,7 @@ class Spu final : public IoDevice, public DmaPort {
 
   std::vector<StereoSample> output_;
   size_t output_limit_ = kSampleRate * 60;
+  bool observed_ = true;
   spu::AudioCapture capture_;
 };
 

@@ -1,6 +1,7 @@
 // SPU sample generation, once per 768 CPU cycles: key events, the 24 voices (pitch modulation,
 // noise, envelopes, volumes), CD audio input with its volumes, the capture buffers in the first
-// 4 KiB of sound RAM, reverb, the main volume, and the 44.1 kHz stereo output.
+// 4 KiB of sound RAM, reverb, the main volume, and the 44.1 kHz stereo output. The mix and the
+// output are made only while something hears them (set_observed); the rest runs every sample.
 #include <algorithm>
 
 #include "spu/spu.h"
@@ -31,6 +32,7 @@ void Spu::take_samples(std::vector<StereoSample>& out) {
 
 void Spu::apply_key_events() {
   // KON/KOFF writes take effect at the next 44.1 kHz cycle (psx-spx "Unstable and Delayed I/O").
+  if ((key_on_ | key_off_) == 0) return;
   for (u32 i = 0; i < kNumVoices; ++i) {
     const u32 bit = 1u << i;
     if (key_off_ & bit) voices_[i].key_off();
@@ -42,7 +44,7 @@ void Spu::apply_key_events() {
   key_on_ = key_off_ = 0;
 }
 
-void Spu::sample_voice(u32 i, s32& left, s32& right, s32& reverb_left, s32& reverb_right) {
+void Spu::sample_voice(u32 i, bool needed, Mix& mix) {
   spu::Voice& v = voices_[i];
   const u32 bit = 1u << i;
   v.fetch_block(ram_.data());
@@ -51,8 +53,12 @@ void Spu::sample_voice(u32 i, s32& left, s32& right, s32& reverb_left, s32& reve
   check_irq(v.data_address());
 
   const bool noise = (noise_on_ & bit) != 0;
-  const s32 sample = noise ? noise_.level() : v.interpolate();
-  v.output = static_cast<s16>(clamp16(apply_volume(sample, v.adsr.level())));
+  if (needed) {
+    // An envelope at 0 makes the product 0 whatever the sample: no interpolation then.
+    const s32 level = v.adsr.level();
+    const s32 sample = level == 0 ? 0 : noise ? noise_.level() : v.interpolate();
+    v.output = static_cast<s16>(clamp16(apply_volume(sample, level)));
+  }
   v.adsr.tick();
 
   // psx-spx "Pitch Counter": modulation by the previous voice's output, then clip to 4000h.
@@ -64,16 +70,18 @@ void Spu::sample_voice(u32 i, s32& left, s32& right, s32& reverb_left, s32& reve
   step = std::min<u32>(step, 0x4000);
   if (v.advance(step, noise) == spu::Voice::BlockEvent::LoopEnd) endx_ |= bit;
 
-  const s32 l = apply_volume(v.output, v.volume_left.level());
-  const s32 r = apply_volume(v.output, v.volume_right.level());
+  if (needed && v.output != 0) {
+    const s32 l = apply_volume(v.output, v.volume_left.level());
+    const s32 r = apply_volume(v.output, v.volume_right.level());
+    mix.left += l;
+    mix.right += r;
+    if (reverb_on_ & bit) {
+      mix.reverb_left += l;
+      mix.reverb_right += r;
+    }
+  }
   v.volume_left.tick();
   v.volume_right.tick();
-  left += l;
-  right += r;
-  if (reverb_on_ & bit) {
-    reverb_left += l;
-    reverb_right += r;
-  }
 }
 
 void Spu::write_capture_buffers(StereoSample cd, s16 voice1, s16 voice3) {
@@ -92,52 +100,72 @@ void Spu::write_capture_buffers(StereoSample cd, s16 voice1, s16 voice3) {
   capture_pos_ = (capture_pos_ + 1) & 0x1FF;
 }
 
+u32 Spu::voices_needed() const {
+  // Unobserved, a voice's output still matters where it reaches state, RAM or another voice:
+  // voices 1 and 3 feed the capture buffers, a voice before one with PMON set modulates its
+  // pitch, and reverb-enabled voices feed the reverb input history.
+  if (mixing()) return (1u << kNumVoices) - 1;
+  return (1u << 1) | (1u << 3) | (pitch_mod_ >> 1) | reverb_on_;
+}
+
 void Spu::generate_sample() {
   apply_key_events();
-  s32 left = 0, right = 0, reverb_left = 0, reverb_right = 0;
+  Mix mix;
   const bool enabled = (attr_ & kAttrEnable) != 0;
+  const bool mixing = this->mixing();
   if (enabled) {
-    for (u32 i = 0; i < kNumVoices; ++i) sample_voice(i, left, right, reverb_left, reverb_right);
+    const u32 needed = voices_needed();
+    for (u32 i = 0; i < kNumVoices; ++i) sample_voice(i, (needed >> i) & 1, mix);
     noise_.tick(attr_);
   }
   // "Mute SPU" silences the voices; CD audio does not care.
-  if (!(attr_ & kAttrUnmute)) left = right = 0;
+  if (!(attr_ & kAttrUnmute)) mix.left = mix.right = 0;
 
   const StereoSample cd = cd_audio_.pop();
   write_capture_buffers(cd, voices_[1].output, voices_[3].output);
-  if (attr_ & kAttrCdEnable) {
+  const bool cd_reverb = (attr_ & kAttrCdReverb) != 0;
+  if ((attr_ & kAttrCdEnable) && (mixing || cd_reverb)) {
     const s32 cd_left = apply_volume(cd.left, cd_volume_left_);
     const s32 cd_right = apply_volume(cd.right, cd_volume_right_);
-    left += cd_left;
-    right += cd_right;
-    if (attr_ & kAttrCdReverb) {
-      reverb_left += cd_left;
-      reverb_right += cd_right;
+    mix.left += cd_left;
+    mix.right += cd_right;
+    if (cd_reverb) {
+      mix.reverb_left += cd_left;
+      mix.reverb_right += cd_right;
     }
   }
 
   spu::Reverb::IrqWatch watch{(attr_ & (kAttrIrqEnable | kAttrEnable)) == (kAttrIrqEnable | kAttrEnable),
                               irq_address_, false};
-  const StereoSample wet =
-      reverb_.tick(reverb_left, reverb_right, ram_.data(), (attr_ & kAttrReverbEnable) != 0, watch);
+  // The reverb unit always runs (its history and work area are state); its output is only
+  // needed for a mix that hears it.
+  const bool wet_heard = mixing && (reverb_volume_left_ != 0 || reverb_volume_right_ != 0);
+  const StereoSample wet = reverb_.tick(mix.reverb_left, mix.reverb_right, ram_.data(),
+                                        (attr_ & kAttrReverbEnable) != 0, wet_heard, watch);
   if (watch.hit) raise_irq();
-  left += apply_volume(wet.left, reverb_volume_left_);
-  right += apply_volume(wet.right, reverb_volume_right_);
-
-  StereoSample out;
-  out.left = static_cast<s16>(clamp16(apply_volume(clamp16(left), main_left_.level())));
-  out.right = static_cast<s16>(clamp16(apply_volume(clamp16(right), main_right_.level())));
+  if (mixing) {
+    mix.left += apply_volume(wet.left, reverb_volume_left_);
+    mix.right += apply_volume(wet.right, reverb_volume_right_);
+    StereoSample out;
+    out.left = static_cast<s16>(clamp16(apply_volume(clamp16(mix.left), main_left_.level())));
+    out.right = static_cast<s16>(clamp16(apply_volume(clamp16(mix.right), main_right_.level())));
+    if (output_.size() >= output_limit_) output_.erase(output_.begin(), output_.begin() + output_.size() / 2);
+    output_.push_back(out);
+    capture_.push(out);
+  }
   main_left_.tick();
   main_right_.tick();
-  if (output_.size() >= output_limit_) output_.erase(output_.begin(), output_.begin() + output_.size() / 2);
-  output_.push_back(out);
-  capture_.push(out);
 }
 
 void Spu::do_state(StateIO& s) {
-  s.section("SPU ", 1);
+  // Version 2 keeps only the outputs of voices 1 and 3 (Voice::output); version 1 saved all.
+  const u32 version = s.section("SPU ", 2, 1);
   s.bytes(ram_.data(), ram_.size());
-  for (spu::Voice& v : voices_) v.do_state(s);
+  for (spu::Voice& v : voices_) v.do_state(s, version < 2);
+  if (version >= 2) {
+    s.pod(voices_[1].output);
+    s.pod(voices_[3].output);
+  }
   reverb_.do_state(s);
   noise_.do_state(s);
   main_left_.do_state(s);

@@ -5,12 +5,6 @@
 
 namespace psx {
 
-void Spu::check_irq(u32 byte_addr) {
-  // IRQ9 needs both the IRQ enable and the SPU enable (ATTR bits 6 and 15).
-  if ((attr_ & (kAttrIrqEnable | kAttrEnable)) != (kAttrIrqEnable | kAttrEnable)) return;
-  if (((byte_addr & (kRamSize - 1)) >> 3) == irq_address_) raise_irq();
-}
-
 void Spu::raise_irq() {
   if (irq_flag_) return;  // the line stays asserted until acknowledged through ATTR bit 6
   irq_flag_ = true;

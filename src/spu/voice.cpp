@@ -55,14 +55,14 @@ Voice::BlockEvent Voice::advance(u32 step, bool noise) {
   return BlockEvent::LoopEnd;
 }
 
-void Voice::do_state(StateIO& s) {
+void Voice::do_state(StateIO& s, bool with_output) {
   volume_left.do_state(s);
   volume_right.do_state(s);
   s.pod(pitch);
   s.pod(start_address);
   adsr.do_state(s);
   s.pod(repeat_address);
-  s.pod(output);
+  if (with_output) s.pod(output);
   s.pod(current_address_);
   s.pod(counter_);
   s.boolean(has_block_);

@@ -46,10 +46,12 @@ class Voice {
   u32 data_address() const { return current_address_ * 8u + 2 + ((counter_ >> 12) / 4) * 2; }
 
   // Sample after the envelope (OUTX): feeds pitch modulation of the next voice and, for voices
-  // 1 and 3, the capture buffers.
+  // 1 and 3, the capture buffers. Computed each sample before any use, so it is state only where
+  // the capture buffers reuse it while the SPU is disabled (voices 1 and 3, saved by the SPU).
   s16 output = 0;
 
-  void do_state(StateIO& s);
+  // `with_output`: the layout before SPU section version 2, which saved every voice's output.
+  void do_state(StateIO& s, bool with_output);
 
  private:
   u16 current_address_ = 0;

@@ -31,7 +31,7 @@ TEST(SpuReverb, SameSideReflectionByHand) {
   put(ram, base + 0x80, 1000);      // [dLSAME]
   put(ram, base + 0x3F, 200);       // [mLSAME-2]
   Reverb::IrqWatch irq;
-  rv.tick(0, 0, ram.data(), true, irq);  // the left side runs on this cycle
+  rv.tick(0, 0, ram.data(), true, true, irq);  // the left side runs on this cycle
   // [mLSAME] = (Lin + [dLSAME]*vWALL - [mLSAME-2])*vIIR + [mLSAME-2]
   //          = (0 + 500 - 200) * 0.5 + 200 = 350
   EXPECT_EQ(get(ram, base + 0x40), 350);
@@ -40,7 +40,7 @@ TEST(SpuReverb, SameSideReflectionByHand) {
   Reverb rv2 = Reverb();
   rv2.regs = rv.regs;
   rv2.write_base(0x7000);
-  rv2.tick(0, 0, ram.data(), false, irq);
+  rv2.tick(0, 0, ram.data(), false, true, irq);
   EXPECT_EQ(get(ram, base + 0x40), 0);
 }
 
@@ -56,9 +56,9 @@ TEST(SpuReverb, AllPassReadPathThroughTheUpsampler) {
   rv.regs[Reverb::mLAPF2] = rv.regs[Reverb::mRAPF2] = 0x100;
   rv.regs[Reverb::dAPF2] = 0x40;
   Reverb::IrqWatch irq;
-  for (int i = 0; i < 100; ++i) rv.tick(0, 0, ram.data(), false, irq);
-  StereoSample a = rv.tick(0, 0, ram.data(), false, irq);  // left computes, right holds
-  StereoSample b = rv.tick(0, 0, ram.data(), false, irq);  // right computes, left holds
+  for (int i = 0; i < 100; ++i) rv.tick(0, 0, ram.data(), false, true, irq);
+  StereoSample a = rv.tick(0, 0, ram.data(), false, true, irq);  // left computes, right holds
+  StereoSample b = rv.tick(0, 0, ram.data(), false, true, irq);  // right computes, left holds
   EXPECT_EQ(a.left, 999);
   EXPECT_EQ(a.right, 1000);
   EXPECT_EQ(b.left, 1000);
@@ -71,6 +71,6 @@ TEST(SpuReverb, IrqWatchSeesWorkAreaAccesses) {
   rv.write_base(0xF000);
   rv.regs[Reverb::mLSAME] = 0x10;
   Reverb::IrqWatch irq{true, 0xF000 + 0x10, false};
-  rv.tick(0, 0, ram.data(), false, irq);
+  rv.tick(0, 0, ram.data(), false, true, irq);
   EXPECT_TRUE(irq.hit);
 }

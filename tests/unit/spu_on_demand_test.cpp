@@ -1,0 +1,258 @@
+// Sound on demand (Spu::set_observed, Console::set_sound_observed): with nothing listening the SPU
+// skips the mix, but everything that is state or reaches sound RAM or the IRQ line must come out
+// exactly as with the mix: save-state bytes and IRQ counts are compared against an SPU that
+// mixes, on a register-driven workload (pitch-modulation chain, voices 1 and 3 in the capture
+// buffers, reverb writing its work area with the IRQ address inside it, noise, CD input, one-shot
+// voices setting ENDX, key off and on) and on Tumble's title and level play.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "rl/env.h"
+#include "spu/adpcm.h"
+#include "spu_test_util.h"
+#include "tumble_console_util.h"
+
+using namespace psx;
+using psx::test::SpuRig;
+
+namespace {
+
+constexpr u32 kSine = 0x1000, kOneShot = 0x3000;
+constexpr u32 kReverbBase = 0xFE00;  // ESA in 8-byte units: a 4 KiB work area at 7F000h
+constexpr u32 kIrqAddress = 0xFE40;  // IRQA inside that work area
+
+std::vector<u8> sine_blocks(double amplitude, size_t period, bool loop) {
+  std::vector<s16> pcm(period * 28);
+  for (size_t i = 0; i < pcm.size(); ++i) pcm[i] = static_cast<s16>(std::lround(amplitude * std::sin(2 * M_PI * i / period)));
+  spu::AdpcmEncodeOptions o;
+  o.loop = loop;
+  return spu::encode_adpcm(pcm.data(), pcm.size(), o);
+}
+
+void key(SpuRig& r, u32 reg, u32 mask) {
+  r.w16(reg, static_cast<u16>(mask));
+  r.w16(reg + 2, static_cast<u16>(mask >> 16));
+}
+
+// Voice v: start address, pitch, volumes (bit 15 set: a sweep), ADSR.
+void voice(SpuRig& r, u32 v, u32 byte_addr, u16 pitch, u16 vol_l, u16 vol_r, u16 adsr1, u16 adsr2) {
+  r.voice_w(v, 0x0, vol_l);
+  r.voice_w(v, 0x2, vol_r);
+  r.voice_w(v, 0x4, pitch);
+  r.voice_w(v, 0x6, static_cast<u16>(byte_addr / 8));
+  r.voice_w(v, 0x8, adsr1);
+  r.voice_w(v, 0xA, adsr2);
+}
+
+// The whole workload's registers. Reverb offsets (8-byte units) stay inside the 200h-unit area.
+void set_up(SpuRig& r) {
+  r.put_ram(kSine, sine_blocks(12000, 32, true));
+  r.put_ram(kOneShot, sine_blocks(9000, 20, false));
+  // 0: heard only in the mix; 1: captured; 2: reverb; 3: noise, captured; 4 modulates 5, which
+  // modulates 6 (exponential volume sweeps); 7: one-shot with reverb (ENDX, End+Mute); 8: slow
+  // attack, released by key off. Each voice the mix needs for one reason only, so that leaving
+  // out any one reason changes the state.
+  voice(r, 0, kSine, 0x0800, 0x3FFF, 0x2000, 0x00FF, 0x1FC0);
+  voice(r, 1, kSine, 0x1000, 0x3000, 0x3000, 0x00FF, 0x1FC0);
+  voice(r, 2, kSine, 0x0C00, 0x2000, 0x3FFF, 0x00FF, 0x1FC0);
+  voice(r, 3, kSine, 0x1000, 0x1800, 0x1800, 0x00FF, 0x1FC0);
+  voice(r, 4, kSine, 0x1800, 0x3FFF, 0x3FFF, 0x00FF, 0x1FC0);
+  voice(r, 5, kSine, 0x1000, 0x3000, 0x3000, 0x00FF, 0x1FC0);
+  voice(r, 6, kSine, 0x0900, 0xC01C, 0xE01C, 0x00FF, 0x1FC0);
+  voice(r, 7, kOneShot, 0x1200, 0x3FFF, 0x3FFF, 0x00FF, 0x1FC0);
+  voice(r, 8, kSine, 0x0A00, 0x3FFF, 0x3FFF, 0x5A3F, 0x5FD0);
+  r.w16(0x1F801D90, 0x0060);  // PMON: voices 5 and 6
+  r.w16(0x1F801D94, 0x0008);  // NON: voice 3
+  r.w16(0x1F801D98, 0x0084);  // EON: voices 2 and 7
+  r.w16(0x1F801D80, 0x3FFF);  // MVOLL/MVOLR
+  r.w16(0x1F801D82, 0x3FFF);
+  r.w16(0x1F801D84, 0x3000);  // EVOLL/EVOLR
+  r.w16(0x1F801D86, 0x3000);
+  r.w16(0x1F801DB0, 0x4000);  // AVOLL/AVOLR: CD input
+  r.w16(0x1F801DB2, 0x4000);
+  const u16 reverb[32] = {0x0040, 0x0030, 0x7000, 0x4000, 0xD000, 0x3000, 0xE000, 0x6000, 0x5000, 0xB000,
+                          0x0100, 0x00F0, 0x00E0, 0x00D0, 0x00C0, 0x00B0, 0x0180, 0x0170, 0x0160, 0x0150,
+                          0x00A0, 0x0090, 0x0080, 0x0078, 0x01F0, 0x01E0, 0x0070, 0x0068, 0x0050, 0x0048,
+                          0x6000, 0x6000};
+  for (u32 i = 0; i < 32; ++i) r.w16(0x1F801DC0 + 2 * i, reverb[i]);
+  r.w16(0x1F801DA2, kReverbBase);
+  r.w16(0x1F801DA4, kIrqAddress);
+  // ATTR: enable, unmute, the fastest noise clock (shift Fh, step 1: a new bit every sample, so
+  // the level is a full 16-bit pattern), reverb and IRQ enable, CD input into the mix and reverb.
+  r.w16(0x1F801DAA, 0xC000 | 0x3C00 | 0x0100 | 0x0080 | 0x0040 | 0x0005);
+  key(r, 0x1F801D88, 0x1FF);  // KON voices 0-8
+}
+
+// Runs `n` samples with CD input; acknowledges and counts SPU IRQs (STAT bit 6) after each one.
+u32 run(SpuRig& r, u32 n, u32& sample_index) {
+  u32 irqs = 0;
+  for (u32 i = 0; i < n; ++i, ++sample_index) {
+    const s16 cd = static_cast<s16>(((sample_index * 97) % 2000) * 8 - 8000);
+    r.cd.push({cd, static_cast<s16>(-cd)});
+    r.run_samples(1);
+    if (r.r16(0x1F801DAE) & 0x40) {
+      ++irqs;
+      const u16 attr = r.r16(0x1F801DAA);
+      r.w16(0x1F801DAA, attr & ~0x40);
+      r.w16(0x1F801DAA, attr);
+    }
+  }
+  return irqs;
+}
+
+std::vector<u8> state_bytes(Spu& spu) {
+  StateIO w;
+  spu.do_state(w);
+  return w.buffer();
+}
+
+// Key events during the run: voices 4 and 8 released, then 4 and the one-shot 7 keyed on again.
+void events(SpuRig& r, u32 sample) {
+  if (sample == 3000) key(r, 0x1F801D8C, 0x110);
+  if (sample == 6000) key(r, 0x1F801D88, 0x090);
+}
+
+struct Pair {
+  SpuRig heard, unheard;
+  u32 index_heard = 0, index_unheard = 0;
+  Pair() {
+    set_up(heard);
+    set_up(unheard);
+    unheard.spu.set_observed(false);
+  }
+};
+
+}  // namespace
+
+TEST(SpuOnDemand, UnheardSpuKeepsStateRamAndIrqsExact) {
+  auto p = std::make_unique<Pair>();
+  u32 irqs_heard = 0, irqs_unheard = 0;
+  for (u32 block = 0; block < 48; ++block) {
+    events(p->heard, p->index_heard);
+    events(p->unheard, p->index_unheard);
+    irqs_heard += run(p->heard, 250, p->index_heard);
+    irqs_unheard += run(p->unheard, 250, p->index_unheard);
+    ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << "after sample " << p->index_heard;
+  }
+  EXPECT_EQ(irqs_heard, irqs_unheard);
+  // The workload does what it is meant to exercise: reverb accesses hit IRQA (the area is
+  // 1000h halfwords per side cycle, 4096 samples, so at least one hit per cycle), the one-shot
+  // voice ended (ENDX bit 7), and the heard SPU made sound while the unheard one made none.
+  EXPECT_GE(irqs_heard, 12000u / 4096u);
+  EXPECT_NE(p->heard.r16(0x1F801D9C) & 0x80, 0);
+  std::vector<StereoSample> out = p->heard.take();
+  EXPECT_EQ(out.size(), 48u * 250u);
+  bool loud = false;
+  for (const StereoSample& s : out) loud |= s.left != 0 || s.right != 0;
+  EXPECT_TRUE(loud);
+  EXPECT_TRUE(p->unheard.take().empty());
+}
+
+TEST(SpuOnDemand, SwitchingListeningOnAndOffStaysExact) {
+  // One SPU always heard, one heard, then not, then heard again: the state matches throughout
+  // and the samples of the heard stretches are the same samples.
+  auto p = std::make_unique<Pair>();
+  p->unheard.spu.set_observed(true);
+  for (u32 block = 0; block < 36; ++block) {
+    const bool listening = block < 8 || block >= 20;
+    p->unheard.spu.set_observed(listening);
+    events(p->heard, p->index_heard);
+    events(p->unheard, p->index_unheard);
+    run(p->heard, 250, p->index_heard);
+    run(p->unheard, 250, p->index_unheard);
+    ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << "after sample " << p->index_heard;
+    std::vector<StereoSample> a = p->heard.take(), b = p->unheard.take();
+    ASSERT_EQ(b.size(), listening ? a.size() : 0u) << "block " << block;
+    for (size_t i = 0; i < b.size(); ++i) {
+      ASSERT_EQ(a[i].left, b[i].left) << "block " << block << " sample " << i;
+      ASSERT_EQ(a[i].right, b[i].right) << "block " << block << " sample " << i;
+    }
+  }
+}
+
+TEST(SpuOnDemand, SavedStateOfAnUnheardSpuResumesHeardExactly) {
+  // A state saved while unheard, loaded into an SPU that mixes, continues as the heard one does.
+  auto p = std::make_unique<Pair>();
+  run(p->heard, 5000, p->index_heard);
+  run(p->unheard, 5000, p->index_unheard);
+  std::vector<u8> saved = state_bytes(p->unheard.spu);
+  SpuRig resumed;
+  StateIO in(saved.data(), saved.size());
+  resumed.spu.do_state(in);
+  u32 resumed_index = p->index_unheard;
+  p->heard.take();
+  run(p->heard, 2000, p->index_heard);
+  run(resumed, 2000, resumed_index);
+  std::vector<StereoSample> a = p->heard.take(), b = resumed.take();
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) ASSERT_TRUE(a[i].left == b[i].left && a[i].right == b[i].right) << i;
+}
+
+TEST(SpuOnDemand, RunningCaptureKeepsTheMix) {
+  // A recording takes the output, so an unheard SPU with a capture running still mixes it.
+  auto p = std::make_unique<Pair>();
+  spu::CaptureOptions o;
+  p->heard.spu.start_capture(o);
+  p->unheard.spu.start_capture(o);
+  run(p->heard, 3000, p->index_heard);
+  run(p->unheard, 3000, p->index_unheard);
+  std::vector<StereoSample> a = p->heard.spu.stop_capture(), b = p->unheard.spu.stop_capture();
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) ASSERT_TRUE(a[i].left == b[i].left && a[i].right == b[i].right) << i;
+}
+
+TEST(SpuOnDemand, TumbleTitleAndLevelPlayGiveTheSameConsoleUnheard) {
+  tumble_test::TumbleConsole heard, unheard;
+  unheard.console.set_sound_observed(false);
+  auto both = [&](auto&& f) {
+    f(heard.console);
+    f(unheard.console);
+  };
+  std::vector<StereoSample> heard_audio, unheard_audio;
+  bool sound = false;
+  auto check = [&](const char* when) {
+    ASSERT_EQ(heard.console.save_state(false), unheard.console.save_state(false)) << when;
+    heard.console.take_audio(heard_audio);
+    unheard.console.take_audio(unheard_audio);
+    EXPECT_TRUE(unheard_audio.empty()) << when;
+    for (const StereoSample& s : heard_audio) sound |= s.left != 0 || s.right != 0;
+  };
+  both([](Console& c) { c.run_frames(120); });
+  check("title");
+  both([](Console& c) { tumble_test::play_level_one_moves(c); });
+  check("after the level-one moves");
+  both([](Console& c) {
+    c.press_for(1, pad_button::kLeft, 8);
+    c.run_frames(60);
+  });
+  check("after one more move");
+  EXPECT_TRUE(sound) << "Tumble made no sound: the comparison did not cover the SPU's voices";
+}
+
+TEST(SpuOnDemand, EnvironmentMixesSoundOnlyWhenSomethingTakesIt) {
+  // Tumble's moves wait for silence (game.toml [moves] audio = true), so its default environment
+  // hears; with that off, only an audio observation or a front end's on_frame does.
+  auto heard = [](const std::string& obs, bool watch_audio, bool listener) {
+    psxrl::rl::EnvConfig c;
+    c.obs = obs;
+    c.watch_audio = watch_audio;
+    psxrl::rl::Env env(c);
+    env.reset(1, 1, nullptr);
+    size_t samples = 0;
+    if (listener) env.on_frame = [&](std::span<const StereoSample> audio) { samples += audio.size(); };
+    env.step(0);
+    if (listener) {
+      EXPECT_GT(samples, 0u);
+    }
+    return env.console().spu().observed();
+  };
+  EXPECT_TRUE(heard("simple", true, false));
+  EXPECT_FALSE(heard("simple", false, false));
+  EXPECT_TRUE(heard("audio", false, false));
+  EXPECT_TRUE(heard("multimodal", false, false));
+  EXPECT_TRUE(heard("simple", false, true));
+}

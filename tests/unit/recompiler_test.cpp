@@ -219,8 +219,8 @@ std::vector<u32> alu_stream(u32 seed, u32 length) {
       code.push_back(itype(op, 23, d, imm & (op == 0x23 ? 0x3FC : op == 0x21 ? 0x3FE : 0x3FF)));
     } else if (kind < 19) {  // SW around s7
       code.push_back(itype(0x2B, 23, t, imm & 0x3FC));
-    } else {  // a short forward branch (its delay slot is the next instruction)
-      code.push_back(itype(pick(2) ? 0x04 : 0x05, s, t, 1 + pick(4)));
+    } else {  // a short forward BEQ, BNE, BLEZ or BGTZ (its delay slot is the next instruction)
+      code.push_back(itype(0x04 + pick(4), s, t, 1 + pick(4)));
     }
   }
   return code;
@@ -260,6 +260,52 @@ TEST(RecompilerCode, NativeAluAfterLoads) {
   code.insert(code.end(), {itype(0x09, kT0, kT0, 1), itype(0x2B, 23, kT0, 0),  // addiu t0, t0, 1; sw t0, 0(s7)
                            itype(0x2B, 23, kS0, 24),                          // sw s0, 24(s7)
                            j(base), itype(0x09, kS1, kS1, 1)});               // addiu s1 in the delay slot
+  std::vector<u32> regs(31);
+  for (u32 r = 0; r < 31; ++r) regs[r] = 0x01010101u * (r + 1);
+  regs[22] = 0x80100000;
+  expect_same_code(code, base, 0, regs, 3);
+}
+
+// Native branches and jumps (block_emitter.h): a backward loop (its loop head), BLEZ/BGTZ both
+// ways, JAL/JR/JALR links, ALU ops and loads in their delay slots, a load into ra just before a
+// JAL that writes it, and a jump-register target read in a load's delay slot.
+TEST(RecompilerCode, NativeBranches) {
+  const u32 base = 0x80010000, sub = base + 0x100, kT2 = 10, kT3 = 11, kT4 = 12, kT5 = 13, kRa = 31;
+  const auto addiu = [](u32 t, u32 s, u32 imm) { return itype(0x09, s, t, imm); };
+  const auto addu = [](u32 d, u32 s, u32 t) { return rtype(0x21, s, t, d); };
+  const auto lw = [](u32 rt, u32 off) { return itype(0x23, 23, rt, off); };
+  const auto jal = [](u32 target) { return 0x03u << 26 | ((target >> 2) & 0x03FFFFFF); };
+  std::vector<u32> code = {
+      addiu(kT0, 0, 5),                                  // 0: t0 = 5
+      addiu(kT0, kT0, 0xFFFF),                           // 1: loop: t0 -= 1
+      itype(0x07, kT0, 0, 0xFFFE),                       // 2: bgtz t0, loop
+      addiu(kT1, kT1, 3),                                // 3: delay slot
+      lw(kRa, 0),                                        // 4: a load into ra ...
+      jal(sub),                                          // 5: ... that the link overwrites
+      addu(kT2, kRa, 0),                                 // 6: delay slot reads ra (the link)
+      addiu(kT4, 0, 0),                                  // 7: back here
+      itype(0x0D, kT4, kT4, (sub + 0x20) & 0xFFFF),      // 8: ori t4 (low half of sub2)
+      itype(0x0F, 0, kT5, (sub + 0x20) >> 16),           // 9: lui t5 (high half)
+      rtype(0x25, kT4, kT5, kT4),                        // 10: or t4, t4, t5
+      rtype(0x09, kT4, 0, kT5),                          // 11: jalr t5, t4
+      addu(kT3, kT5, kT1),                               // 12: delay slot reads the link
+      itype(0x06, kT0, 0, 2),                            // 13: blez t0, +2 (taken: t0 = 0)
+      lw(kT3, 8),                                        // 14: a load in the delay slot
+      addiu(kT1, kT1, 100),                              // 15: skipped
+      itype(0x06, kT1, 0, 2),                            // 16: blez t1, +2 (not taken)
+      addu(kT2, kT2, kT3),                               // 17: delay slot
+      itype(0x2B, 23, kT2, 12),                          // 18: sw t2, 12(s7)
+      itype(0x2B, 23, kT3, 16),                          // 19: sw t3, 16(s7)
+      j(base),                                           // 20
+      kNop};
+  code.resize(0x40, kNop);
+  const std::vector<u32> subroutine = {
+      lw(kT3, 4), rtype(0x08, kRa, 0, 0), addu(kT3, kT3, kT1)};    // lw t3; jr ra; addu t3 (old t3)
+  const std::vector<u32> sub2 = {
+      lw(kT4, 0), rtype(0x08, kT5, 0, 0), addu(kT1, kT1, kT4)};   // jr t5 read in lw's delay slot
+  code.insert(code.end(), subroutine.begin(), subroutine.end());
+  code.resize(0x48, kNop);
+  code.insert(code.end(), sub2.begin(), sub2.end());
   std::vector<u32> regs(31);
   for (u32 r = 0; r < 31; ++r) regs[r] = 0x01010101u * (r + 1);
   regs[22] = 0x80100000;

@@ -61,7 +61,6 @@ class RecompilerT {
   // The steps (recompiler_ops.h).
   static BlockEmitter::StepFn step_for(u32 word);
   static NativeOp native_for(u32 word);
-  static bool guard(void* cpu, const u32* segment);
   static BlockEmitter::Layout layout(Cpu& cpu);
   static RecOp classify(u32 instr);
   [[gnu::always_inline]] static bool may_step(Cpu& c, u32 pc);
@@ -117,7 +116,10 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
   u32 a = pc, word;
   bool delay_slot = false;
   while (steps_.size() < kMaxBlock && bus_.peek_code(a, word)) {
-    steps_.push_back({a, word, step_for(word), native_for(word)});
+    // A branch in a delay slot (jumping from where the first one went) stays a call step.
+    const NativeOp native = native_for(word);
+    const bool branch_in_slot = delay_slot && ends_block(word);
+    steps_.push_back({a, word, step_for(word), branch_in_slot ? NativeOp::None : native});
     if (delay_slot) break;
     delay_slot = ends_block(word);
     a += 4;

@@ -44,7 +44,8 @@ class IdleSkip {
     u64 cycles = 0;      // CPU cycles they took
   };
 
-  // Called by the CPU's run loop with pc at a loop head; executes at least one instruction.
+  // Called by the CPU's run loop with pc at a loop head (and the loop head cleared); skips
+  // iterations, or executes some, or does nothing.
   void at_loop_head(CpuT<Bus>& cpu);
   const Stats& stats() const { return stats_; }
 

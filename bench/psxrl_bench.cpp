@@ -1,10 +1,11 @@
 // psxrl's one-command benchmark: the machine, then emulation speed (emulated frames per second
 // and multiple of real time) on a CPU-bound program, a GTE/GPU-bound program and Tumble (title
-// and in play, idle skipping on and off), environment moves per second per observation kind,
-// vector-environment scaling over threads (batched and asynchronous), host memory per console,
-// save-state and snapshot times and the environment's reset time. Prints Markdown tables, then
-// the same figures as JSON. The host clock is used only to time the runs; on a shared machine
-// figures vary with its load, which is printed with them.
+// and in play, idle skipping on and off), each with the interpreter and the recompiler,
+// environment moves per second per observation kind, vector-environment scaling over threads
+// (batched and asynchronous), host memory per console, save-state and snapshot times and the
+// environment's reset time. Prints Markdown tables, then the same figures as JSON. The host clock
+// is used only to time the runs; on a shared machine figures vary with its load, which is
+// printed with them.
 #include <malloc.h>
 
 #include <cstdio>
@@ -66,9 +67,12 @@ struct Workload {
   int warm_frames;
 };
 
-// Emulated frames per second and multiple of real time over `frames` frames after warming up.
-void measure(const Workload& w, bool skip, int frames, Json& json) {
+// Emulated frames per second and multiple of real time over `frames` frames after warming up,
+// with the interpreter or the recompiler (which compute the same frames, only at another speed).
+void measure(const Workload& w, Console::CpuMode cpu, bool skip, int frames, Json& json) {
+  const bool rec = cpu == Console::CpuMode::Recompiler;
   Console c;
+  c.set_cpu_mode(cpu);
   c.set_idle_skip(skip);
   c.boot_exe(w.exe);
   c.run_frames(w.warm_frames);
@@ -84,8 +88,9 @@ void measure(const Workload& w, bool skip, int frames, Json& json) {
   }
   const double s = seconds_since(t);
   const double fps = frames / s, realtime = double(c.cycles() - c0) / s / psx::kCpuClockHz;
-  std::printf("| %s | %s | %.1f | %.2fx |\n", w.name, skip ? "on" : "off", fps, realtime);
-  const std::string key = std::string(w.key) + (skip ? "" : "_no_idle_skip");
+  std::printf("| %s | %s | %s | %.1f | %.2fx |\n", w.name, rec ? "recompiler" : "interpreter", skip ? "on" : "off",
+              fps, realtime);
+  const std::string key = std::string(w.key) + (skip ? "" : "_no_idle_skip") + (rec ? "_recompiler" : "");
   json.add(key + "_fps", fps);
   json.add(key + "_realtime", realtime);
 }
@@ -97,10 +102,12 @@ void emulation(Json& json) {
       {"tumble_title", "Tumble, title", kTumble, false, 200},
       {"tumble_level", "Tumble, level 1 in play", kTumble, true, 200},
   };
-  std::printf("\n## Emulation\n\n| workload | idle skip | frames/s | real time |\n| --- | --- | --- | --- |\n");
+  std::printf("\n## Emulation\n\n| workload | cpu | idle skip | frames/s | real time |\n| --- | --- | --- | --- | --- |\n");
   for (const Workload& w : loads) {
-    measure(w, true, 300, json);
-    if (w.exe == kTumble) measure(w, false, 300, json);
+    for (Console::CpuMode cpu : {Console::CpuMode::Interpreter, Console::CpuMode::Recompiler}) {
+      measure(w, cpu, true, 300, json);
+      if (w.exe == kTumble) measure(w, cpu, false, 300, json);
+    }
   }
 }
 

@@ -74,6 +74,8 @@ class Bus {
     hot_lines_.fill(kNoLine);
   }
   const ICache& icache() const { return icache_; }
+  // fetch_hit()'s table in place (kLines entries), for the recompiler's native code.
+  const u32* hot_lines() const { return hot_lines_.data(); }
   // BCC selects D-cache mode: loads from RAM also write the scratchpad (see dcache_fill()).
   bool dcache_mode() const { return dcache_mode_; }
   bool read32(u32 vaddr, u32& v) { return read(vaddr, v, 4); }

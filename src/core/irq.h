@@ -31,6 +31,10 @@ class InterruptController {
 
   u32 stat() const { return stat_; }
   u32 mask() const { return mask_; }
+  // Where I_STAT and I_MASK live: the recompiler's native code (cpu/recompiler/) checks for a
+  // pending interrupt in place.
+  const u32* stat_cell() const { return &stat_; }
+  const u32* mask_cell() const { return &mask_; }
 
   void do_state(StateIO& s) {
     s.section("IRQC", 1);

@@ -39,6 +39,10 @@ class Scheduler {
   Cycles next_deadline() const { return next_; }
   // The CPU (and DMA, which holds the bus) move time forward.
   void advance(Cycles n) { now_ += n; }
+  // Where the time and the deadline live: the recompiler's native code (cpu/recompiler/) counts
+  // cycles and checks the deadline in place instead of calling advance() and next_deadline().
+  Cycles* now_cell() { return &now_; }
+  const Cycles* deadline_cell() const { return &next_; }
   // Runs every event whose time has come, earliest first, ties by registration order. A
   // callback may book new events, including ones due now; those run too.
   void run_due_events();

@@ -3,8 +3,10 @@
 // in under the interpreter, compared as whole save states (RAM, VRAM, CPU registers and pipeline,
 // cycle counter, every device) plus cycle and instruction counts. The programs: every test
 // program built in tests/roms, Tumble's title and a level with moves, the cdboot ROM booting
-// Tumble's disc (BIOS-ROM code, a DMA loading code into RAM), code that rewrites itself, and
-// seeded random instruction streams (cached and uncached) that raise exceptions of every kind.
+// Tumble's disc (BIOS-ROM code, a DMA loading code into RAM), code that rewrites itself, seeded
+// random instruction streams (cached and uncached) that raise exceptions of every kind, and
+// streams dense in the ALU operations the recompiler emits as native code, mixed with loads into
+// the same few registers (load delay slots, the load shadow, r0 as a target).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -189,6 +191,125 @@ TEST(RecompilerCode, RandomInstructionStreams) {
       expect_same_code(code, base, 0x40000000 /* CU2: GTE on */, random_regs(seed), 2);
     }
   }
+}
+
+// A stream for the native ALU operations (block_emitter.h): their every encoding, with operands
+// and destinations among r0, t0-t3 so that they keep meeting loads to the same registers: an ALU
+// op in a load's delay slot writing the loaded register (the load loses) or reading it (the old
+// value), reads in the load's shadow (a stall), r0 as a destination. Straight runs up to a whole
+// block long, so that scheduler deadlines fall inside native segments.
+std::vector<u32> alu_stream(u32 seed, u32 length) {
+  std::mt19937 rng(seed);
+  auto pick = [&](u32 n) { return u32(rng() % n); };
+  auto reg = [&]() { return pick(5) == 0 ? 0u : kT0 + pick(4); };
+  std::vector<u32> code;
+  for (u32 i = 0; i < length; ++i) {
+    const u32 s = reg(), t = reg(), d = reg(), imm = rng() & 0xFFFF;
+    const u32 kind = pick(20);
+    if (kind < 6) {  // ADDIU SLTI SLTIU ANDI ORI XORI LUI
+      static constexpr u32 kOps[] = {0x09, 0x0A, 0x0B, 0x0C, 0x0D, 0x0E, 0x0F};
+      code.push_back(itype(kOps[pick(7)], s, d, imm));
+    } else if (kind < 14) {  // SLL SRL SRA SLLV SRLV SRAV ADDU SUBU AND OR XOR NOR SLT SLTU
+      static constexpr u32 kFuncts[] = {0x00, 0x02, 0x03, 0x04, 0x06, 0x07, 0x21, 0x23,
+                                        0x24, 0x25, 0x26, 0x27, 0x2A, 0x2B};
+      code.push_back(rtype(kFuncts[pick(14)], s, t, d, pick(32)));
+    } else if (kind < 18) {  // LW LB LH LBU (aligned) around s7
+      static constexpr u32 kLoads[] = {0x23, 0x23, 0x20, 0x21, 0x24};
+      const u32 op = kLoads[pick(5)];
+      code.push_back(itype(op, 23, d, imm & (op == 0x23 ? 0x3FC : op == 0x21 ? 0x3FE : 0x3FF)));
+    } else if (kind < 19) {  // SW around s7
+      code.push_back(itype(0x2B, 23, t, imm & 0x3FC));
+    } else {  // a short forward BEQ, BNE, BLEZ or BGTZ (its delay slot is the next instruction)
+      code.push_back(itype(0x04 + pick(4), s, t, 1 + pick(4)));
+    }
+  }
+  return code;
+}
+
+TEST(RecompilerCode, NativeAluStreams) {
+  for (u32 seed = 1; seed <= 24; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::vector<u32> code = alu_stream(seed, 900);
+    code.push_back(j(0x80010000));
+    code.push_back(kNop);
+    expect_same_code(code, 0x80010000, 0, random_regs(seed), 3);
+  }
+}
+
+// Load delay and load shadow cases next to native ALU operations, each named, in one loop.
+TEST(RecompilerCode, NativeAluAfterLoads) {
+  const u32 base = 0x80010000, kT2 = 10;
+  const auto lw = [](u32 rt, u32 off) { return itype(0x23, 23, rt, off); };
+  const auto addu = [](u32 d, u32 s, u32 t) { return rtype(0x21, s, t, d); };
+  // After each case t0-t2 are folded into s0 (xor), so that every case's values reach the state.
+  const std::vector<std::vector<u32>> cases = {
+      {lw(kT0, 0), addu(kT0, kT1, kT1)},             // delay slot writes the loaded register: it keeps the ALU value
+      {lw(kT0, 4), addu(kT1, kT0, kT0)},             // delay slot reads the old t0
+      {lw(kT0, 8), kNop, addu(kT1, kT0, kT2)},       // a read in the shadow after the delay slot: stall
+      {lw(kT0, 12), kNop, kNop, kNop, kNop, kNop, kNop, kNop, addu(kT1, kT0, kT0)},  // shadow over
+      {lw(0, 16), addu(kT1, 0, kT0)},                // a load to r0, then r0 read
+      {lw(kT0, 20), addu(0, kT0, kT1), addu(kT2, 0, kT0)},  // r0 as an ALU target in the delay slot
+      {lw(kT0, 24), lw(kT1, 28), addu(kT2, kT0, kT1)},      // two loads in flight
+  };
+  constexpr u32 kS0 = 16;
+  std::vector<u32> code;
+  for (const auto& c : cases) {
+    code.insert(code.end(), c.begin(), c.end());
+    for (u32 r : {kT0, kT1, kT2}) code.push_back(rtype(0x26, kS0, r, kS0));  // xor s0, s0, r
+  }
+  code.insert(code.end(), {itype(0x09, kT0, kT0, 1), itype(0x2B, 23, kT0, 0),  // addiu t0, t0, 1; sw t0, 0(s7)
+                           itype(0x2B, 23, kS0, 24),                          // sw s0, 24(s7)
+                           j(base), itype(0x09, kS1, kS1, 1)});               // addiu s1 in the delay slot
+  std::vector<u32> regs(31);
+  for (u32 r = 0; r < 31; ++r) regs[r] = 0x01010101u * (r + 1);
+  regs[22] = 0x80100000;
+  expect_same_code(code, base, 0, regs, 3);
+}
+
+// Native branches and jumps (block_emitter.h): a backward loop (its loop head), BLEZ/BGTZ both
+// ways, JAL/JR/JALR links, ALU ops and loads in their delay slots, a load into ra just before a
+// JAL that writes it, and a jump-register target read in a load's delay slot.
+TEST(RecompilerCode, NativeBranches) {
+  const u32 base = 0x80010000, sub = base + 0x100, kT2 = 10, kT3 = 11, kT4 = 12, kT5 = 13, kRa = 31;
+  const auto addiu = [](u32 t, u32 s, u32 imm) { return itype(0x09, s, t, imm); };
+  const auto addu = [](u32 d, u32 s, u32 t) { return rtype(0x21, s, t, d); };
+  const auto lw = [](u32 rt, u32 off) { return itype(0x23, 23, rt, off); };
+  const auto jal = [](u32 target) { return 0x03u << 26 | ((target >> 2) & 0x03FFFFFF); };
+  std::vector<u32> code = {
+      addiu(kT0, 0, 5),                                  // 0: t0 = 5
+      addiu(kT0, kT0, 0xFFFF),                           // 1: loop: t0 -= 1
+      itype(0x07, kT0, 0, 0xFFFE),                       // 2: bgtz t0, loop
+      addiu(kT1, kT1, 3),                                // 3: delay slot
+      lw(kRa, 0),                                        // 4: a load into ra ...
+      jal(sub),                                          // 5: ... that the link overwrites
+      addu(kT2, kRa, 0),                                 // 6: delay slot reads ra (the link)
+      addiu(kT4, 0, 0),                                  // 7: back here
+      itype(0x0D, kT4, kT4, (sub + 0x20) & 0xFFFF),      // 8: ori t4 (low half of sub2)
+      itype(0x0F, 0, kT5, (sub + 0x20) >> 16),           // 9: lui t5 (high half)
+      rtype(0x25, kT4, kT5, kT4),                        // 10: or t4, t4, t5
+      rtype(0x09, kT4, 0, kT5),                          // 11: jalr t5, t4
+      addu(kT3, kT5, kT1),                               // 12: delay slot reads the link
+      itype(0x06, kT0, 0, 2),                            // 13: blez t0, +2 (taken: t0 = 0)
+      lw(kT3, 8),                                        // 14: a load in the delay slot
+      addiu(kT1, kT1, 100),                              // 15: skipped
+      itype(0x06, kT1, 0, 2),                            // 16: blez t1, +2 (not taken)
+      addu(kT2, kT2, kT3),                               // 17: delay slot
+      itype(0x2B, 23, kT2, 12),                          // 18: sw t2, 12(s7)
+      itype(0x2B, 23, kT3, 16),                          // 19: sw t3, 16(s7)
+      j(base),                                           // 20
+      kNop};
+  code.resize(0x40, kNop);
+  const std::vector<u32> subroutine = {
+      lw(kT3, 4), rtype(0x08, kRa, 0, 0), addu(kT3, kT3, kT1)};    // lw t3; jr ra; addu t3 (old t3)
+  const std::vector<u32> sub2 = {
+      lw(kT4, 0), rtype(0x08, kT5, 0, 0), addu(kT1, kT1, kT4)};   // jr t5 read in lw's delay slot
+  code.insert(code.end(), subroutine.begin(), subroutine.end());
+  code.resize(0x48, kNop);
+  code.insert(code.end(), sub2.begin(), sub2.end());
+  std::vector<u32> regs(31);
+  for (u32 r = 0; r < 31; ++r) regs[r] = 0x01010101u * (r + 1);
+  regs[22] = 0x80100000;
+  expect_same_code(code, base, 0, regs, 3);
 }
 
 }  // namespace

@@ -30,6 +30,9 @@ class ICache {
 
   // The cached copy of the instruction at vaddr (meaningful on a hit).
   u32 code(u32 vaddr) const { return words_[(vaddr >> 2) & (kLines * 4 - 1)]; }
+  // The cached copies in place (code(vaddr) is words()[(vaddr >> 2) & 1023]), for the
+  // recompiler's native code.
+  const u32* words() const { return words_.data(); }
 
   // A miss fills from the fetched word to the end of the line, no wrapping; IBLKSZ = 0 (2-word
   // refill) stops a fill entered at word 0 after word 1. A miss on a line whose tag matches (the

@@ -74,7 +74,6 @@ u32 load_width(u32 instr) {
 
 void IdleSkip::at_loop_head(Cpu& cpu) {
   const u32 head = cpu.pc_;
-  const u64 before = cpu.instructions_;
   Backoff& b = backoff_[(head >> 2) % backoff_.size()];
   if (head == last_head_ && cpu.sched_.now() + last_cost_ >= cpu.sched_.next_deadline()) {
     // Right after a skip: the next event falls due within this iteration, which is interpreted.
@@ -89,8 +88,8 @@ void IdleSkip::at_loop_head(Cpu& cpu) {
       b.visits = (1u << b.failures) - 1;
     }
   }
-  // The run loop calls here only when it would step; make sure it does.
-  if (cpu.instructions_ == before) cpu.step();
+  // Nothing done (backing off, or an event due within the iteration): the run loop, which has
+  // cleared the loop head, goes on from the head as usual (the recompiler with the head's block).
 }
 
 bool IdleSkip::examine(Cpu& cpu) {

@@ -50,7 +50,8 @@ class IdleSkip {
     u64 proofs = 0;      // proofs made (the other skips reused one)
   };
 
-  // Called by the CPU's run loop with pc at a loop head; executes at least one instruction.
+  // Called by the CPU's run loop with pc at a loop head (and the loop head cleared); skips
+  // iterations, or executes some, or does nothing.
   void at_loop_head(CpuT<Bus>& cpu);
   const Stats& stats() const { return stats_; }
 

@@ -1,6 +1,10 @@
-// x86-64 code for compiled blocks, generated with xbyak into one executable buffer. A block is
-// a sequence of steps; each step is a call step.fn(context, step.pc, step.word) and the block
-// returns at the first call that answers false. Xbyak stays inside block_emitter.cpp.
+// x86-64 code for compiled blocks, generated with xbyak into one executable buffer. A block is a
+// sequence of steps. A call step is `call step.fn(context, step.pc, step.word)`, and the block
+// returns at the first call that answers false. A run of native steps (register-only ALU
+// instructions, branches and jumps: NativeOp) is a segment: an inline guard first checks that the whole run may
+// execute as native code, and the segment then runs inline, doing what CpuT::execute_at_pc()
+// does for each instruction; when the guard refuses, the segment's steps run as calls instead.
+// Xbyak stays inside block_emitter.cpp.
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -10,6 +14,15 @@
 
 namespace psx {
 
+// The instructions emitted as native code (cpu_execute.h gives their semantics).
+enum class NativeOp : u8 {
+  None,  // a call step
+  Addiu, Slti, Sltiu, Andi, Ori, Xori, Lui,
+  Sll, Srl, Sra, Sllv, Srlv, Srav, Addu, Subu, And, Or, Xor, Nor, Slt, Sltu,
+  // Branches and jumps (never in a delay slot: the recompiler makes those call steps).
+  Beq, Bne, Blez, Bgtz, J, Jal, Jr, Jalr,
+};
+
 class BlockEmitter {
  public:
   using StepFn = bool (*)(void* context, u32 pc, u32 word);
@@ -18,6 +31,24 @@ class BlockEmitter {
     u32 pc;
     u32 word;  // the instruction compiled
     StepFn fn;
+    NativeOp native = NativeOp::None;
+  };
+  // Where native code finds the machine's state: byte offsets of CpuT's fields from the context
+  // (u32 unless noted), of the scheduler's time and deadline from `sched`, and the interrupt
+  // controller's and the i-cache's tables.
+  struct Layout {
+    void* context;
+    void* sched;
+    int regs, pc, next_pc, current_pc, load_reg, load_val, new_load_reg, new_load_val, shadow_reg;
+    int loop_head, sr, cause, dcic, hook_pc, extra_hook_pc;
+    int in_delay_slot, next_in_delay, stop, hook_armed;  // bool
+    int instructions, load_done_at;                      // u64
+    int idle_skip, hooks;                                // pointers
+    int now, deadline;                                   // u64, from sched
+    const u32* irq_stat;
+    const u32* irq_mask;
+    const u32* hot_lines;     // Bus::hot_lines()
+    const u32* icache_words;  // ICache::words()
   };
 
   explicit BlockEmitter(size_t buffer_bytes);
@@ -27,7 +58,7 @@ class BlockEmitter {
 
   // The block's entry point, or nullptr when the buffer has no room left for it (clear() then
   // makes room; every block emitted before is gone).
-  BlockFn emit(void* context, std::span<const Step> steps);
+  BlockFn emit(const Layout& layout, std::span<const Step> steps);
   void clear();
   size_t bytes_used() const;
 

@@ -60,6 +60,8 @@ class RecompilerT {
   static bool ends_block(u32 instr);
   // The steps (recompiler_ops.h).
   static BlockEmitter::StepFn step_for(u32 word);
+  static NativeOp native_for(u32 word);
+  static BlockEmitter::Layout layout(Cpu& cpu);
   static RecOp classify(u32 instr);
   [[gnu::always_inline]] static bool may_step(Cpu& c, u32 pc);
   static bool step_at(void* cpu, u32 pc, u32 word);
@@ -114,20 +116,24 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
   u32 a = pc, word;
   bool delay_slot = false;
   while (steps_.size() < kMaxBlock && bus_.peek_code(a, word)) {
-    steps_.push_back({a, word, step_for(word)});
+    // A branch in a delay slot (jumping from where the first one went) stays a call step.
+    const NativeOp native = native_for(word);
+    const bool branch_in_slot = delay_slot && ends_block(word);
+    steps_.push_back({a, word, step_for(word), branch_in_slot ? NativeOp::None : native});
     if (delay_slot) break;
     delay_slot = ends_block(word);
     a += 4;
   }
   if (steps_.empty()) return nullptr;  // no code there: the interpreter raises the bus error
   if (!emitter_) emitter_ = std::make_unique<BlockEmitter>(kCodeBytes);
-  BlockEmitter::BlockFn fn = emitter_->emit(&cpu, steps_);
+  const BlockEmitter::Layout lay = layout(cpu);
+  BlockEmitter::BlockFn fn = emitter_->emit(lay, steps_);
   if (!fn) {
     ++stats_.flushes;
     cache_.clear();
     pages_.clear();
     emitter_->clear();
-    fn = emitter_->emit(&cpu, steps_);
+    fn = emitter_->emit(lay, steps_);
   }
   const u32 first = CodePages::page_of(pc), last = CodePages::page_of(steps_.back().pc);
   if (first != CodePages::kNoPage && last != CodePages::kNoPage) pages_.mark_compiled(pc, steps_.back().pc);

@@ -117,6 +117,90 @@ bool RecompilerT<BusT>::step_fast(void* context, u32 pc, u32 word) {
   return c.pc_ == pc + 4;
 }
 
+// The instructions emitted as native code (block_emitter.h): on the console's bus, the
+// register-only ALU operations that raise no exception, and branches and jumps. (The scripted test buses have no i-cache
+// model, so the guard could not prove a fetch free: every step there is a call.)
+template <class BusT>
+NativeOp RecompilerT<BusT>::native_for(u32 i) {
+  if constexpr (!std::is_same_v<BusT, Bus>) {
+    return NativeOp::None;
+  } else {
+    static constexpr NativeOp kPrimary[16] = {
+        NativeOp::None, NativeOp::None, NativeOp::J, NativeOp::Jal, NativeOp::Beq, NativeOp::Bne,
+        NativeOp::Blez, NativeOp::Bgtz, NativeOp::None, NativeOp::Addiu, NativeOp::Slti, NativeOp::Sltiu,
+        NativeOp::Andi, NativeOp::Ori, NativeOp::Xori, NativeOp::Lui};
+    const u32 op = i >> 26;
+    if (op != 0) return op < 16 ? kPrimary[op] : NativeOp::None;
+    switch (i & 63) {
+      case 0x00: return NativeOp::Sll;
+      case 0x02: return NativeOp::Srl;
+      case 0x03: return NativeOp::Sra;
+      case 0x04: return NativeOp::Sllv;
+      case 0x06: return NativeOp::Srlv;
+      case 0x07: return NativeOp::Srav;
+      case 0x08: return NativeOp::Jr;
+      case 0x09: return NativeOp::Jalr;
+      case 0x21: return NativeOp::Addu;
+      case 0x23: return NativeOp::Subu;
+      case 0x24: return NativeOp::And;
+      case 0x25: return NativeOp::Or;
+      case 0x26: return NativeOp::Xor;
+      case 0x27: return NativeOp::Nor;
+      case 0x2A: return NativeOp::Slt;
+      case 0x2B: return NativeOp::Sltu;
+      default: return NativeOp::None;
+    }
+  }
+}
+
+// Where native code finds the CPU's fields (BlockEmitter::Layout).
+template <class BusT>
+BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
+  static_assert(sizeof(c.in_delay_slot_) == 1 && sizeof(c.next_in_delay_) == 1);
+  static_assert(sizeof(c.instructions_) == 8 && sizeof(c.load_done_at_) == 8 && sizeof(Cycles) == 8);
+  static_assert(sizeof(c.pc_) == 4 && sizeof(c.load_reg_) == 4 && sizeof(c.shadow_reg_) == 4);
+  static_assert(sizeof(c.stop_) == 1 && sizeof(c.hook_armed_) == 1 && sizeof(c.idle_skip_) == 8);
+  static_assert(sizeof(c.hooks_) == 8 && sizeof(c.hook_pc_) == 4 && sizeof(c.extra_hook_pc_) == 4);
+  const auto at = [](const void* base, const void* field) {
+    return int(static_cast<const char*>(field) - static_cast<const char*>(base));
+  };
+  BlockEmitter::Layout l{};
+  l.context = &c;
+  l.sched = &c.sched_;
+  l.regs = at(&c, c.regs_.data());
+  l.pc = at(&c, &c.pc_);
+  l.next_pc = at(&c, &c.next_pc_);
+  l.current_pc = at(&c, &c.current_pc_);
+  l.load_reg = at(&c, &c.load_reg_);
+  l.load_val = at(&c, &c.load_val_);
+  l.new_load_reg = at(&c, &c.new_load_reg_);
+  l.new_load_val = at(&c, &c.new_load_val_);
+  l.shadow_reg = at(&c, &c.shadow_reg_);
+  l.loop_head = at(&c, &c.loop_head_);
+  l.sr = at(&c, &c.cop0_.sr);
+  l.cause = at(&c, &c.cop0_.cause);
+  l.dcic = at(&c, &c.cop0_.dcic);
+  l.stop = at(&c, &c.stop_);
+  l.hook_armed = at(&c, &c.hook_armed_);
+  l.idle_skip = at(&c, &c.idle_skip_);
+  l.hooks = at(&c, &c.hooks_);
+  l.hook_pc = at(&c, &c.hook_pc_);
+  l.extra_hook_pc = at(&c, &c.extra_hook_pc_);
+  l.in_delay_slot = at(&c, &c.in_delay_slot_);
+  l.next_in_delay = at(&c, &c.next_in_delay_);
+  l.instructions = at(&c, &c.instructions_);
+  l.load_done_at = at(&c, &c.load_done_at_);
+  l.now = at(&c.sched_, c.sched_.now_cell());
+  l.deadline = at(&c.sched_, c.sched_.deadline_cell());
+  if constexpr (std::is_same_v<BusT, Bus>) {  // other buses compile no native steps
+    l.irq_stat = c.irq_.stat_cell();
+    l.irq_mask = c.irq_.mask_cell();
+    l.hot_lines = c.bus_.hot_lines();
+    l.icache_words = c.bus_.icache().words();
+  }
+  return l;
+}
+
 template <class BusT>
 BlockEmitter::StepFn RecompilerT<BusT>::step_for(u32 word) {
   if constexpr (!std::is_same_v<BusT, Bus>) {

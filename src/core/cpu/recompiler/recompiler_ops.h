@@ -118,8 +118,9 @@ bool RecompilerT<BusT>::step_fast(void* context, u32 pc, u32 word) {
 }
 
 // The instructions emitted as native code (block_emitter.h): on the console's bus, the
-// register-only ALU operations that raise no exception, and branches and jumps. (The scripted test buses have no i-cache
-// model, so the guard could not prove a fetch free: every step there is a call.)
+// register-only ALU operations that raise no exception, and branches and jumps. (The scripted
+// test buses have no i-cache model, so the guard could not prove a fetch free: every step there
+// is a call.)
 template <class BusT>
 NativeOp RecompilerT<BusT>::native_for(u32 i) {
   if constexpr (!std::is_same_v<BusT, Bus>) {

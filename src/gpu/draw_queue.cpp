@@ -169,7 +169,7 @@ void DrawQueue::drop() {
 // kept call adds what it reads, the frame due reads its display area at its VBlank, and a kept
 // call that itself replaces a rectangle hides the reads inside it from the calls before it.
 void DrawQueue::prune(const Rect& cover, size_t end) {
-  std::vector<bool> keep(queue_.size(), true);
+  keep_.assign(queue_.size(), 1);  // reuses its storage: no allocation per frame
   Readers readers;
   bool frame_added = !frame_pending_;
   bool any_dropped = false;
@@ -178,32 +178,36 @@ void DrawQueue::prune(const Rect& cover, size_t end) {
     const DrawCommand& c = queue_[i];
     const Rect w = c.write_rect();
     if (cover.contains(w) && !readers.read(w)) {
-      keep[i] = false, any_dropped = true;
+      keep_[i] = 0, any_dropped = true;
       continue;
     }
-    if (!c.cover.empty() && (!c.cover_with_next || keep[i + 1])) readers.forget_inside(c.cover);
+    if (!c.cover.empty() && (!c.cover_with_next || keep_[i + 1])) readers.forget_inside(c.cover);
     Rect reads[3];
     const u32 n = c.read_rects(reads);
     for (u32 k = 0; k < n; ++k) readers.add(reads[k]);
   }
-  if (!any_dropped) return;
-  std::vector<DrawCommand> kept;
-  std::vector<u16> kept_pixels;
-  size_t position = 0;
+  if (any_dropped) compact();
+}
+
+// Removes the calls prune() marked, in place: kept calls and their rows' pixels only move towards
+// the front, so the vectors keep their storage.
+void DrawQueue::compact() {
+  size_t out = 0, position = 0;
+  u32 pixels_out = 0;
   for (size_t i = 0; i < queue_.size(); ++i) {
-    if (!keep[i]) continue;
+    if (!keep_[i]) continue;
     if (i < frame_position_) ++position;
     DrawCommand c = queue_[i];
-    if (c.cover_with_next && !keep[i + 1]) c.cover = {}, c.cover_with_next = false;
+    if (c.cover_with_next && !keep_[i + 1]) c.cover = {}, c.cover_with_next = false;
     if (c.kind == DrawCommand::Kind::Row) {
-      const u32 at = static_cast<u32>(kept_pixels.size());
-      kept_pixels.insert(kept_pixels.end(), pixels_.begin() + c.pixels, pixels_.begin() + c.pixels + c.width);
-      c.pixels = at;
+      std::copy(pixels_.begin() + c.pixels, pixels_.begin() + c.pixels + c.width, pixels_.begin() + pixels_out);
+      c.pixels = pixels_out;
+      pixels_out += c.width;
     }
-    kept.push_back(c);
+    queue_[out++] = c;
   }
-  queue_.swap(kept);
-  pixels_.swap(kept_pixels);
+  queue_.resize(out);
+  pixels_.resize(pixels_out);
   frame_position_ = position;
 }
 

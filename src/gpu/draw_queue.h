@@ -58,12 +58,14 @@ class DrawQueue {
   void execute(const DrawCommand& c, bool after_frame);
   void convert_frame();
   void prune(const Rect& cover, size_t end);
+  void compact();
 
   FrameOutput& output_;
   Renderer* target_ = nullptr;
   bool deferred_ = false;
   std::vector<DrawCommand> queue_;
   std::vector<u16> pixels_;  // the kept GP0(A0) rows' pixels
+  std::vector<u8> keep_;     // prune()'s verdict per queued call
   // The frame not yet converted: its area, the VRAM it reads, and how many queued calls came
   // before its VBlank.
   bool frame_pending_ = false;

@@ -30,8 +30,6 @@
 
 namespace psx {
 
-enum class RecOp : u32;
-
 template <class BusT>
 class RecompilerT {
  public:
@@ -62,12 +60,12 @@ class RecompilerT {
   static BlockEmitter::StepFn step_for(u32 word);
   static NativeOp native_for(u32 word);
   static BlockEmitter::Layout layout(Cpu& cpu);
-  static RecOp classify(u32 instr);
+  static NativeOp decode_op(u32 instr);
   [[gnu::always_inline]] static bool may_step(Cpu& c, u32 pc);
   static bool step_at(void* cpu, u32 pc, u32 word);
-  template <RecOp K>
+  template <NativeOp K>
   static bool step_fast(void* cpu, u32 pc, u32 word);
-  template <RecOp K>
+  template <NativeOp K>
   static void exec(Cpu& c, u32 instr);
 
   BusT& bus_;

@@ -7,61 +7,63 @@
 
 namespace psx {
 
-// The instructions with a handler of their own: register-only ALU operations, which touch neither
-// memory nor coprocessors and raise no exception. Everything else runs through CpuT::execute().
-enum class RecOp : u32 {
-  Other, Addiu, Slti, Sltiu, Andi, Ori, Xori, Lui,
-  Sll, Srl, Sra, Addu, Subu, And, Or, Xor, Nor, Slt, Sltu,
-};
-
+// The instructions the recompiler knows by name (block_emitter.h NativeOp): the register-only
+// ALU operations, which touch neither memory nor coprocessors and raise no exception, and the
+// branches and jumps; None for everything else.
 template <class BusT>
-RecOp RecompilerT<BusT>::classify(u32 i) {
-  static constexpr RecOp kPrimary[16] = {RecOp::Other, RecOp::Other, RecOp::Other, RecOp::Other,
-                                         RecOp::Other, RecOp::Other, RecOp::Other, RecOp::Other,
-                                         RecOp::Other, RecOp::Addiu, RecOp::Slti, RecOp::Sltiu,
-                                         RecOp::Andi, RecOp::Ori, RecOp::Xori, RecOp::Lui};
+NativeOp RecompilerT<BusT>::decode_op(u32 i) {
+  static constexpr NativeOp kPrimary[16] = {
+      NativeOp::None, NativeOp::None, NativeOp::J, NativeOp::Jal, NativeOp::Beq, NativeOp::Bne,
+      NativeOp::Blez, NativeOp::Bgtz, NativeOp::None, NativeOp::Addiu, NativeOp::Slti, NativeOp::Sltiu,
+      NativeOp::Andi, NativeOp::Ori, NativeOp::Xori, NativeOp::Lui};
   const u32 op = i >> 26;
-  if (op != 0) return op < 16 ? kPrimary[op] : RecOp::Other;
+  if (op != 0) return op < 16 ? kPrimary[op] : NativeOp::None;
   switch (i & 63) {
-    case 0x00: return RecOp::Sll;
-    case 0x02: return RecOp::Srl;
-    case 0x03: return RecOp::Sra;
-    case 0x21: return RecOp::Addu;
-    case 0x23: return RecOp::Subu;
-    case 0x24: return RecOp::And;
-    case 0x25: return RecOp::Or;
-    case 0x26: return RecOp::Xor;
-    case 0x27: return RecOp::Nor;
-    case 0x2A: return RecOp::Slt;
-    case 0x2B: return RecOp::Sltu;
-    default: return RecOp::Other;
+    case 0x00: return NativeOp::Sll;
+    case 0x02: return NativeOp::Srl;
+    case 0x03: return NativeOp::Sra;
+    case 0x04: return NativeOp::Sllv;
+    case 0x06: return NativeOp::Srlv;
+    case 0x07: return NativeOp::Srav;
+    case 0x08: return NativeOp::Jr;
+    case 0x09: return NativeOp::Jalr;
+    case 0x21: return NativeOp::Addu;
+    case 0x23: return NativeOp::Subu;
+    case 0x24: return NativeOp::And;
+    case 0x25: return NativeOp::Or;
+    case 0x26: return NativeOp::Xor;
+    case 0x27: return NativeOp::Nor;
+    case 0x2A: return NativeOp::Slt;
+    case 0x2B: return NativeOp::Sltu;
+    default: return NativeOp::None;
   }
 }
 
-// The semantics of CpuT::execute() for the instructions RecOp names (cpu_execute.h).
+// The semantics of CpuT::execute() for the ALU instructions with a call step of their own
+// (step_for()); the others through CpuT::execute() itself (cpu_execute.h).
 template <class BusT>
-template <RecOp K>
+template <NativeOp K>
 void RecompilerT<BusT>::exec(Cpu& c, u32 i) {
   using namespace cpu_detail;
   const u32 s = c.regs_[rs(i)], t = c.regs_[rt(i)];
-  if constexpr (K == RecOp::Addiu) c.write_reg(rt(i), s + simm(i));
-  else if constexpr (K == RecOp::Slti) c.write_reg(rt(i), s32(s) < s32(simm(i)));
-  else if constexpr (K == RecOp::Sltiu) c.write_reg(rt(i), s < simm(i));
-  else if constexpr (K == RecOp::Andi) c.write_reg(rt(i), s & imm(i));
-  else if constexpr (K == RecOp::Ori) c.write_reg(rt(i), s | imm(i));
-  else if constexpr (K == RecOp::Xori) c.write_reg(rt(i), s ^ imm(i));
-  else if constexpr (K == RecOp::Lui) c.write_reg(rt(i), imm(i) << 16);
-  else if constexpr (K == RecOp::Sll) c.write_reg(rd(i), t << shamt(i));
-  else if constexpr (K == RecOp::Srl) c.write_reg(rd(i), t >> shamt(i));
-  else if constexpr (K == RecOp::Sra) c.write_reg(rd(i), u32(s32(t) >> shamt(i)));
-  else if constexpr (K == RecOp::Addu) c.write_reg(rd(i), s + t);
-  else if constexpr (K == RecOp::Subu) c.write_reg(rd(i), s - t);
-  else if constexpr (K == RecOp::And) c.write_reg(rd(i), s & t);
-  else if constexpr (K == RecOp::Or) c.write_reg(rd(i), s | t);
-  else if constexpr (K == RecOp::Xor) c.write_reg(rd(i), s ^ t);
-  else if constexpr (K == RecOp::Nor) c.write_reg(rd(i), ~(s | t));
-  else if constexpr (K == RecOp::Slt) c.write_reg(rd(i), s32(s) < s32(t));
-  else if constexpr (K == RecOp::Sltu) c.write_reg(rd(i), s < t);
+  if constexpr (K == NativeOp::Addiu) c.write_reg(rt(i), s + simm(i));
+  else if constexpr (K == NativeOp::Slti) c.write_reg(rt(i), s32(s) < s32(simm(i)));
+  else if constexpr (K == NativeOp::Sltiu) c.write_reg(rt(i), s < simm(i));
+  else if constexpr (K == NativeOp::Andi) c.write_reg(rt(i), s & imm(i));
+  else if constexpr (K == NativeOp::Ori) c.write_reg(rt(i), s | imm(i));
+  else if constexpr (K == NativeOp::Xori) c.write_reg(rt(i), s ^ imm(i));
+  else if constexpr (K == NativeOp::Lui) c.write_reg(rt(i), imm(i) << 16);
+  else if constexpr (K == NativeOp::Sll) c.write_reg(rd(i), t << shamt(i));
+  else if constexpr (K == NativeOp::Srl) c.write_reg(rd(i), t >> shamt(i));
+  else if constexpr (K == NativeOp::Sra) c.write_reg(rd(i), u32(s32(t) >> shamt(i)));
+  else if constexpr (K == NativeOp::Addu) c.write_reg(rd(i), s + t);
+  else if constexpr (K == NativeOp::Subu) c.write_reg(rd(i), s - t);
+  else if constexpr (K == NativeOp::And) c.write_reg(rd(i), s & t);
+  else if constexpr (K == NativeOp::Or) c.write_reg(rd(i), s | t);
+  else if constexpr (K == NativeOp::Xor) c.write_reg(rd(i), s ^ t);
+  else if constexpr (K == NativeOp::Nor) c.write_reg(rd(i), ~(s | t));
+  else if constexpr (K == NativeOp::Slt) c.write_reg(rd(i), s32(s) < s32(t));
+  else if constexpr (K == NativeOp::Sltu) c.write_reg(rd(i), s < t);
   else c.execute(i);
 }
 
@@ -90,7 +92,7 @@ bool RecompilerT<BusT>::step_at(void* context, u32 pc, u32) {
 // CpuT::execute_at_pc() for an instruction fetched from a whole i-cache line (no time, no fill)
 // that is still the word compiled: the same bookkeeping in the same order, with K's semantics.
 template <class BusT>
-template <RecOp K>
+template <NativeOp K>
 bool RecompilerT<BusT>::step_fast(void* context, u32 pc, u32 word) {
   Cpu& c = *static_cast<Cpu*>(context);
   if (!may_step(c, pc)) return false;
@@ -126,31 +128,7 @@ NativeOp RecompilerT<BusT>::native_for(u32 i) {
   if constexpr (!std::is_same_v<BusT, Bus>) {
     return NativeOp::None;
   } else {
-    static constexpr NativeOp kPrimary[16] = {
-        NativeOp::None, NativeOp::None, NativeOp::J, NativeOp::Jal, NativeOp::Beq, NativeOp::Bne,
-        NativeOp::Blez, NativeOp::Bgtz, NativeOp::None, NativeOp::Addiu, NativeOp::Slti, NativeOp::Sltiu,
-        NativeOp::Andi, NativeOp::Ori, NativeOp::Xori, NativeOp::Lui};
-    const u32 op = i >> 26;
-    if (op != 0) return op < 16 ? kPrimary[op] : NativeOp::None;
-    switch (i & 63) {
-      case 0x00: return NativeOp::Sll;
-      case 0x02: return NativeOp::Srl;
-      case 0x03: return NativeOp::Sra;
-      case 0x04: return NativeOp::Sllv;
-      case 0x06: return NativeOp::Srlv;
-      case 0x07: return NativeOp::Srav;
-      case 0x08: return NativeOp::Jr;
-      case 0x09: return NativeOp::Jalr;
-      case 0x21: return NativeOp::Addu;
-      case 0x23: return NativeOp::Subu;
-      case 0x24: return NativeOp::And;
-      case 0x25: return NativeOp::Or;
-      case 0x26: return NativeOp::Xor;
-      case 0x27: return NativeOp::Nor;
-      case 0x2A: return NativeOp::Slt;
-      case 0x2B: return NativeOp::Sltu;
-      default: return NativeOp::None;
-    }
+    return decode_op(i);
   }
 }
 
@@ -207,16 +185,16 @@ BlockEmitter::StepFn RecompilerT<BusT>::step_for(u32 word) {
   if constexpr (!std::is_same_v<BusT, Bus>) {
     return &step_at;  // a bus without the i-cache model: every step fetches
   } else {
-    switch (classify(word)) {
+    switch (decode_op(word)) {
 #define PSXRL_REC_OP(name) \
-  case RecOp::name: return &step_fast<RecOp::name>;
+  case NativeOp::name: return &step_fast<NativeOp::name>;
       PSXRL_REC_OP(Addiu) PSXRL_REC_OP(Slti) PSXRL_REC_OP(Sltiu) PSXRL_REC_OP(Andi) PSXRL_REC_OP(Ori)
       PSXRL_REC_OP(Xori) PSXRL_REC_OP(Lui) PSXRL_REC_OP(Sll) PSXRL_REC_OP(Srl) PSXRL_REC_OP(Sra)
       PSXRL_REC_OP(Addu) PSXRL_REC_OP(Subu) PSXRL_REC_OP(And) PSXRL_REC_OP(Or) PSXRL_REC_OP(Xor)
-      PSXRL_REC_OP(Nor) PSXRL_REC_OP(Slt) PSXRL_REC_OP(Sltu) PSXRL_REC_OP(Other)
+      PSXRL_REC_OP(Nor) PSXRL_REC_OP(Slt) PSXRL_REC_OP(Sltu)
 #undef PSXRL_REC_OP
+      default: return &step_fast<NativeOp::None>;  // CpuT::execute() without fetch and decode
     }
-    return &step_at;
   }
 }
 

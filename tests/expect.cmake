@@ -1,7 +1,8 @@
 # Runs COMMAND (arguments separated by '|') and checks its exit code (EXPECT_CODE), that its
-# standard output and error contain EXPECT_OUTPUT (if given) and, with EXPECT_CHECKS, that the
-# test program reported running exactly that many checks ("<name>: N checks, M failures", the
-# last such line, from psx/test.h's test_done). Used by CTest for CLI behaviour and test programs.
+# standard output and error contain EXPECT_OUTPUT (if given) and not EXPECT_NO_OUTPUT (if given)
+# and, with EXPECT_CHECKS, that the test program reported running exactly that many checks
+# ("<name>: N checks, M failures", the last such line, from psx/test.h's test_done). Used by
+# CTest for CLI behaviour and test programs.
 string(REPLACE "|" ";" cmd "${COMMAND}")
 # In a sanitizer build a finding must never pass as an expected exit code (ASan and UBSan exit
 # with 1 by default, the CLI's usage-error code): unless the caller chose one, they exit with 99,
@@ -24,6 +25,12 @@ if(DEFINED EXPECT_OUTPUT)
   string(FIND "${all}" "${EXPECT_OUTPUT}" pos)
   if(pos EQUAL -1)
     string(APPEND problems "output does not contain: ${EXPECT_OUTPUT}\n")
+  endif()
+endif()
+if(DEFINED EXPECT_NO_OUTPUT)
+  string(FIND "${all}" "${EXPECT_NO_OUTPUT}" pos)
+  if(NOT pos EQUAL -1)
+    string(APPEND problems "output contains: ${EXPECT_NO_OUTPUT}\n")
   endif()
 endif()
 if(DEFINED EXPECT_CHECKS)

@@ -279,23 +279,18 @@ class DqnAgent : public Agent {
 
 }  // namespace
 
-std::int64_t visual_features(std::int64_t height, std::int64_t width) {
-  auto out = [](std::int64_t in, int kernel, int stride) { return in < kernel ? 0 : (in - kernel) / stride + 1; };
-  std::int64_t h = out(out(height, kConv1Kernel, kConv1Stride), kConv2Kernel, kConv2StrideY);
-  std::int64_t w = out(out(width, kConv1Kernel, kConv1Stride), kConv2Kernel, kConv2StrideX);
-  return kConv2Filters * h * w;
+}  // namespace psxrl::agents
+
+// The plugin's entry points (dqn_agent.h). C linkage keeps their names plain for dlsym.
+extern "C" const psxrl::agents::DqnPluginStamp* psxrl_dqn_stamp() {
+  static constexpr psxrl::agents::DqnPluginStamp kStamp = psxrl::agents::dqn_plugin_stamp();
+  return &kStamp;
 }
 
-std::unique_ptr<Agent> make_dqn_agent(const std::vector<rl::Space>& spaces, bool interpret, int actions,
-                                      const AgentOptions& options) {
+extern "C" psxrl::agents::Agent* psxrl_dqn_make_agent(const std::vector<psxrl::rl::Space>& spaces, bool interpret,
+                                                      int actions, const psxrl::agents::AgentOptions& options) {
   // One intra-op thread: the same seed gives the same floating-point sums, and the emulator keeps
   // the other cores.
   torch::set_num_threads(1);
-  return std::make_unique<DqnAgent>(spaces, interpret, actions, options);
+  return new psxrl::agents::DqnAgent(spaces, interpret, actions, options);
 }
-
-std::unique_ptr<Agent> make_dqn_agent(int inputs, int actions, const AgentOptions& options) {
-  return make_dqn_agent({rl::Space{"features", {inputs}, rl::DType::F32, 0, 0}}, false, actions, options);
-}
-
-}  // namespace psxrl::agents

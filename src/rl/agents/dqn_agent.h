@@ -1,6 +1,9 @@
-// Deep Q-learning with LibTorch (seed §3.3.4, §3.3.5, §4.2.1); torch is included by dqn_agent.cpp
-// and the q_networks.h it alone includes, so nothing else in the project compiles against it.
+// Deep Q-learning with LibTorch (seed §3.3.4, §3.3.5, §4.2.1). The agent is built into its own
+// plugin, libpsxrl_dqn.so (dqn_agent.cpp and the q_networks.h it alone includes), which
+// make_dqn_agent loads on first use (dqn_plugin.cpp): loading LibTorch costs about 0.7 s of
+// dynamic linking, which no other command or test should pay.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -21,7 +24,12 @@ inline constexpr int kAudioHidden = 32, kAudioFeatures = 8;
 
 // Features the visual network makes of a planes x height x width frame (a valid convolution's
 // output is (in - kernel) / stride + 1 per axis); 0 when the frame is too small for it.
-std::int64_t visual_features(std::int64_t height, std::int64_t width);
+constexpr std::int64_t visual_features(std::int64_t height, std::int64_t width) {
+  auto out = [](std::int64_t in, int kernel, int stride) { return in < kernel ? 0 : (in - kernel) / stride + 1; };
+  std::int64_t h = out(out(height, kConv1Kernel, kConv1Stride), kConv2Kernel, kConv2StrideY);
+  std::int64_t w = out(out(width, kConv1Kernel, kConv1Stride), kConv2Kernel, kConv2StrideX);
+  return kConv2Filters * h * w;
+}
 
 // The seed's agent-local network: `inputs` -> 4 hidden fully connected PReLU layers -> `actions`
 // with tanh output (or linear), experience replay, Adam + MSE.
@@ -34,5 +42,23 @@ std::unique_ptr<Agent> make_dqn_agent(int inputs, int actions, const AgentOption
 // for an array no interpretive network reads.
 std::unique_ptr<Agent> make_dqn_agent(const std::vector<rl::Space>& spaces, bool interpret, int actions,
                                       const AgentOptions& options);
+
+// The plugin's two entry points, looked up by name: a stamp of the release and the sizes of the
+// types that cross the boundary, which the loader compares with its own so that a plugin left
+// over from another build is refused rather than called (constexpr, so each side keeps its own
+// values); and the factory behind make_dqn_agent (the caller owns the agent).
+struct DqnPluginStamp {
+  const char* version;
+  std::size_t agent_options, space, agent;
+};
+constexpr DqnPluginStamp dqn_plugin_stamp() {
+  return {PSXRL_VERSION, sizeof(AgentOptions), sizeof(rl::Space), sizeof(Agent)};
+}
+inline constexpr const char* kDqnPluginFile = "libpsxrl_dqn.so";
+inline constexpr const char* kDqnStampSymbol = "psxrl_dqn_stamp";
+inline constexpr const char* kDqnFactorySymbol = "psxrl_dqn_make_agent";
+using DqnStampFn = const DqnPluginStamp* (*)();
+using DqnFactoryFn = Agent* (*)(const std::vector<rl::Space>& spaces, bool interpret, int actions,
+                                const AgentOptions& options);
 
 }  // namespace psxrl::agents

@@ -34,6 +34,7 @@ Console::Console()
   dma_.connect(Dma::Spu, &spu_);
   // The root counters count the GPU's dots and HBlanks and synchronise to its blanking.
   gpu_.set_video_signals(&timers_);
+  timers_.set_video_clock(&gpu_.video_clock());
   // A digital pad in controller port 1 (programs and BIOSes expect one).
   sio0_.attach_pad(0, std::make_unique<DigitalPad>());
 

@@ -28,15 +28,28 @@ class DmaPort {
 
 // Video timing edges the GPU exports to the root counters (timers 0 and 1 count dots and
 // HBlanks and can synchronise to the blanking periods). Called at the scheduler time of the edge.
+// HBlank edges come only while wants_hblank() is true: two a scanline would otherwise be the
+// busiest events of the console, and nothing else needs them as events.
 class VideoSignals {
  public:
   virtual ~VideoSignals() = default;
+  virtual bool wants_hblank() const = 0;
   virtual void hblank_changed(bool active) = 0;
   virtual void vblank_changed(bool active) = 0;
   // The dot clock is the GPU video clock (psx-spx "GPU Timings": 53.693175 MHz NTSC, 53.203425 MHz
   // PAL) divided by the video clock cycles per dot of the horizontal resolution (10, 8, 7, 5 or 4).
   // Timer 0 counts it, so it must use the same clock as the GPU's scanlines.
   virtual void dot_clock_changed(u64 video_hz, u32 video_cycles_per_dot) = 0;
+};
+
+// The video timing as the root counters query it: a block that starts wanting HBlank edges
+// (VideoSignals::wants_hblank) reads the HBlank state at that moment here, before the change, and
+// after any change of what it wants asks for the edges to be booked again.
+class VideoClock {
+ public:
+  virtual ~VideoClock() = default;
+  virtual bool hblank_now() = 0;
+  virtual void hblank_wanted_changed() = 0;
 };
 
 }  // namespace psx

@@ -186,6 +186,8 @@ void Timers::blank_start(u32 i) {
   if (sync == 3) c.released = true;
 }
 
+bool Timers::wants_hblank() const { return (counters_[0].mode & kGatf) || (counters_[1].mode & kExtc); }
+
 void Timers::hblank_changed(bool active) {
   catch_up();
   hblank_ = active;
@@ -244,14 +246,20 @@ void Timers::io_write(u32 offset, u32 value, u32 width) {
       c.value = v;
       c.hold = true;
       break;
-    case 0x4:
-      // Writing MODE resets the counter, sets INTF and re-arms a one-shot IRQ.
+    case 0x4: {
+      // Writing MODE resets the counter, sets INTF and re-arms a one-shot IRQ. HBlank edges reach
+      // the timers only while they want them (VideoSignals), so the state is read before a
+      // change, while the edges up to now still count as unwanted.
+      const bool wanted = wants_hblank();
+      if (video_ && !wanted) hblank_ = video_->hblank_now();
       c.mode = static_cast<u16>((v & 0x3FF) | kIntf | (c.mode & (kEquf | kOvff)));
       c.value = 0;
       c.hold = true;
       c.irq_done = false;
       c.released = false;
+      if (video_ && wants_hblank() != wanted) video_->hblank_wanted_changed();
       break;
+    }
     case 0x8: c.target = v; break;
     default: break;
   }

@@ -38,6 +38,10 @@ class Timers : public IoDevice, public VideoSignals {
   u32 io_read(u32 offset, u32 width) override;
   void io_write(u32 offset, u32 value, u32 width) override;
 
+  // The GPU's video timing, which the timers ask for the HBlank state when they start wanting its
+  // edges (timer 0 synchronised to HBlank, timer 1 counting HBlanks).
+  void set_video_clock(VideoClock* clock) { video_ = clock; }
+  bool wants_hblank() const override;
   void hblank_changed(bool active) override;
   void vblank_changed(bool active) override;
   void dot_clock_changed(u64 video_hz, u32 video_cycles_per_dot) override;
@@ -77,10 +81,11 @@ class Timers : public IoDevice, public VideoSignals {
 
   Scheduler& sched_;
   InterruptController& irq_;
+  VideoClock* video_ = nullptr;
   Scheduler::Handle event_;
   std::array<Counter, 3> counters_{};
   Cycles synced_at_ = 0;
-  bool hblank_ = false;
+  bool hblank_ = false;  // follows the edges only while wants_hblank()
   bool vblank_ = false;
   // The dot clock: NTSC video clock, 256-pixel mode (10 video cycles per dot) after reset.
   u64 video_hz_ = 53693175;

@@ -44,6 +44,7 @@ class Gpu final : public IoDevice, public DmaPort {
   const gpu::Renderer& renderer() const { return *renderer_; }
 
   void set_video_signals(VideoSignals* signals) { timing_.set_signals(signals); }
+  VideoClock& video_clock() { return timing_; }
   // Called at the start of each VBlank, after the frame was noted.
   std::function<void()> on_vblank;
 

@@ -5,23 +5,29 @@ namespace psx::gpu {
 
 VideoTiming::VideoTiming(Scheduler& sched, std::function<void()> vblank_started)
     : sched_(sched), vblank_started_(std::move(vblank_started)) {
-  event_ = sched_.add_event("gpu.video", [this](Cycles) { on_edge(); });
-  edge_at_ = sched_.now();
-  schedule_after(kActiveCycles);
+  event_ = sched_.add_event("gpu.video", [this](Cycles) { on_event(); });
+  pos_.edge_at = sched_.now();
+  advance(pos_, kActiveCycles);
+  book();
 }
 
 void VideoTiming::set_signals(VideoSignals* signals) {
+  sync();
   signals_ = signals;
   if (signals_) signals_->dot_clock_changed(video_hz(), dot_divider_);
+  book();
 }
 
 void VideoTiming::set_mode(bool pal, bool interlaced, u32 dot_divider) {
+  // The lines so far ran in the old mode; the edge already due keeps its time, as on the console.
+  sync();
   bool clock_changed = pal != pal_ || dot_divider != dot_divider_;
   pal_ = pal;
   interlaced_ = interlaced;
   if (!interlaced_) odd_field_ = false;
   dot_divider_ = dot_divider;
   if (clock_changed && signals_) signals_->dot_clock_changed(video_hz(), dot_divider_);
+  book();
 }
 
 u32 VideoTiming::lines_per_frame() const {
@@ -30,56 +36,103 @@ u32 VideoTiming::lines_per_frame() const {
   return interlaced_ && odd_field_ ? lines - 1 : lines;
 }
 
+u32 VideoTiming::next_line(u32 line) const { return line + 1 >= lines_per_frame() ? 0 : line + 1; }
+
 // Converts video clock cycles to CPU cycles exactly, carrying the remainder to the next edge.
-void VideoTiming::schedule_after(u32 video_cycles) {
+void VideoTiming::advance(Position& p, u64 video_cycles) const {
   u64 hz = video_hz();
-  u64 total = remainder_ + u64{video_cycles} * kCpuClockHz;
-  edge_at_ += total / hz;
-  remainder_ = total % hz;
-  sched_.schedule_at(event_, edge_at_);
+  u64 total = p.remainder + video_cycles * kCpuClockHz;
+  p.edge_at += total / hz;
+  p.remainder = total % hz;
 }
 
-void VideoTiming::on_edge() {
+// The edge at p.edge_at: HBlank starts (the line's active part is over), or it ends and the next
+// line starts.
+void VideoTiming::pass_edge(Position& p) const {
   u32 line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
-  if (!hblank_) {
-    hblank_ = true;
-    if (signals_) signals_->hblank_changed(true);
-    schedule_after(line_cycles - kActiveCycles);
+  if (!p.hblank) {
+    p.hblank = true;
+    advance(p, line_cycles - kActiveCycles);
     return;
   }
-  hblank_ = false;
-  start_line();
-  if (signals_) signals_->hblank_changed(false);
-  schedule_after(kActiveCycles);
+  p.hblank = false;
+  p.line = next_line(p.line);
+  advance(p, kActiveCycles);
 }
 
-void VideoTiming::start_line() {
-  line_ = line_ + 1 >= lines_per_frame() ? 0 : line_ + 1;
-  u32 first_visible = pal_ ? kPalFirstVisible : kNtscFirstVisible;
-  u32 vblank_start = pal_ ? kPalVblankStart : kNtscVblankStart;
-  if (line_ == first_visible && vblank_) {
+bool VideoTiming::next_edge_changes_vblank(const Position& p) const {
+  if (!p.hblank) return false;
+  u32 line = next_line(p.line);
+  return vblank_ ? line == (pal_ ? kPalFirstVisible : kNtscFirstVisible)
+                 : line == (pal_ ? kPalVblankStart : kNtscVblankStart);
+}
+
+void VideoTiming::sync() const {
+  if (hblank_wanted()) return;
+  const Cycles now = sched_.now();
+  while (pos_.edge_at <= now && !next_edge_changes_vblank(pos_)) pass_edge(pos_);
+}
+
+bool VideoTiming::hblank_now() {
+  sync();
+  return pos_.hblank;
+}
+
+void VideoTiming::hblank_wanted_changed() { book(); }
+
+void VideoTiming::on_event() {
+  sync();
+  if (pos_.edge_at <= sched_.now()) deliver_edge();
+  book();
+}
+
+// The edge at pos_.edge_at, with its signals: HBlank to the timers (when they want it), the
+// blanking periods to the timers and VBlank starts to the GPU.
+void VideoTiming::deliver_edge() {
+  const bool changes_vblank = next_edge_changes_vblank(pos_);
+  pass_edge(pos_);
+  if (changes_vblank && vblank_) {
     vblank_ = false;
     if (signals_) signals_->vblank_changed(false);
-  } else if (line_ == vblank_start && !vblank_) {
+  } else if (changes_vblank) {
     vblank_ = true;
     // A new interlaced field starts with each VBlank (GPUSTAT.13 and .31 follow it).
     if (interlaced_) odd_field_ = !odd_field_;
     if (signals_) signals_->vblank_changed(true);
     if (vblank_started_) vblank_started_();
   }
+  if (hblank_wanted()) signals_->hblank_changed(pos_.hblank);
+}
+
+// Books the next edge someone needs as an event: every edge while the timers want HBlank edges,
+// else the next line start that begins or ends VBlank, found in closed form. Edge times add up
+// exactly (the remainder carries the fractions), so d lines after an edge is one advance of d
+// whole lines.
+void VideoTiming::book() {
+  Position p = pos_;
+  if (!hblank_wanted()) {
+    if (!p.hblank) pass_edge(p);
+    u32 target = vblank_ ? (pal_ ? kPalFirstVisible : kNtscFirstVisible) : (pal_ ? kPalVblankStart : kNtscVblankStart);
+    u32 lines = lines_per_frame();
+    u32 lines_to_target = (target + lines - next_line(p.line)) % lines;
+    advance(p, u64{lines_to_target} * (pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine));
+  }
+  sched_.schedule_at(event_, p.edge_at);
 }
 
 void VideoTiming::do_state(StateIO& s) {
+  // Saved up to date, so a state does not depend on when the position was last asked for.
+  if (!s.loading()) sync();
   s.section("GPUT", 1);
   s.boolean(pal_);
   s.boolean(interlaced_);
   s.pod(dot_divider_);
-  s.pod(line_);
-  s.boolean(hblank_);
+  s.pod(pos_.line);
+  s.boolean(pos_.hblank);
   s.boolean(vblank_);
   s.boolean(odd_field_);
-  s.pod(edge_at_);
-  s.pod(remainder_);
+  s.pod(pos_.edge_at);
+  s.pod(pos_.remainder);
   s.end_section("GPUT");
 }
 

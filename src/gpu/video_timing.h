@@ -1,7 +1,9 @@
 // GPU video timing (psx-spx "GPU Timings"): scanlines of 3413 (NTSC) or 3406 (PAL) video clock
 // cycles, 263/314 lines per progressive frame (262.5/312.5 interlaced, alternating), HBlank at the
-// end of each line and VBlank between frames. Runs on the scheduler; edges go to the timers
-// through VideoSignals and VBlank starts go to the GPU.
+// end of each line and VBlank between frames. Edges go to the timers through VideoSignals and
+// VBlank starts go to the GPU. The scanline position is computed lazily from the scheduler's
+// clock: an event is booked only for the next VBlank edge, or for every edge while the timers
+// want HBlank edges; the lines between are passed when someone asks (GPUSTAT.31 reads the line).
 #pragma once
 #include <functional>
 
@@ -12,7 +14,7 @@
 
 namespace psx::gpu {
 
-class VideoTiming {
+class VideoTiming : public VideoClock {
  public:
   // Video clock frequencies (psx-spx): NTSC 53.693175 MHz, PAL 53.203425 MHz.
   static constexpr u64 kNtscVideoHz = 53693175;
@@ -33,20 +35,45 @@ class VideoTiming {
   // GP1(08): PAL/NTSC, interlace, and the dot clock divider of the horizontal resolution.
   void set_mode(bool pal, bool interlaced, u32 dot_divider);
 
+  // VBlank and the field change only at booked events; the line at every edge.
   bool in_vblank() const { return vblank_; }
   bool odd_field() const { return odd_field_; }
-  u32 line() const { return line_; }
+  u32 line() const {
+    sync();
+    return pos_.line;
+  }
   bool pal() const { return pal_; }
   u32 lines_per_frame() const;
   // Video clock of the current standard.
   u64 video_hz() const { return pal_ ? kPalVideoHz : kNtscVideoHz; }
 
+  bool hblank_now() override;
+  void hblank_wanted_changed() override;
+
   void do_state(StateIO& s);
 
  private:
-  void on_edge();
-  void start_line();
-  void schedule_after(u32 video_cycles);
+  // Where the beam is: the current line, whether it is in HBlank, and when the next edge falls
+  // (the scheduler time, and the fraction of a CPU cycle past it in 1/video_hz units, so that
+  // edge times carry no rounding error).
+  struct Position {
+    u32 line = 0;
+    bool hblank = false;
+    Cycles edge_at = 0;
+    u64 remainder = 0;
+  };
+
+  void on_event();
+  // Passes edges due by now that change nothing but the position: none while HBlank edges are
+  // wanted (those are events), and never one that starts or ends VBlank.
+  void sync() const;
+  bool next_edge_changes_vblank(const Position& p) const;
+  void pass_edge(Position& p) const;
+  void advance(Position& p, u64 video_cycles) const;
+  void deliver_edge();
+  void book();
+  u32 next_line(u32 line) const;
+  bool hblank_wanted() const { return signals_ && signals_->wants_hblank(); }
 
   Scheduler& sched_;
   Scheduler::Handle event_;
@@ -56,12 +83,9 @@ class VideoTiming {
   bool pal_ = false;
   bool interlaced_ = false;
   u32 dot_divider_ = 10;
-  u32 line_ = 0;
-  bool hblank_ = false;
+  mutable Position pos_;  // lazily brought up to date (sync), so const queries advance it
   bool vblank_ = true;
   bool odd_field_ = false;
-  Cycles edge_at_ = 0;      // scheduler time of the most recent edge
-  u64 remainder_ = 0;       // fraction of a CPU cycle carried between edges, in 1/video_hz units
 };
 
 }  // namespace psx::gpu

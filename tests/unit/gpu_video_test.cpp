@@ -15,12 +15,14 @@ namespace {
 
 class Signals : public VideoSignals {
  public:
+  bool wants_hblank() const override { return want_hblank; }
   void hblank_changed(bool active) override { hblanks += active; }
   void vblank_changed(bool active) override { vblanks += active; }
   void dot_clock_changed(u64 hz, u32 d) override {
     video_hz = hz;
     divider = d;
   }
+  bool want_hblank = true;
   int hblanks = 0, vblanks = 0;
   u32 divider = 0;
   u64 video_hz = 0;
@@ -71,6 +73,43 @@ TEST_F(GpuTest, SignalsCountLinesAndDotDivider) {
   run(vblank_time(256, 263, 3413, 53693175, 1) + 10);
   EXPECT_EQ(sig.vblanks, 2);
   EXPECT_EQ(sig.hblanks - start_h, 263);  // one HBlank per line
+  gpu.set_video_signals(nullptr);
+}
+
+// CPU cycle at which NTSC line `line` (counted from power-on, across frames) reaches video cycle
+// `into` of its 3413: the video clock converted to CPU cycles, rounded down.
+Cycles ntsc_line_time(u64 line, u64 into) { return (line * 3413 + into) * kCpuClockHz / 53693175; }
+
+// HBlank edges are events only while someone wants them; the lines in between are passed lazily.
+// Wanted from mid-frame on, they come at the documented times: a line's HBlank starts 2560 video
+// cycles into it (GP1(06)'s default active range).
+TEST_F(GpuTest, HblankEdgesWantedMidFrameComeOnTime) {
+  class TimedSignals : public Signals {
+   public:
+    explicit TimedSignals(const Scheduler& s) : sched(s) {}
+    void hblank_changed(bool active) override {
+      if (active) starts.push_back(sched.now());
+      Signals::hblank_changed(active);
+    }
+    const Scheduler& sched;
+    std::vector<Cycles> starts;
+  } sig(sched);
+  sig.want_hblank = false;
+  gpu.set_video_signals(&sig);
+  run(300000);  // line 139 of the first frame (300000 * 53693175 / 33868800 / 3413 = 139.3)
+  EXPECT_EQ(sig.hblanks, 0);
+  EXPECT_EQ(sig.vblanks, 0);
+  // At 300000 line 139 is 0.3 x 3413 = 1070 video cycles in, before its HBlank.
+  ASSERT_LT(ntsc_line_time(139, 0), 300000u);
+  ASSERT_GT(ntsc_line_time(139, 2560), 300000u);
+  EXPECT_FALSE(gpu.video_clock().hblank_now());
+  sig.want_hblank = true;
+  gpu.video_clock().hblank_wanted_changed();
+  run(ntsc_line_time(263 + 20, 2560) + 1 - 300000);  // to line 20 of the second frame
+  // Lines 139..262, then 0..20 of the next frame: every HBlank start on time.
+  ASSERT_EQ(sig.starts.size(), 263u - 139 + 21);
+  for (u64 k = 0; k < sig.starts.size(); ++k) EXPECT_EQ(sig.starts[k], ntsc_line_time(139 + k, 2560)) << k;
+  EXPECT_EQ(sig.vblanks, 1);
   gpu.set_video_signals(nullptr);
 }
 

@@ -17,17 +17,19 @@ namespace {
 // I/O registers whose read changes nothing and whose value changes only when an event runs or
 // the CPU writes somewhere (psx-spx register descriptions; the devices' io_read confirm it):
 // memory control, RAM_SIZE, I_STAT/I_MASK, every DMA register, the CD-ROM status and interrupt
-// enable/flag registers (not the response or data FIFOs), GPUSTAT (not GPUREAD), SPUCNT and
-// SPUSTAT; of JOY_STAT (pad/card port status) bits 0-10, bits 11-31 being its baud timer, which
-// counts between events. Returns those bits of the 32-bit word at p & ~3, or 0 for registers
-// with none: timer counters (they count), FIFOs, GPUREAD, JOY_DATA (a read pops).
+// enable/flag registers (not the response or data FIFOs), SPUCNT and SPUSTAT; of GPUSTAT bits
+// 0-30, bit 31 being the line parity, which changes at every scanline while the line is counted
+// between events (gpu/video_timing.h); of JOY_STAT (pad/card port status) bits 0-10, bits 11-31
+// being its baud timer, which counts between events. Returns those bits of the 32-bit word at
+// p & ~3, or 0 for registers with none: timer counters (they count), FIFOs, GPUREAD, JOY_DATA (a
+// read pops).
 u32 pure_io_bits(u32 p, u32 width) {
   if (p >= 0x1F801000 && p < 0x1F801024) return ~0u;
   if (p >= 0x1F801060 && p < 0x1F801064) return ~0u;
   if (p >= 0x1F801070 && p < 0x1F801078) return ~0u;
   if (p >= 0x1F801080 && p < 0x1F801100) return ~0u;
   if (p == 0x1F801800 || p == 0x1F801803) return ~0u;
-  if (p >= 0x1F801814 && p < 0x1F801818) return ~0u;
+  if (p >= 0x1F801814 && p < 0x1F801818) return 0x7FFFFFFF;
   if ((p == 0x1F801DAA || p == 0x1F801DAE) && width <= 2) return ~0u;
   if (p >= 0x1F801044 && p < 0x1F801048) return 0x7FF;
   return 0;

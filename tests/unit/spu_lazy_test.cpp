@@ -2,8 +2,9 @@
 // the samples an event at every sample makes. SPUs batching at most 1 (the reference), 7 and the
 // default samples run the same register, DMA and CD-audio workload under a CPU-like driver (time
 // in uneven steps, events dispatched once a step reaches the deadline); read values, IRQ9 times,
-// output samples and state bytes must match. Then Tumble's title and a level with and without idle
-// skipping, and a save state taken in the middle of a batch.
+// output samples and state bytes must match. Also: a CD push tied with a sample keeps the event
+// order, a guest loop polling SPUSTAT under idle skipping sees every bit 11 flip on time, Tumble's
+// title and a level with and without idle skipping, and a save state taken in a batch's middle.
 #include <gtest/gtest.h>
 
 #include <cmath>

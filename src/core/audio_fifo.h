@@ -2,6 +2,7 @@
 // CD-DA and XA audio, the SPU pops one frame per output sample and mixes it as its CD input.
 #pragma once
 #include <array>
+#include <functional>
 
 #include "core/state.h"
 #include "core/types.h"
@@ -17,7 +18,13 @@ class AudioFifo {
  public:
   static constexpr u32 kCapacity = 8192;  // ~186 ms at 44.1 kHz, more than one XA sector's worth
 
+  // Called before every push: the SPU produces its samples lazily and must first pop what its
+  // samples due so far would have popped (spu/spu.h), or a full FIFO would drop the wrong frames
+  // and the samples would hear the pushed frames early.
+  std::function<void()> before_push;
+
   bool push(StereoSample s) {
+    if (before_push) before_push();
     if (count_ == kCapacity) return false;
     buf_[(head_ + count_) % kCapacity] = s;
     ++count_;

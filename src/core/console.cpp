@@ -187,6 +187,8 @@ void Console::run_frame() {
     cpu_.run();
     sched_.run_due_events();
   }
+  // A frame ends with its samples made, as when the SPU's event ran at every sample.
+  spu_.sync();
 }
 
 void Console::run_frames(u64 n) {
@@ -212,6 +214,9 @@ bool Console::run_until(const std::function<bool()>& done, u64 max_frames) {
 }
 
 void Console::do_state(StateIO& s) {
+  // The SPU makes its samples lazily: those due belong to the state before a save or a load,
+  // and its event is booked at its next sample so that the state does not depend on batching.
+  spu_.sync_for_state();
   s.section("CONS", 1);
   s.pod(frames_);
   s.boolean(hle_mode_);

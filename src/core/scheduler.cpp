@@ -37,6 +37,11 @@ void Scheduler::recompute_next() {
 }
 
 void Scheduler::run_due_events() {
+  // Outside a callback (also after one that throws) devices see the present (horizon()).
+  struct EndDispatch {
+    Handle& h;
+    ~EndDispatch() { h = -1; }
+  } end_dispatch{dispatching_};
   for (;;) {
     recompute_next();
     if (next_ > now_) return;
@@ -45,6 +50,8 @@ void Scheduler::run_due_events() {
     for (Handle h = 0; h < static_cast<Handle>(events_.size()); ++h)
       if (events_[h].when <= now_ && (due < 0 || events_[h].when < events_[due].when)) due = h;
     Cycles late = now_ - events_[due].when;
+    dispatching_ = due;
+    dispatch_time_ = events_[due].when;
     events_[due].when = kNever;
     events_[due].cb(late);
   }

@@ -46,6 +46,14 @@ class Scheduler {
   // Runs every event whose time has come, earliest first, ties by registration order. A
   // callback may book new events, including ones due now; those run too.
   void run_due_events();
+  // For a device that does its work lazily instead of booking an event at every step (the SPU,
+  // spu/spu.h): the latest time up to which event `h`, were it booked at every cycle, would
+  // already have run. Outside dispatch that is now; inside the callback of the event booked at E,
+  // it is E if `h` would run before that event at a tie (lower or equal handle), else E - 1.
+  Cycles horizon(Handle h) const {
+    if (dispatching_ < 0) return now_;
+    return h <= dispatching_ ? dispatch_time_ : dispatch_time_ - 1;
+  }
 
   // Saves the time and each booked event by name. Loading refuses a booked name this build does
   // not have (the state's future would lose that event's work); an event of this build that the
@@ -64,6 +72,9 @@ class Scheduler {
   std::vector<Event> events_;
   Cycles now_ = 0;
   Cycles next_ = kNever;
+  // The event whose callback runs (-1 when none) and the time it was booked for.
+  Handle dispatching_ = -1;
+  Cycles dispatch_time_ = 0;
 };
 
 }  // namespace psx

@@ -1,8 +1,11 @@
 // The Sound Processing Unit (psx-spx "Sound Processing Unit (SPU)"): registers at 1F801C00h
 // (400h bytes), 512 KiB of sound RAM filled by manual writes or DMA channel 4, 24 ADPCM voices,
 // reverb, CD audio input, and stereo 16-bit output at 44.1 kHz - one sample every 768 CPU
-// cycles, booked on the scheduler. The console and environment take the produced samples and
-// control audio capture through the public API below.
+// cycles. The samples are made lazily, in batches: whatever can observe the SPU (its registers,
+// DMA, CD audio pushes, the output, save states) first makes every sample due by then, each
+// exactly as at its own time, and the SPU's scheduler event is booked only where a sample could
+// do something visible by itself (an IRQ, a SPUSTAT change) or a batch ends. The console and
+// environment take the produced samples and control audio capture through the public API below.
 #pragma once
 #include <array>
 #include <vector>
@@ -28,8 +31,29 @@ class Spu final : public IoDevice, public DmaPort {
   static constexpr u32 kNumVoices = 24;
   static constexpr u32 kSampleRate = 44100;
   static constexpr Cycles kCyclesPerSample = 768;  // 33.8688 MHz / 44.1 kHz
+  // Longest batch, in samples. SPUSTAT bit 11 flips every 256 samples and idle skipping
+  // (cpu/idle_skip.h) counts on SPUSTAT changing only at an event, so no batch crosses a flip;
+  // this bound adds nothing beyond that and keeps a batch under a frame (735 samples at 60 Hz).
+  static constexpr u32 kDefaultMaxBatch = 256;
 
   Spu(Scheduler& sched, InterruptController& irq, AudioFifo& cd_audio);
+
+  // --- Lazy sample generation ---------------------------------------------------------------
+  // Makes every sample due by now (inside an event's callback: by that event's turn, as if the
+  // SPU's event were booked at every sample, Scheduler::horizon). Everything public below that
+  // observes the SPU calls it first.
+  void sync() {
+    const Cycles horizon = sched_.horizon(sample_event_);
+    if (next_sample_ <= horizon) catch_up(horizon);
+  }
+  // The most samples one event may make (1: an event at every sample, the reference schedule;
+  // results are bit-identical for any value).
+  void set_max_batch(u32 samples);
+  u32 max_batch() const { return max_batch_; }
+  // Makes the samples due and books the SPU's event at its next sample, whatever the batching, so
+  // that a save state made now is the same bytes either way; the console calls it before saving
+  // or loading. (Loading do_state() books the event again by the loaded registers.)
+  void sync_for_state();
 
   u32 io_read(u32 offset, u32 width) override;
   void io_write(u32 offset, u32 value, u32 width) override;
@@ -43,28 +67,51 @@ class Spu final : public IoDevice, public DmaPort {
   // Moves the samples produced since the last call into `out` (cleared first; the two vectors
   // swap storage, so nothing is copied).
   void take_samples(std::vector<StereoSample>& out);
-  size_t pending_samples() const { return output_.size(); }
+  size_t pending_samples() {
+    sync();
+    return output_.size();
+  }
   // Bounds the untaken output so a console nobody listens to does not grow without end: when
   // the limit is reached the older half is dropped. Default one minute; SIZE_MAX keeps all.
-  void set_output_limit(size_t samples) { output_limit_ = samples < 2 ? 2 : samples; }
+  void set_output_limit(size_t samples) {
+    sync();
+    output_limit_ = samples < 2 ? 2 : samples;
+  }
   // Whether anything takes the output samples (on at power-on). Off, the SPU still advances
   // voices, envelopes, sweeps, noise, reverb, the capture buffers, ENDX and the IRQ address
   // checks exactly, but skips the final mix, the reverb output filter and the interpolation of
   // voices whose output reaches nothing else, and produces no output samples. A running
   // capture keeps the output mixed.
-  void set_observed(bool observed) { observed_ = observed; }
+  void set_observed(bool observed) {
+    sync();
+    observed_ = observed;
+  }
   bool observed() const { return observed_; }
 
   // --- Capture (seed §2.5) ----------------------------------------------------------------
-  void start_capture(const spu::CaptureOptions& options) { capture_.start(options); }
+  void start_capture(const spu::CaptureOptions& options) {
+    sync();
+    capture_.start(options);
+  }
   // Stops the recording and returns it, cropped.
-  std::vector<StereoSample> stop_capture() { return capture_.stop(); }
-  const spu::AudioCapture& capture() const { return capture_; }
+  std::vector<StereoSample> stop_capture() {
+    sync();
+    return capture_.stop();
+  }
+  const spu::AudioCapture& capture() {
+    sync();
+    return capture_;
+  }
 
   // Sound RAM, for tests and tools.
-  const u8* ram() const { return ram_.data(); }
-  u8* ram() { return ram_.data(); }
-  const spu::Voice& voice(u32 i) const { return voices_[i]; }
+  u8* ram() {
+    sync();
+    return ram_.data();
+  }
+  const spu::Voice& voice(u32 i) {
+    sync();
+    return voices_[i];
+  }
 
   // Save states hold the whole SPU; the not-yet-taken output samples and a running capture
   // are the host's, not the console's, and are not part of the state.
@@ -110,8 +157,18 @@ class Spu final : public IoDevice, public DmaPort {
   }
   void raise_irq();
 
+  // Lazy generation (spu.cpp). next_sample_ is when the first sample not yet made is due.
+  void on_sample();
+  void catch_up(Cycles horizon);
+  // Whether a sample could raise IRQ9: both enables set and the flag not already up (a raised
+  // flag stays until ATTR acknowledges it, so further hits change nothing).
+  bool irq_possible() const {
+    return (attr_ & (kAttrIrqEnable | kAttrEnable)) == (kAttrIrqEnable | kAttrEnable) && !irq_flag_;
+  }
+  Cycles next_booking() const;
+  void book();
+
   // Sample generation (spu_mixer.cpp).
-  void on_sample(Cycles late);
   void generate_sample();
   void apply_key_events();
   struct Mix {
@@ -124,11 +181,14 @@ class Spu final : public IoDevice, public DmaPort {
   // Voice::output) and contribution to `mix` only when `needed`.
   void sample_voice(u32 i, bool needed, Mix& mix);
   void write_capture_buffers(StereoSample cd, s16 voice1, s16 voice3);
+  void next_sample_state(StateIO& s, u32 version);
 
   Scheduler& sched_;
   InterruptController& irq_;
   AudioFifo& cd_audio_;
   Scheduler::Handle sample_event_;
+  Cycles next_sample_ = 0;
+  u32 max_batch_ = kDefaultMaxBatch;
 
   std::vector<u8> ram_;
   std::array<spu::Voice, kNumVoices> voices_{};

@@ -14,22 +14,6 @@ s32 apply_volume(s32 sample, s32 volume) { return (sample * volume) >> 15; }
 
 }  // namespace
 
-Spu::Spu(Scheduler& sched, InterruptController& irq, AudioFifo& cd_audio)
-    : sched_(sched), irq_(irq), cd_audio_(cd_audio), ram_(kRamSize, 0) {
-  sample_event_ = sched_.add_event("spu.sample", [this](Cycles late) { on_sample(late); });
-  sched_.schedule(sample_event_, kCyclesPerSample);
-}
-
-void Spu::on_sample(Cycles late) {
-  generate_sample();
-  sched_.schedule_at(sample_event_, sched_.now() - late + kCyclesPerSample);
-}
-
-void Spu::take_samples(std::vector<StereoSample>& out) {
-  out.clear();
-  out.swap(output_);
-}
-
 void Spu::apply_key_events() {
   // KON/KOFF writes take effect at the next 44.1 kHz cycle (psx-spx "Unstable and Delayed I/O").
   if ((key_on_ | key_off_) == 0) return;
@@ -158,8 +142,12 @@ void Spu::generate_sample() {
 }
 
 void Spu::do_state(StateIO& s) {
+  // A saved state holds every sample due by now (the console syncs before loading too: Console::
+  // do_state; here a load must not make samples, the scheduler's time being the new one).
+  if (!s.loading()) sync();
   // Version 2 keeps only the outputs of voices 1 and 3 (Voice::output); version 1 saved all.
-  const u32 version = s.section("SPU ", 2, 1);
+  // Version 3 adds the cycles to the next sample.
+  const u32 version = s.section("SPU ", 3, 1);
   s.bytes(ram_.data(), ram_.size());
   for (spu::Voice& v : voices_) v.do_state(s, version < 2);
   if (version >= 2) {
@@ -194,7 +182,23 @@ void Spu::do_state(StateIO& s) {
   s.pod(raw_);
   if (s.loading() && (fifo_count_ > kFifoSize || capture_pos_ > 0x1FF || transfer_addr_ >= kRamSize))
     s.fail("SPU transfer state out of range");
+  next_sample_state(s, version);
   s.end_section("SPU ");
+  if (s.loading()) book();  // the loaded ATTR and capture position decide the booking
+}
+
+void Spu::next_sample_state(StateIO& s, u32 version) {
+  // Relative to the scheduler's time, which a console loads first; a standalone SPU loaded on
+  // another timeline keeps the distance to its next sample.
+  if (version < 3) {
+    // Earlier builds booked the SPU's event at every sample: the loaded booking is the next one.
+    next_sample_ = sched_.pending(sample_event_) ? sched_.when(sample_event_) : sched_.now() + kCyclesPerSample;
+    return;
+  }
+  Cycles ahead = next_sample_ - sched_.now();
+  s.pod(ahead);
+  if (s.loading() && (ahead == 0 || ahead > kCyclesPerSample)) s.fail("SPU next sample out of range");
+  next_sample_ = sched_.now() + ahead;
 }
 
 }  // namespace psx

@@ -7,6 +7,7 @@
 namespace psx {
 
 u32 Spu::io_read(u32 offset, u32 width) {
+  sync();
   offset &= kSize - 1;
   const u32 aligned = offset & ~1u;
   switch (width) {
@@ -20,6 +21,8 @@ u32 Spu::io_read(u32 offset, u32 width) {
 }
 
 void Spu::io_write(u32 offset, u32 value, u32 width) {
+  // The samples due before the write are made with the old value (spu.h).
+  sync();
   offset &= kSize - 1;
   switch (width) {
     case 4:  // two halfword writes, low first
@@ -88,6 +91,8 @@ void Spu::write_attr(u16 value) {
   // Clearing the IRQ enable acknowledges the interrupt.
   if (!(value & kAttrIrqEnable)) irq_flag_ = false;
   if (transfer_mode() == TransferMode::ManualWrite) flush_fifo();
+  // Whether a sample can raise IRQ9 depends on ATTR: the event is booked again by that rule.
+  book();
 }
 
 u16 Spu::read16(u32 offset) {

@@ -44,6 +44,7 @@ void Spu::flush_fifo() {
 }
 
 void Spu::dma_write(const u32* words, u32 count) {
+  sync();  // samples due first: they read the RAM and write its capture buffers
   for (u32 i = 0; i < count; ++i) {
     ram_write16(transfer_addr_, static_cast<u16>(words[i]));
     ram_write16(transfer_addr_ + 2, static_cast<u16>(words[i] >> 16));
@@ -52,6 +53,7 @@ void Spu::dma_write(const u32* words, u32 count) {
 }
 
 void Spu::dma_read(u32* words, u32 count) {
+  sync();
   for (u32 i = 0; i < count; ++i) {
     const u32 lo = ram_read16(transfer_addr_);
     const u32 hi = ram_read16(transfer_addr_ + 2);
@@ -61,6 +63,7 @@ void Spu::dma_read(u32* words, u32 count) {
 }
 
 bool Spu::dma_request() const {
+  // Only ATTR decides, and samples never change ATTR: no sync needed.
   const TransferMode m = transfer_mode();
   return m == TransferMode::DmaWrite || m == TransferMode::DmaRead;
 }

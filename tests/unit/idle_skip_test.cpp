@@ -40,10 +40,12 @@ struct Outcome {
   u32 s1;
 };
 
-// Runs `code` placed at `base` (interrupts off, no BIOS) for `frames` frames.
-Outcome run_code(const std::vector<u32>& code, u32 base, bool skip, int frames = 6) {
+// Runs `code` placed at `base` (interrupts off, no BIOS) for `frames` frames; the SPU batches
+// its samples unless `spu_every_sample` (Spu::set_max_batch(1): an event at every sample).
+Outcome run_code(const std::vector<u32>& code, u32 base, bool skip, bool spu_every_sample = false, int frames = 6) {
   Console c;
   c.set_idle_skip(skip);
+  if (spu_every_sample) c.spu().set_max_batch(1);
   for (u32 i = 0; i < code.size(); ++i) c.write32(base + 4 * i, code[i]);
   c.cpu().set_pc(base);
   c.run_frames(frames);
@@ -51,9 +53,9 @@ Outcome run_code(const std::vector<u32>& code, u32 base, bool skip, int frames =
 }
 
 // Both ways; returns the skipping run's outcome after checking the states are equal.
-Outcome compare(const std::vector<u32>& code, u32 base = 0x80010000) {
-  Outcome off = run_code(code, base, false);
-  Outcome on = run_code(code, base, true);
+Outcome compare(const std::vector<u32>& code, u32 base = 0x80010000, bool spu_every_sample = false) {
+  Outcome off = run_code(code, base, false, spu_every_sample);
+  Outcome on = run_code(code, base, true, spu_every_sample);
   EXPECT_EQ(off.stats.skips, 0u);
   EXPECT_TRUE(on.state == off.state) << "state differs with idle skipping";
   EXPECT_EQ(on.s1, off.s1);
@@ -79,25 +81,26 @@ TEST(IdleSkip, VBlankPollWithSpinCounterIsSkippedExactly) {
   EXPECT_GE(on.s1, 5u);
 }
 
-// After the event that ends a skip (the SPU's sample event, every 768 cycles, among others) the
-// loop is recorded again from its spin counter further on; the proof made the first time covers
-// it. Six frames of 564480 cycles hold over 4400 sample events, so thousands of skips, and the
-// states are equal with and without skipping (compare()).
+// After the event that ends a skip (the SPU's sample event, every 768 cycles when it steps every
+// sample, among others) the loop is recorded again from its spin counter further on; the proof
+// made the first time covers it. Six frames of 564480 cycles hold over 4400 sample events, so
+// thousands of skips, and the states are equal with and without skipping (compare()).
 TEST(IdleSkip, SpinLoopReusesItsProofAfterEachEvent) {
-  Outcome on = compare(vblank_wait());
+  Outcome on = compare(vblank_wait(), 0x80010000, true);
   EXPECT_GT(on.stats.skips, 4400u);
   EXPECT_LT(on.stats.proofs * 100, on.stats.skips);
 }
 
 // A countdown whose exit is 100 iterations after a skip must stop there even when the skip reuses
-// a proof made thousands of iterations earlier: the bound shrinks by the iterations since.
+// a proof made thousands of iterations earlier: the bound shrinks by the iterations since. The SPU
+// books every sample, so that events end skips often enough to reuse the proofs.
 TEST(IdleSkip, ReusedProofStillEndsACountdownOnTime) {
   std::vector<u32> code = {lui(kT0, 0x0003), ori(kT0, kT0, 0x0D40),  // 200000
                            addiu(kT0, kT0, -1), bne(kT0, 0, -2), kNop,
                            addiu(kS1, kS1, 1), lui(kT0, 0x0001), ori(kT0, kT0, 0x86A0),  // 100000
                            addiu(kT0, kT0, -1), bne(kT0, 0, -2), kNop,
                            addiu(kS1, kS1, 1), j(0x80010000), kNop};
-  Outcome on = compare(code);
+  Outcome on = compare(code, 0x80010000, true);
   EXPECT_GT(on.stats.skips, 0u);
   EXPECT_LT(on.stats.proofs * 10, on.stats.skips);
   // Each round is 300000 iterations of 2 instructions and at least 3 cycles (1 + branch + nop

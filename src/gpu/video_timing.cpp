@@ -69,7 +69,8 @@ bool VideoTiming::next_edge_changes_vblank(const Position& p) const {
 
 void VideoTiming::sync() const {
   if (hblank_wanted()) return;
-  const Cycles now = sched_.now();
+  // Inside another event's callback, only the edges an event per edge would have run by then.
+  const Cycles now = sched_.horizon(event_);
   while (pos_.edge_at <= now && !next_edge_changes_vblank(pos_)) pass_edge(pos_);
 }
 
@@ -82,7 +83,7 @@ void VideoTiming::hblank_wanted_changed() { book(); }
 
 void VideoTiming::on_event() {
   sync();
-  if (pos_.edge_at <= sched_.now()) deliver_edge();
+  if (pos_.edge_at <= sched_.horizon(event_)) deliver_edge();
   book();
 }
 

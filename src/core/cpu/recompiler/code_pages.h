@@ -3,6 +3,7 @@
 // blocks of the pages written before it runs another block. (Compiled blocks stay exact even when
 // stale, recompiler.h, so this keeps the block cache current rather than making it correct.)
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "core/types.h"
@@ -39,6 +40,9 @@ class CodePages {
     bits = 0;
     dirty_.push_back(off >> kPageBits);
   }
+  // The word bits in place (kPages u64s, never reallocated), for native stores, which call
+  // on_ram_write() only for a word whose bit is set.
+  const u64* bits() const { return code_.data(); }
   bool any_dirty() const { return !dirty_.empty(); }
   // The pages written since the last call, each once.
   std::vector<u32> take_dirty() {
@@ -47,7 +51,7 @@ class CodePages {
     return out;
   }
   void clear() {
-    code_.assign(kPages, 0);
+    std::fill(code_.begin(), code_.end(), 0);  // in place: bits() stays valid
     dirty_.clear();
   }
 

@@ -59,7 +59,7 @@ class RecompilerT {
   // The steps (recompiler_ops.h).
   static BlockEmitter::StepFn step_for(u32 word);
   static NativeOp native_for(u32 word);
-  static BlockEmitter::Layout layout(Cpu& cpu);
+  BlockEmitter::Layout layout(Cpu& cpu);
   static NativeOp decode_op(u32 instr);
   [[gnu::always_inline]] static bool may_step(Cpu& c, u32 pc);
   static bool step_at(void* cpu, u32 pc, u32 word);

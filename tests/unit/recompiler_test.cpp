@@ -198,7 +198,8 @@ TEST(RecompilerCode, NativeAluAfterLoads) {
   const u32 base = 0x80010000, kT2 = 10;
   const auto lw = [](u32 rt, u32 off) { return itype(0x23, 23, rt, off); };
   const auto addu = [](u32 d, u32 s, u32 t) { return rtype(0x21, s, t, d); };
-  // After each case t0-t2 are folded into s0 (xor), so that every case's values reach the state.
+  // After each case t0-t2 are added into s0, so that every case's values reach the state (an
+  // even number of xors of a wrong value, one per pass of the loop, would cancel).
   const std::vector<std::vector<u32>> cases = {
       {lw(kT0, 0), addu(kT0, kT1, kT1)},             // delay slot writes the loaded register: it keeps the ALU value
       {lw(kT0, 4), addu(kT1, kT0, kT0)},             // delay slot reads the old t0
@@ -212,7 +213,7 @@ TEST(RecompilerCode, NativeAluAfterLoads) {
   std::vector<u32> code;
   for (const auto& c : cases) {
     code.insert(code.end(), c.begin(), c.end());
-    for (u32 r : {kT0, kT1, kT2}) code.push_back(rtype(0x26, kS0, r, kS0));  // xor s0, s0, r
+    for (u32 r : {kT0, kT1, kT2}) code.push_back(rtype(0x21, kS0, r, kS0));  // addu s0, s0, r
   }
   code.insert(code.end(), {itype(0x09, kT0, kT0, 1), itype(0x2B, 23, kT0, 0),  // addiu t0, t0, 1; sw t0, 0(s7)
                            itype(0x2B, 23, kS0, 24),                          // sw s0, 24(s7)

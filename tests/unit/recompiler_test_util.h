@@ -4,6 +4,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -46,18 +47,20 @@ inline std::vector<psx::u8> state_of(Console& c) {
 }
 
 // Runs `code` (load_code) for `frames` frames under the given CPU; returns state_of().
+// `setup`, when given, runs after load_code (to fill data areas, say).
 inline std::vector<psx::u8> run_code(const std::vector<u32>& code, u32 base, u32 sr, const std::vector<u32>& regs,
-                                     bool recompiled, int frames) {
+                                     bool recompiled, int frames, const std::function<void(Console&)>& setup = {}) {
   Console c;
   if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
   load_code(c, code, base, sr, regs);
+  if (setup) setup(c);
   c.run_frames(frames);
   return state_of(c);
 }
 
 inline void expect_same_code(const std::vector<u32>& code, u32 base, u32 sr = 0, const std::vector<u32>& regs = {},
-                             int frames = 4) {
-  EXPECT_TRUE(run_code(code, base, sr, regs, false, frames) == run_code(code, base, sr, regs, true, frames))
+                             int frames = 4, const std::function<void(Console&)>& setup = {}) {
+  EXPECT_TRUE(run_code(code, base, sr, regs, false, frames, setup) == run_code(code, base, sr, regs, true, frames, setup))
       << "state differs under the recompiler";
 }
 

@@ -142,9 +142,8 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 // that is still the word compiled, checked once per line for the line and once per word for
 // the word. Such a hit also means the code is cached (Bus::cached_code), as the load-shadow
 // model asks of a native load.
-void Impl::guard(std::span<const Step> steps, Segment& seg) {
-  Label& fail = seg.slow[0];
-  const u32 first = steps[seg.first].pc, bytes = u32(seg.count) * 4;
+void Impl::guard(std::span<const Step> run, Label& fail) {
+  const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   cmp(byte[rbx + lay.stop], 0);
   jne(fail, T_NEAR);
   cmp(byte[rbx + lay.hook_armed], 0);
@@ -157,7 +156,7 @@ void Impl::guard(std::span<const Step> steps, Segment& seg) {
   jnz(fail, T_NEAR);
   test(cpu32(lay.dcic), Cop0::kDcicPCE);
   jnz(fail, T_NEAR);
-  if (is_branch(steps[seg.first].native)) {  // branch() assumes it is not in a delay slot
+  if (is_branch(run[0].native)) {  // branch() assumes it is not in a delay slot
     cmp(byte[rbx + lay.next_in_delay], 0);
     jne(fail, T_NEAR);
     cmp(cpu32(lay.next_pc), first + 4);
@@ -187,15 +186,15 @@ void Impl::guard(std::span<const Step> steps, Segment& seg) {
   test(ecx, 0xFF00);
   jnz(fail, T_NEAR);
   L(interrupts_off);
-  for (size_t k = 0; k < seg.count; ++k) {
-    const u32 pc = steps[seg.first + k].pc;
+  for (size_t k = 0; k < run.size(); ++k) {
+    const u32 pc = run[k].pc;
     if (k == 0 || (pc & 15) == 0) {
       mov(rax, reinterpret_cast<u64>(&lay.hot_lines[(pc >> 4) & 255]));
       cmp(dword[rax], pc & ~15u);
       jne(fail, T_NEAR);
       mov(rax, reinterpret_cast<u64>(&lay.icache_words[(pc >> 2) & 1020]));
     }
-    cmp(dword[rax + 4 * ((pc >> 2) & 3)], steps[seg.first + k].word);
+    cmp(dword[rax + 4 * ((pc >> 2) & 3)], run[k].word);
     jne(fail, T_NEAR);
   }
 }
@@ -209,7 +208,10 @@ void Impl::guard(std::span<const Step> steps, Segment& seg) {
 // known: not in a delay slot, next_pc = pc + 4, and the load delay slot as seg.pipe[k] says.
 // A branch's delay slot (after_branch) runs with in_delay_slot_ set and goes wherever the
 // branch set next_pc_. A load or store first checks, before changing anything, that it can make
-// its access natively; if not, the segment goes on from it as calls (seg.slow[k]).
+// its access natively; if not, it runs as a call (seg.fallback[k]), after which the segment goes
+// on natively if the guard allows it for the rest (the access, to I/O say, may have changed
+// what the guard checks), else as calls. The call leaves the pipeline as the native code would
+// have (a load pending in rt, or none), so seg.pipe holds after it too.
 void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch, Segment& seg) {
   using namespace cpu_detail;
   const NativeOp op = s.native;
@@ -219,7 +221,7 @@ void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch
     cmp(rax, qword[r12 + lay.deadline]);
     jae(*exit, T_NEAR);
   }
-  if (is_load(op) || is_store(op)) address_checks(op, s.word, seg.slow[k]);
+  if (is_load(op) || is_store(op)) address_checks(op, s.word, seg.fallback[k]);
   mov(cpu32(lay.current_pc), s.pc);
   if (k == 0) {
     mov(al, byte[rbx + lay.next_in_delay]);
@@ -325,14 +327,56 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
   }
 }
 
+// The block's end: RecompilerT::run()'s next loop pass. When it would call the block that
+// find()'s table holds for the pc (no stop, time before the deadline, no idle-loop head to hand
+// to IdleSkip, no written code pages whose blocks must be dropped first), the block jumps there
+// itself, a tail call in the same frame; otherwise it returns to the dispatcher, which makes the
+// same checks and does what they ask.
+void Impl::chain() {
+  Label back, no_loop_head;
+  cmp(byte[rbx + lay.stop], 0);
+  jne(back, T_NEAR);
+  mov(rax, now());
+  cmp(rax, qword[r12 + lay.deadline]);
+  jae(back, T_NEAR);
+  mov(eax, cpu32(lay.pc));
+  cmp(eax, cpu32(lay.loop_head));
+  jne(no_loop_head);
+  cmp(qword[rbx + lay.idle_skip], 0);
+  jne(back, T_NEAR);
+  L(no_loop_head);
+  mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
+  cmp(byte[rcx], 0);
+  jne(back, T_NEAR);
+  mov(ecx, eax);
+  shr(ecx, 2);
+  and_(ecx, lay.recent_count - 1);
+  shl(ecx, 4);  // 16-byte entries: {u32 pc; BlockFn fn at 8}
+  mov(rdx, reinterpret_cast<u64>(lay.recent_blocks));
+  cmp(dword[rdx + rcx], eax);
+  jne(back, T_NEAR);
+  mov(rax, qword[rdx + rcx + 8]);
+  pop(r13);
+  pop(r12);
+  pop(rbx);
+  jmp(rax);
+  L(back);
+  pop(r13);
+  pop(r12);
+  pop(rbx);
+  ret();
+}
+
 BlockEmitter::BlockEmitter(size_t buffer_bytes) : impl_(std::make_unique<Impl>(buffer_bytes)) {}
 BlockEmitter::~BlockEmitter() = default;
 
 BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const Step> steps) {
-  // Upper bounds on one step's code (guard, inline, stall stub, slow call) and on the frame's.
-  constexpr size_t kStepBytes = 768, kFrameBytes = 256;
+  // Upper bounds on one step's code (guard, inline, stall stub, slow call, a load's or store's
+  // call and guard for the rest of its segment) and on the frame's.
+  // A guard takes at most 24 bytes per word.
+  const size_t step_bytes = 768 + 24 * steps.size(), frame_bytes = 256;
   Impl& g = *impl_;
-  if (g.getSize() + kFrameBytes + kStepBytes * steps.size() > g.capacity) return nullptr;
+  if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;
   Label done;
   g.exit = &done;
@@ -356,6 +400,8 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     while (i < steps.size() && steps[i].native != NativeOp::None) ++i;
     seg.count = i - seg.first;
     seg.slow = std::vector<Label>(seg.count);
+    seg.fallback = std::vector<Label>(seg.count);
+    seg.resume = std::vector<Label>(seg.count);
     seg.stall = std::vector<Label>(seg.count);
     seg.stall_back = std::vector<Label>(seg.count);
     seg.pipe.resize(seg.count);
@@ -363,24 +409,34 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       const Step& prev = steps[seg.first + k - 1];
       seg.pipe[k] = {false, Impl::is_load(prev.native), cpu_detail::rt(prev.word)};
     }
-    g.guard(steps, seg);
+    g.guard(steps.subspan(seg.first, seg.count), seg.slow[0]);
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(steps[seg.first + k - 1].native);
+      g.L(seg.resume[k]);
       g.native(steps[seg.first + k], k, seg.first + k + 1 == steps.size(), after_branch, seg);
     }
     g.L(seg.end);
   }
   g.L(done);
-  g.pop(g.r13);
-  g.pop(g.r12);
-  g.pop(g.rbx);
-  g.ret();
+  g.chain();
   for (Segment& seg : segments) {
     for (size_t k = 0; k < seg.count; ++k) {
       g.L(seg.slow[k]);
       g.call_step(steps[seg.first + k]);
     }
     g.jmp(seg.end, Xbyak::CodeGenerator::T_NEAR);
+    for (size_t k = 0; k < seg.count; ++k) {
+      const Step& step = steps[seg.first + k];
+      if (!Impl::is_load(step.native) && !Impl::is_store(step.native)) continue;
+      g.L(seg.fallback[k]);
+      g.call_step(step);
+      if (k + 1 == seg.count) {
+        g.jmp(seg.end, Xbyak::CodeGenerator::T_NEAR);
+      } else {
+        g.guard(steps.subspan(seg.first + k + 1, seg.count - k - 1), seg.slow[k + 1]);
+        g.jmp(seg.resume[k + 1], Xbyak::CodeGenerator::T_NEAR);
+      }
+    }
     for (size_t k = 0; k < seg.count; ++k) g.stall_stub(steps[seg.first + k], k, seg);
   }
   return entry;

@@ -63,6 +63,11 @@ class BlockEmitter {
     const u64* code_bits;     // CodePages::bits(): which RAM words hold compiled code
     void* code_pages;         // the CodePages, and what a store to such a word calls
     void (*code_write)(void* code_pages, u32 ram_offset);
+    // Going on to the next block without the dispatcher (RecompilerT::run): CodePages::
+    // any_dirty_cell() and BlockCache::recent_table() (kRecent entries).
+    const bool* any_dirty;
+    const void* recent_blocks;
+    u32 recent_count;
   };
 
   explicit BlockEmitter(size_t buffer_bytes);

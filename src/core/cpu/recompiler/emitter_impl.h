@@ -24,11 +24,13 @@ struct Pipe {
 };
 
 // One native segment's pieces emitted after the block's main path: its steps as calls (the slow
-// path; `slow[k]` enters it at instruction k) and the shadow-stall stubs.
+// path; `slow[k]` enters it at instruction k), a load's or store's call when the native code
+// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), and the
+// shadow-stall stubs.
 struct Segment {
   size_t first, count;
   Xbyak::Label end;
-  std::vector<Xbyak::Label> slow, stall, stall_back;
+  std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back;
   std::vector<Pipe> pipe;  // per instruction
 };
 
@@ -54,10 +56,11 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void arm_hook_static(u32 target);
   void arm_hook_ecx();
   void branch(NativeOp op, u32 pc, u32 i);
-  void guard(std::span<const Step> steps, Segment& seg);
+  void guard(std::span<const Step> run, Xbyak::Label& fail);
   void native(const Step& s, size_t k, bool last_in_block, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void stall_stub(const Step& s, size_t k, Segment& seg);
+  void chain();
   // block_emitter_memory.cpp
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
   void load(NativeOp op, u32 i, const Pipe& pipe);

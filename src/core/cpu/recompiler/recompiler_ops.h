@@ -193,6 +193,9 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.lo = at(&c, &c.lo_);
   l.load_issue = int(Cpu::kLoadIssue);
   l.load_bus = int(Cpu::kLoadBus);
+  l.any_dirty = pages_.any_dirty_cell();
+  l.recent_blocks = cache_.recent_table();
+  l.recent_count = BlockCache::kRecent;
   l.now = at(&c.sched_, c.sched_.now_cell());
   l.deadline = at(&c.sched_, c.sched_.deadline_cell());
   if constexpr (std::is_same_v<BusT, Bus>) {  // other buses compile no native steps

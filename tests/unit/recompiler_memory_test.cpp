@@ -26,6 +26,7 @@ constexpr u32 kBase = 0x80010000;
 constexpr u32 kT2 = 10, kT3 = 11, kAt = 1, kRa = 31;
 // Base registers, never written by the streams.
 constexpr u32 kRamK0 = 23, kScratch = 22, kTimers = 21, kRamK1 = 20, kRamKuseg = 19, kCode = 18, kExp1 = 30;
+constexpr u32 kScratchK1 = 27, kKseg2 = 28;
 
 std::vector<u32> memory_regs(u32 seed) {
   std::vector<u32> regs = random_regs(seed);
@@ -36,6 +37,8 @@ std::vector<u32> memory_regs(u32 seed) {
   regs[kRamKuseg - 1] = 0x00300000;  // a mirror of RAM 0x100000 (2 MiB repeats through 8 MiB)
   regs[kCode - 1] = kBase;
   regs[kExp1 - 1] = 0x1F000000;
+  regs[kScratchK1 - 1] = 0xBF800000;  // the scratchpad's addresses in KSEG1: a bus error
+  regs[kKseg2 - 1] = 0xC0000000;      // KSEG2 (only the cache control register is there)
   return regs;
 }
 
@@ -53,7 +56,7 @@ std::function<void(Console&)> random_data(u32 seed) {
 
 // A base register and an offset for an access of `width` bytes (aligned but one time in eight).
 std::pair<u32, u32> random_address(std::mt19937& rng, u32 width, bool store, u32 code_words) {
-  const u32 kind = rng() % 16, misalign = rng() % 8 == 0 ? 1 + rng() % 3 : 0;
+  const u32 kind = rng() % 18, misalign = rng() % 8 == 0 ? 1 + rng() % 3 : 0;
   const u32 align = ~(width - 1);
   u32 base, off;
   if (kind < 5) base = kRamK0, off = rng() & 0x3FF;
@@ -64,6 +67,8 @@ std::pair<u32, u32> random_address(std::mt19937& rng, u32 width, bool store, u32
   else if (kind < 12) base = kExp1, off = rng() & 0xFF;
   else if (kind < 13) base = kT0 + rng() % 4, off = rng() & 0xFFFF;  // anywhere
   else if (kind < 14 && store) base = kCode, off = (rng() % code_words) * 4;  // into the code
+  else if (kind == 16) base = kScratchK1, off = rng() & 0x3FF;
+  else if (kind == 17) base = kKseg2, off = rng() & 0x3FF;
   else base = kRamK0, off = rng() & 0x3FF;
   return {base, ((off & align) + misalign) & 0xFFFF};
 }
@@ -76,19 +81,26 @@ std::vector<u32> memory_stream(u32 seed, u32 length) {
   auto pick = [&](u32 n) { return u32(rng() % n); };
   auto reg = [&]() { return pick(6) == 0 ? 0u : kT0 + pick(4); };
   std::vector<u32> code;
+  // Half the time a base register is first copied into at (ADDU), so that the recompiler cannot
+  // guess the address (address_guess.h) and compiles the access natively, to make its checks.
+  auto via_at = [&](u32 base) {
+    if (pick(2)) return base;
+    code.push_back(rtype(0x21, base, 0, kAt));
+    return kAt;
+  };
   while (code.size() < length) {
     const u32 kind = pick(24);
     if (kind < 6) {  // LB LH LWL LW LBU LHU LWR
       const u32 op = 0x20 + pick(7);
       const u32 width = op == 0x23 ? 4 : op == 0x21 || op == 0x25 ? 2 : 1;
       const auto [b, off] = random_address(rng, width, false, length);
-      code.push_back(itype(op, b, reg(), off));
+      code.push_back(itype(op, via_at(b), reg(), off));
     } else if (kind < 9) {  // SB SH SW, SWL SWR now and then
       static constexpr u32 kStores[] = {0x28, 0x29, 0x2B, 0x2B, 0x28, 0x29, 0x2B, 0x2A, 0x2E};
       const u32 op = kStores[pick(9)];
       const u32 width = op == 0x2B ? 4 : op == 0x29 ? 2 : 1;
       const auto [b, off] = random_address(rng, width, true, length);
-      code.push_back(itype(op, b, reg(), off));
+      code.push_back(itype(op, via_at(b), reg(), off));
     } else if (kind < 14) {
       static constexpr u32 kFuncts[] = {0x00, 0x02, 0x03, 0x04, 0x21, 0x23, 0x24, 0x25, 0x26, 0x2A, 0x2B};
       code.push_back(rtype(kFuncts[pick(11)], reg(), reg(), reg(), pick(32)));
@@ -170,7 +182,13 @@ TEST(RecompilerMemory, NamedLoadStoreCases) {
       {mem(kSw, kScratch, kT3, 8), mem(kLw, kScratch, kT1, 8), kNop},
       {mem(kLw, kRamK0, kT0, 2), kNop},                              // address error (AdEL)
       {mem(kSh, kRamK0, kT0, 3), kNop},                              // address error (AdES)
-      {mem(kLw, kTimers, kT0, 0), mem(kSw, kTimers, kT2, 8), kNop},  // I/O: the call steps
+      {mem(kLw, kTimers, kT0, 0), mem(kSw, kTimers, kT2, 8), kNop},  // I/O: call steps
+      // The same addresses through a copy of the base, which the recompiler cannot guess, so
+      // that the native code checks them and takes the calls: I/O, the scratchpad's addresses
+      // in KSEG1 and KSEG2 (bus errors).
+      {addu(kAt, kTimers, 0), mem(kLw, kAt, kT0, 0), mem(kSw, kAt, kT2, 8), kNop},
+      {addu(kAt, kScratchK1, 0), mem(kLw, kAt, kT0, 0), kNop, mem(kSw, kAt, kT2, 8), kNop},
+      {addu(kAt, kKseg2, 0), mem(kLw, kAt, kT0, 0), kNop, mem(kSw, kAt, kT2, 8), kNop},
       {mem(kLw, kRamK0, kT0, 44), mem(kSw, kRamK0, kT0, 48), kNop},  // the delay slot stores the old t0
       {mem(kLw, kRamK0, kT0, 52), mem(kLw, kT0, kT1, 0), kNop},      // base read in the delay slot
   };

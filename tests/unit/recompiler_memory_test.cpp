@@ -275,3 +275,27 @@ TEST(RecompilerMemory, SelfModifyingCachedCode) {
 }
 
 }  // namespace
+
+namespace {
+
+// A store that stops the CPU (the debug port's exit request, 1F802082h, on the loop's 100th
+// pass; before that the store goes to 1F802092h, which ignores it), through a base the
+// recompiler cannot guess, so compiled natively and then taken as a call: nothing after it may
+// run, so the native segment must not go on (the guard is checked again after the call).
+TEST(RecompilerMemory, StoreThatStopsTheCpu) {
+  const std::vector<u32> code = {
+      itype(0x09, kT1, kT1, 1),             // addiu t1, t1, 1
+      itype(0x0B, kT1, kT3, 100),           // sltiu t3, t1, 100
+      rtype(0x00, 0, kT3, kT3, 4),          // sll t3, t3, 4
+      rtype(0x21, kTimers, kT3, kAt),       // addu at, s5, t3 (timers, 1F801100h, + 0 or 16)
+      itype(0x0D, 0, kT0, 7),               // ori t0, zero, 7
+      itype(0x29, kAt, kT0, 0x0F82),        // sh t0, F82h(at): exit request with code 7
+      itype(0x09, kT2, kT2, 1),             // addiu t2, t2, 1: must not run after the request
+      j(kBase), kNop};
+  std::vector<u32> regs = memory_regs(5);
+  regs[kT1 - 1] = 0;
+  regs[kT2 - 1] = 0;
+  expect_same_code(code, kBase, 0, regs, 1);
+}
+
+}  // namespace

@@ -78,6 +78,10 @@ class Bus {
   const u32* hot_lines() const { return hot_lines_.data(); }
   // BCC selects D-cache mode: loads from RAM also write the scratchpad (see dcache_fill()).
   bool dcache_mode() const { return dcache_mode_; }
+  // dcache_mode() and the attached memory watches in place, for the recompiler's native loads
+  // and stores, which leave D-cache mode and watched writes to read() and write().
+  const bool* dcache_mode_cell() const { return &dcache_mode_; }
+  MemoryWatches* const* watches_cell() const { return &watches_; }
   bool read32(u32 vaddr, u32& v) { return read(vaddr, v, 4); }
   bool read16(u32 vaddr, u32& v) { return read(vaddr, v, 2); }
   bool read8(u32 vaddr, u32& v) { return read(vaddr, v, 1); }

@@ -1,6 +1,8 @@
 // The block cache (block_cache.h).
 #include "core/cpu/recompiler/block_cache.h"
 
+#include <algorithm>
+
 namespace psx {
 
 void BlockCache::insert(u32 pc, BlockFn fn, u32 first_page, u32 last_page) {
@@ -25,7 +27,7 @@ void BlockCache::erase(u32 pc) {
 
 void BlockCache::clear() {
   blocks_.clear();
-  recent_.assign(kRecent, Recent{});
+  std::fill(recent_.begin(), recent_.end(), Recent{});  // in place: recent_table() stays valid
   for (auto& v : page_blocks_) v.clear();
 }
 

@@ -2,6 +2,7 @@
 // whose code lies in it, so that a write to the page drops exactly those (code_pages.h). A small
 // direct-mapped table in front of the hash map answers most lookups.
 #pragma once
+#include <cstddef>
 #include <unordered_map>
 #include <vector>
 
@@ -26,18 +27,22 @@ class BlockCache {
   // code outside RAM).
   void insert(u32 pc, BlockFn fn, u32 first_page, u32 last_page);
   void invalidate_page(u32 page);
+  // find()'s direct-mapped table in place, for compiled blocks that go on to the next block
+  // themselves: kRecent entries of {u32 pc; BlockFn fn at byte 8}, entry (pc >> 2) & (kRecent - 1).
+  static constexpr u32 kRecent = 4096;
+  const void* recent_table() const { return recent_.data(); }
   void clear();
   size_t size() const { return blocks_.size(); }
 
  private:
   void erase(u32 pc);
 
-  static constexpr u32 kRecent = 4096;
   struct Recent {
     u32 pc = 1;  // never a block's (aligned) address
     BlockFn fn = nullptr;
   };
-  std::vector<Recent> recent_ = std::vector<Recent>(kRecent);
+  static_assert(sizeof(Recent) == 16 && offsetof(Recent, fn) == 8);
+  std::vector<Recent> recent_ = std::vector<Recent>(kRecent);  // never reallocated
   std::unordered_map<u32, BlockFn> blocks_;
   std::vector<std::vector<u32>> page_blocks_;  // sized on the first insert
 };

@@ -1,10 +1,12 @@
 // x86-64 code for compiled blocks, generated with xbyak into one executable buffer. A block is a
 // sequence of steps. A call step is `call step.fn(context, step.pc, step.word)`, and the block
-// returns at the first call that answers false. A run of native steps (register-only ALU
-// instructions, branches and jumps: NativeOp) is a segment: an inline guard first checks that the whole run may
-// execute as native code, and the segment then runs inline, doing what CpuT::execute_at_pc()
-// does for each instruction; when the guard refuses, the segment's steps run as calls instead.
-// Xbyak stays inside block_emitter.cpp.
+// returns at the first call that answers false. A run of native steps (NativeOp) is a segment:
+// an inline guard first checks that the whole run may execute as native code, and the segment
+// then runs inline, doing what CpuT::execute_at_pc() does for each instruction; when the guard
+// refuses, the segment's steps run as calls instead. A load or store whose access the native
+// code does not make itself (I/O, an exception, a debug break, an isolated cache) leaves the
+// segment there for the same calls, from that instruction on.
+// Xbyak stays inside the emitter's sources (emitter_impl.h).
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -19,8 +21,11 @@ enum class NativeOp : u8 {
   None,  // a call step
   Addiu, Slti, Sltiu, Andi, Ori, Xori, Lui,
   Sll, Srl, Sra, Sllv, Srlv, Srav, Addu, Subu, And, Or, Xor, Nor, Slt, Sltu,
+  Mfhi, Mflo, Mthi, Mtlo,
+  // Loads and stores: native for RAM and the scratchpad (block_emitter_memory.cpp).
+  Lb, Lh, Lw, Lbu, Lhu, Sb, Sh, Sw,
   // Branches and jumps (never in a delay slot: the recompiler makes those call steps).
-  Beq, Bne, Blez, Bgtz, J, Jal, Jr, Jalr,
+  Beq, Bne, Blez, Bgtz, J, Jal, Jr, Jalr, Bltz, Bgez, Bltzal, Bgezal,
 };
 
 class BlockEmitter {
@@ -42,13 +47,27 @@ class BlockEmitter {
     int regs, pc, next_pc, current_pc, load_reg, load_val, new_load_reg, new_load_val, shadow_reg;
     int loop_head, sr, cause, dcic, hook_pc, extra_hook_pc;
     int in_delay_slot, next_in_delay, stop, hook_armed;  // bool
-    int instructions, load_done_at;                      // u64
+    int hi, lo;
+    int instructions, load_done_at, muldiv_ready_at;     // u64
     int idle_skip, hooks;                                // pointers
     int now, deadline;                                   // u64, from sched
+    int load_issue, load_bus;  // CpuT::kLoadIssue, kLoadBus (the load-shadow model)
     const u32* irq_stat;
     const u32* irq_mask;
     const u32* hot_lines;     // Bus::hot_lines()
     const u32* icache_words;  // ICache::words()
+    u8* ram;                  // Bus::ram(), 2 MiB
+    u8* scratchpad;           // Bus::scratchpad(), 1 KiB
+    const bool* dcache_mode;  // Bus::dcache_mode_cell()
+    const void* watches;      // Bus::watches_cell(): a pointer, non-null while watches are attached
+    const u64* code_bits;     // CodePages::bits(): which RAM words hold compiled code
+    void* code_pages;         // the CodePages, and what a store to such a word calls
+    void (*code_write)(void* code_pages, u32 ram_offset);
+    // Going on to the next block without the dispatcher (RecompilerT::run): CodePages::
+    // any_dirty_cell() and BlockCache::recent_table() (kRecent entries).
+    const bool* any_dirty;
+    const void* recent_blocks;
+    u32 recent_count;
   };
 
   explicit BlockEmitter(size_t buffer_bytes);
@@ -62,8 +81,9 @@ class BlockEmitter {
   void clear();
   size_t bytes_used() const;
 
+  struct Impl;  // the code generator (emitter_impl.h)
+
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 

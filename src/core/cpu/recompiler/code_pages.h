@@ -3,6 +3,7 @@
 // blocks of the pages written before it runs another block. (Compiled blocks stay exact even when
 // stale, recompiler.h, so this keeps the block cache current rather than making it correct.)
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "core/types.h"
@@ -38,17 +39,25 @@ class CodePages {
     if (!((bits >> ((off >> 2) & 63)) & 1)) return;
     bits = 0;
     dirty_.push_back(off >> kPageBits);
+    any_dirty_ = true;
   }
-  bool any_dirty() const { return !dirty_.empty(); }
+  // The word bits in place (kPages u64s, never reallocated), for native stores, which call
+  // on_ram_write() only for a word whose bit is set.
+  const u64* bits() const { return code_.data(); }
+  bool any_dirty() const { return any_dirty_; }
+  // any_dirty() in place, for compiled blocks that go on to the next block themselves.
+  const bool* any_dirty_cell() const { return &any_dirty_; }
   // The pages written since the last call, each once.
   std::vector<u32> take_dirty() {
     std::vector<u32> out;
     out.swap(dirty_);
+    any_dirty_ = false;
     return out;
   }
   void clear() {
-    code_.assign(kPages, 0);
+    std::fill(code_.begin(), code_.end(), 0);  // in place: bits() stays valid
     dirty_.clear();
+    any_dirty_ = false;
   }
 
  private:
@@ -58,6 +67,7 @@ class CodePages {
   }
   std::vector<u64> code_ = std::vector<u64>(kPages);  // bit w of page p: word p * 64 + w
   std::vector<u32> dirty_;
+  bool any_dirty_ = false;  // !dirty_.empty()
 };
 
 }  // namespace psx

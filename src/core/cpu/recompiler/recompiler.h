@@ -24,6 +24,7 @@
 
 #include "core/cpu/cpu.h"
 #include "core/cpu/idle_skip.h"
+#include "core/cpu/recompiler/address_guess.h"
 #include "core/cpu/recompiler/block_cache.h"
 #include "core/cpu/recompiler/block_emitter.h"
 #include "core/cpu/recompiler/code_pages.h"
@@ -59,7 +60,7 @@ class RecompilerT {
   // The steps (recompiler_ops.h).
   static BlockEmitter::StepFn step_for(u32 word);
   static NativeOp native_for(u32 word);
-  static BlockEmitter::Layout layout(Cpu& cpu);
+  BlockEmitter::Layout layout(Cpu& cpu);
   static NativeOp decode_op(u32 instr);
   [[gnu::always_inline]] static bool may_step(Cpu& c, u32 pc);
   static bool step_at(void* cpu, u32 pc, u32 word);
@@ -113,11 +114,15 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
   steps_.clear();
   u32 a = pc, word;
   bool delay_slot = false;
+  AddressGuess guess(cpu.regs_);
   while (steps_.size() < kMaxBlock && bus_.peek_code(a, word)) {
-    // A branch in a delay slot (jumping from where the first one went) stays a call step.
-    const NativeOp native = native_for(word);
+    // A branch in a delay slot (jumping from where the first one went) stays a call step, and
+    // so does a load or store that will likely find I/O.
+    NativeOp native = native_for(word);
     const bool branch_in_slot = delay_slot && ends_block(word);
-    steps_.push_back({a, word, step_for(word), branch_in_slot ? NativeOp::None : native});
+    if (branch_in_slot || guess.elsewhere(word)) native = NativeOp::None;
+    guess.after(word);
+    steps_.push_back({a, word, step_for(word), native});
     if (delay_slot) break;
     delay_slot = ends_block(word);
     a += 4;

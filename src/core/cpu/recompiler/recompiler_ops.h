@@ -8,16 +8,29 @@
 namespace psx {
 
 // The instructions the recompiler knows by name (block_emitter.h NativeOp): the register-only
-// ALU operations, which touch neither memory nor coprocessors and raise no exception, and the
-// branches and jumps; None for everything else.
+// ALU operations, which touch neither memory nor coprocessors and raise no exception, HI/LO
+// moves, the loads and stores of a byte, halfword or word, and the branches and jumps; None for
+// everything else.
 template <class BusT>
 NativeOp RecompilerT<BusT>::decode_op(u32 i) {
-  static constexpr NativeOp kPrimary[16] = {
+  static constexpr NativeOp kPrimary[48] = {
       NativeOp::None, NativeOp::None, NativeOp::J, NativeOp::Jal, NativeOp::Beq, NativeOp::Bne,
       NativeOp::Blez, NativeOp::Bgtz, NativeOp::None, NativeOp::Addiu, NativeOp::Slti, NativeOp::Sltiu,
-      NativeOp::Andi, NativeOp::Ori, NativeOp::Xori, NativeOp::Lui};
+      NativeOp::Andi, NativeOp::Ori, NativeOp::Xori, NativeOp::Lui,
+      NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
+      NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
+      NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
+      NativeOp::Lb, NativeOp::Lh, NativeOp::None, NativeOp::Lw, NativeOp::Lbu, NativeOp::Lhu,
+      NativeOp::None, NativeOp::None, NativeOp::Sb, NativeOp::Sh, NativeOp::None, NativeOp::Sw,
+      NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None};
   const u32 op = i >> 26;
-  if (op != 0) return op < 16 ? kPrimary[op] : NativeOp::None;
+  if (op == 0x01) {  // BcondZ as CpuT::execute_bcondz() decodes it: bit 16 (>= 0), bits 20-17 (link)
+    const u32 r = cpu_detail::rt(i);
+    const bool link = (r & 0x1E) == 0x10;
+    if (r & 1) return link ? NativeOp::Bgezal : NativeOp::Bgez;
+    return link ? NativeOp::Bltzal : NativeOp::Bltz;
+  }
+  if (op != 0) return op < 48 ? kPrimary[op] : NativeOp::None;
   switch (i & 63) {
     case 0x00: return NativeOp::Sll;
     case 0x02: return NativeOp::Srl;
@@ -27,6 +40,10 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
     case 0x07: return NativeOp::Srav;
     case 0x08: return NativeOp::Jr;
     case 0x09: return NativeOp::Jalr;
+    case 0x10: return NativeOp::Mfhi;
+    case 0x11: return NativeOp::Mthi;
+    case 0x12: return NativeOp::Mflo;
+    case 0x13: return NativeOp::Mtlo;
     case 0x21: return NativeOp::Addu;
     case 0x23: return NativeOp::Subu;
     case 0x24: return NativeOp::And;
@@ -119,8 +136,9 @@ bool RecompilerT<BusT>::step_fast(void* context, u32 pc, u32 word) {
   return c.pc_ == pc + 4;
 }
 
-// The instructions emitted as native code (block_emitter.h): on the console's bus, the
-// register-only ALU operations that raise no exception, and branches and jumps. (The scripted
+// The instructions emitted as native code (block_emitter.h): on the console's bus, all that
+// decode_op() names (loads and stores keep their call step for accesses other than plain RAM
+// and scratchpad ones, block_emitter_memory.cpp). (The scripted
 // test buses have no i-cache model, so the guard could not prove a fetch free: every step there
 // is a call.)
 template <class BusT>
@@ -137,6 +155,7 @@ template <class BusT>
 BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   static_assert(sizeof(c.in_delay_slot_) == 1 && sizeof(c.next_in_delay_) == 1);
   static_assert(sizeof(c.instructions_) == 8 && sizeof(c.load_done_at_) == 8 && sizeof(Cycles) == 8);
+  static_assert(sizeof(c.muldiv_ready_at_) == 8 && sizeof(c.hi_) == 4 && sizeof(bool) == 1);
   static_assert(sizeof(c.pc_) == 4 && sizeof(c.load_reg_) == 4 && sizeof(c.shadow_reg_) == 4);
   static_assert(sizeof(c.stop_) == 1 && sizeof(c.hook_armed_) == 1 && sizeof(c.idle_skip_) == 8);
   static_assert(sizeof(c.hooks_) == 8 && sizeof(c.hook_pc_) == 4 && sizeof(c.extra_hook_pc_) == 4);
@@ -169,6 +188,14 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.next_in_delay = at(&c, &c.next_in_delay_);
   l.instructions = at(&c, &c.instructions_);
   l.load_done_at = at(&c, &c.load_done_at_);
+  l.muldiv_ready_at = at(&c, &c.muldiv_ready_at_);
+  l.hi = at(&c, &c.hi_);
+  l.lo = at(&c, &c.lo_);
+  l.load_issue = int(Cpu::kLoadIssue);
+  l.load_bus = int(Cpu::kLoadBus);
+  l.any_dirty = pages_.any_dirty_cell();
+  l.recent_blocks = cache_.recent_table();
+  l.recent_count = BlockCache::kRecent;
   l.now = at(&c.sched_, c.sched_.now_cell());
   l.deadline = at(&c.sched_, c.sched_.deadline_cell());
   if constexpr (std::is_same_v<BusT, Bus>) {  // other buses compile no native steps
@@ -176,6 +203,15 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
     l.irq_mask = c.irq_.mask_cell();
     l.hot_lines = c.bus_.hot_lines();
     l.icache_words = c.bus_.icache().words();
+    l.ram = c.bus_.ram();
+    l.scratchpad = c.bus_.scratchpad();
+    l.dcache_mode = c.bus_.dcache_mode_cell();
+    l.watches = c.bus_.watches_cell();
+    // Native stores report to this recompiler's pages, which the console attaches to the bus
+    // whenever it attaches the recompiler to the CPU (Console::set_cpu_mode).
+    l.code_bits = pages_.bits();
+    l.code_pages = &pages_;
+    l.code_write = [](void* pages, u32 off) { static_cast<CodePages*>(pages)->on_ram_write(off); };
   }
   return l;
 }

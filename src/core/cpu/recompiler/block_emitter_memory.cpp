@@ -1,0 +1,192 @@
+// Native loads, stores and HI/LO moves for compiled blocks (emitter_impl.h): CpuT::load(),
+// store(), timed_read() and wait_muldiv() for the accesses the native code makes itself, to RAM
+// (its 2 MiB through the first 8 MiB of KUSEG, KSEG0 and KSEG1, as Bus::read/write map it) and
+// to the scratchpad (KUSEG and KSEG0). Everything else about an access (an address error, user
+// mode, a debug data break armed, an isolated cache for a store, D-cache mode, memory watches,
+// I/O and the other regions) sends the instruction to its call step.
+#include "core/cpu/cop0.h"
+#include "core/cpu/decode.h"
+#include "core/cpu/recompiler/code_pages.h"
+#include "core/cpu/recompiler/emitter_impl.h"
+
+namespace psx {
+
+using Xbyak::Label;
+using Impl = BlockEmitter::Impl;
+
+namespace {
+
+constexpr u32 kRamMask = CodePages::kRamSize - 1;
+constexpr u32 kScratchBase = 0x1F800000, kScratchMask = 0x3FF;
+// Address bits that must be zero for RAM (below 8 MiB within the 512 MiB segment).
+constexpr u32 kNotRam = 0x1F800000;
+
+u32 width_of(NativeOp op) {
+  switch (op) {
+    case NativeOp::Lw: case NativeOp::Sw: return 4;
+    case NativeOp::Lh: case NativeOp::Lhu: case NativeOp::Sh: return 2;
+    default: return 1;
+  }
+}
+
+}  // namespace
+
+// r13d = the address (rs + offset). Before the instruction changes anything, whether its access
+// is one the native code makes: aligned (check_address), in kernel mode (user mode may raise an
+// address error), no DCIC data break armed, a store not into an isolated cache, no D-cache mode
+// (loads would fill the scratchpad), no memory watches on a store, and RAM or the scratchpad.
+void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
+  using namespace cpu_detail;
+  const u32 width = width_of(op);
+  const bool store = is_store(op);
+  mov(r13d, reg(rs(i)));
+  if (simm(i) != 0) add(r13d, simm(i));
+  if (width > 1) {
+    test(r13d, width - 1);
+    jnz(slow, T_NEAR);
+  }
+  test(cpu32(lay.sr), store ? Cop0::kKUc | Cop0::kIsC : Cop0::kKUc);
+  jnz(slow, T_NEAR);
+  test(cpu32(lay.dcic), Cop0::kDcicDAE);
+  jnz(slow, T_NEAR);
+  mov(rax, reinterpret_cast<u64>(lay.dcache_mode));
+  cmp(byte[rax], 0);
+  jne(slow, T_NEAR);
+  if (store) {
+    mov(rax, reinterpret_cast<u64>(lay.watches));
+    cmp(qword[rax], 0);
+    jne(slow, T_NEAR);
+  }
+  Label ram, ok;
+  mov(ecx, r13d);
+  shr(ecx, 29);  // the segment: 0-3 KUSEG, 4 KSEG0, 5 KSEG1, 6-7 KSEG2
+  test(r13d, kNotRam);
+  jz(ram);
+  test(cl, 3);  // the scratchpad: KUSEG or KSEG0 (segment 0 or 4) ...
+  jnz(slow, T_NEAR);
+  mov(edx, r13d);
+  and_(edx, 0x1FFFFFFF & ~kScratchMask);  // ... at physical 1F800000h-1F8003FFh
+  cmp(edx, kScratchBase);
+  jne(slow, T_NEAR);
+  jmp(ok);
+  L(ram);
+  mov(edx, 0x31);  // RAM: segment 0 (the first 512 MiB), 4 or 5
+  bt(edx, ecx);
+  jnc(slow, T_NEAR);
+  L(ok);
+}
+
+// eax = the value a load of `op`'s width and signedness reads at [rdx + rcx].
+static void read_width(Impl& g, NativeOp op) {
+  const Xbyak::RegExp at = g.rdx + g.rcx;
+  switch (op) {
+    case NativeOp::Lb: g.movsx(g.eax, g.byte[at]); break;
+    case NativeOp::Lbu: g.movzx(g.eax, g.byte[at]); break;
+    case NativeOp::Lh: g.movsx(g.eax, g.word[at]); break;
+    case NativeOp::Lhu: g.movzx(g.eax, g.word[at]); break;
+    default: g.mov(g.eax, g.dword[at]); break;
+  }
+}
+
+// CpuT::load() past its checks: timed_read() and the value (eax). From RAM by cached code (the
+// guard's i-cache hits are cached code) the load-shadow arithmetic: the access starts when the
+// load has issued or the previous access ends (a cycle later for a load in the delay slot of a
+// load to the same register), the CPU waits only until it starts, and rt is shadowed until it
+// ends. From the scratchpad: wait_load(), then a read without time.
+void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
+  const u32 t = cpu_detail::rt(i);
+  Label scratchpad, done;
+  test(r13d, kNotRam);
+  jnz(scratchpad, T_NEAR);
+  mov(rcx, now());
+  add(rcx, lay.load_issue);  // issue_end + 1
+  mov(rdx, cpu64(lay.load_done_at));
+  if (t != 0 && pipe.dynamic) {
+    xor_(eax, eax);
+    cmp(cpu32(lay.load_reg), t);
+    sete(al);
+    add(rdx, rax);
+  } else if (t != 0 && pipe.after_load && pipe.load_reg == t) {
+    add(rdx, 1);
+  }
+  cmp(rcx, rdx);
+  cmovb(rcx, rdx);  // the access's start
+  lea(rax, ptr[rcx - 1]);
+  mov(now(), rax);
+  add(rcx, lay.load_bus);
+  mov(cpu64(lay.load_done_at), rcx);
+  mov(cpu32(lay.shadow_reg), t);
+  mov(ecx, r13d);
+  and_(ecx, kRamMask);
+  mov(rdx, reinterpret_cast<u64>(lay.ram));
+  read_width(*this, op);
+  jmp(done, T_NEAR);
+  L(scratchpad);
+  mov(rax, now());
+  mov(rcx, cpu64(lay.load_done_at));
+  cmp(rax, rcx);
+  cmovb(rax, rcx);
+  mov(now(), rax);
+  mov(ecx, r13d);
+  and_(ecx, kScratchMask);
+  mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
+  read_width(*this, op);
+  L(done);
+}
+
+// CpuT::store() past its checks: Bus::write() to RAM, with CodePages::on_ram_write() called
+// when the word holds compiled code, or to the scratchpad. Stores take no time (the write queue).
+void Impl::store(NativeOp op, u32 i) {
+  const u32 width = width_of(op);
+  Label scratchpad, done;
+  mov(eax, reg(cpu_detail::rt(i)));
+  mov(ecx, r13d);
+  test(r13d, kNotRam);
+  jnz(scratchpad, T_NEAR);
+  and_(ecx, kRamMask);
+  const auto write = [&] {
+    const Xbyak::RegExp at = rdx + rcx;
+    if (width == 4) mov(dword[at], eax);
+    else if (width == 2) mov(word[at], ax);
+    else mov(byte[at], al);
+  };
+  mov(rdx, reinterpret_cast<u64>(lay.ram));
+  write();
+  mov(edx, ecx);
+  shr(edx, CodePages::kPageBits);
+  mov(rsi, reinterpret_cast<u64>(lay.code_bits));
+  mov(rsi, qword[rsi + rdx * 8]);
+  mov(edx, ecx);
+  shr(edx, 2);
+  bt(rsi, rdx);  // the word's bit (the offset counts modulo 64)
+  jnc(done, T_NEAR);
+  mov(rdi, reinterpret_cast<u64>(lay.code_pages));
+  mov(esi, ecx);
+  mov(rax, reinterpret_cast<u64>(lay.code_write));
+  call(rax);
+  jmp(done, T_NEAR);
+  L(scratchpad);
+  and_(ecx, kScratchMask);
+  mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
+  write();
+  L(done);
+}
+
+// MFHI/MFLO (eax, after wait_muldiv: time goes on to when a multiply or divide is done) and
+// MTHI/MTLO.
+void Impl::hilo(NativeOp op, u32 i) {
+  const int field = op == NativeOp::Mfhi || op == NativeOp::Mthi ? lay.hi : lay.lo;
+  if (op == NativeOp::Mthi || op == NativeOp::Mtlo) {
+    mov(eax, reg(cpu_detail::rs(i)));
+    mov(cpu32(field), eax);
+    return;
+  }
+  mov(rax, now());
+  mov(rcx, cpu64(lay.muldiv_ready_at));
+  cmp(rax, rcx);
+  cmovb(rax, rcx);
+  mov(now(), rax);
+  mov(eax, cpu32(field));
+}
+
+}  // namespace psx

@@ -1,0 +1,71 @@
+// The code generator behind BlockEmitter (block_emitter.h), shared by its two sources:
+// block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
+// operations and branches) and block_emitter_memory.cpp (loads, stores, HI/LO). Only they
+// include this header (and with it xbyak). Registers while a block runs: rbx = the context (the
+// CPU), r12 = the scheduler, r13d = a load's or store's address.
+#pragma once
+#include <xbyak/xbyak.h>
+
+#include <vector>
+
+#include "core/cpu/recompiler/block_emitter.h"
+
+namespace psx {
+
+// What native code knows of the load delay slot when an instruction starts. At a segment's
+// first instruction nothing (`dynamic`: load_reg_ and load_val_ are read where they are); after
+// that, whether the previous instruction was a load and to which register (load_reg_ is then
+// that register and load_val_ its value; otherwise both are zero). new_load_* are always zero
+// between instructions.
+struct Pipe {
+  bool dynamic = true;
+  bool after_load = false;
+  u32 load_reg = 0;
+};
+
+// One native segment's pieces emitted after the block's main path: its steps as calls (the slow
+// path; `slow[k]` enters it at instruction k), a load's or store's call when the native code
+// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), and the
+// shadow-stall stubs.
+struct Segment {
+  size_t first, count;
+  Xbyak::Label end;
+  std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back;
+  std::vector<Pipe> pipe;  // per instruction
+};
+
+struct BlockEmitter::Impl : Xbyak::CodeGenerator {
+  explicit Impl(size_t bytes) : Xbyak::CodeGenerator(bytes), capacity(bytes) {}
+  const size_t capacity;
+  Layout lay{};
+  Xbyak::Label* exit = nullptr;  // the block's epilogue
+
+  Xbyak::Address reg(u32 r) { return dword[rbx + lay.regs + 4 * int(r)]; }
+  Xbyak::Address cpu32(int off) { return dword[rbx + off]; }
+  Xbyak::Address cpu64(int off) { return qword[rbx + off]; }
+  Xbyak::Address now() { return qword[r12 + lay.now]; }
+
+  static bool is_branch(NativeOp op) { return op >= NativeOp::Beq; }
+  static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lhu; }
+  static bool is_store(NativeOp op) { return op >= NativeOp::Sb && op <= NativeOp::Sw; }
+  static u32 dest(NativeOp op, u32 i);
+
+  // block_emitter.cpp
+  void call_step(const Step& s);
+  void alu(NativeOp op, u32 i);
+  void arm_hook_static(u32 target);
+  void arm_hook_ecx();
+  void branch(NativeOp op, u32 pc, u32 i);
+  void guard(std::span<const Step> run, Xbyak::Label& fail);
+  void native(const Step& s, size_t k, bool last_in_block, bool after_branch, Segment& seg);
+  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
+  void stall_stub(const Step& s, size_t k, Segment& seg);
+  void chain();
+  // block_emitter_memory.cpp
+  void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
+  void load(NativeOp op, u32 i, const Pipe& pipe);
+  void store(NativeOp op, u32 i);
+  void hilo(NativeOp op, u32 i);
+};
+
+}  // namespace psx

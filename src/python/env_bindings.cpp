@@ -49,6 +49,7 @@ rl::EnvConfig config_from(const py::kwargs& kw) {
     else if (key == "sticky") c.sticky = v.cast<double>();
     else if (key == "renderer") c.renderer = v.cast<std::string>();
     else if (key == "scale") c.scale = v.cast<std::uint32_t>();
+    else if (key == "cpu") c.cpu = v.cast<std::string>();
     else throw py::type_error("unexpected keyword argument '" + key + "'");
   }
   return c;

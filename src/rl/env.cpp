@@ -73,6 +73,9 @@ Env::Env(const EnvConfig& config) : config_(config) {
     throw psx::InputError::whole(game_.manifest, "[observations.position] or a position() function is needed for '" +
                                                      config_.obs + "'");
   console_ = std::make_unique<psx::Console>();
+  if (config_.cpu == "recompiler") console_->set_cpu_mode(psx::Console::CpuMode::Recompiler);
+  else if (config_.cpu != "interpreter")
+    throw std::invalid_argument("cpu: 'interpreter' or 'recompiler', not '" + config_.cpu + "'");
   use_renderer();
   // Pictures are drawn only when asked for unless the observation is one (frame requests for a
   // window or a video still get every frame, exactly).

@@ -51,6 +51,9 @@ struct EnvConfig {
   // Observations are native-resolution either way; the console's frame (get_screen) is scaled.
   std::string renderer = "software";
   std::uint32_t scale = 1;
+  // The CPU core: "recompiler" (x86-64 code compiled per block, the faster) or "interpreter" (the
+  // reference). Both compute the same bits (tests/unit/recompiler_test.cpp), so this is speed only.
+  std::string cpu = "recompiler";
 };
 
 struct StepInfo {

@@ -13,6 +13,7 @@ namespace psxrl::cli {
 
 struct PlayOptions {
   std::string game, obs, policy, frames_dir;
+  std::string cpu = "recompiler";
   int level = 1;
   std::uint64_t episodes = 1, seed = 0;
   std::optional<std::uint32_t> max_moves;

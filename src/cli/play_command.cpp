@@ -39,6 +39,7 @@ LoadedPolicy load_policy(const PlayOptions& p, const rl::UserFiles& files) {
   if (!p.game.empty()) env.game = p.game;
   if (!p.obs.empty()) env.obs = p.obs;
   env.files = files;
+  env.cpu = p.cpu;
   env.max_moves = p.max_moves;
   // Another game or observation is refused before booting anything (the game may not even be
   // installed); the integration version and network are checked once the environment exists.
@@ -61,6 +62,7 @@ LoadedPolicy load_game(const PlayOptions& p, const rl::UserFiles& files) {
   if (!p.game.empty()) env.game = p.game;
   env.obs = p.obs.empty() ? "ram" : p.obs;
   env.files = files;
+  env.cpu = p.cpu;
   LoadedPolicy l;
   l.env = std::make_unique<rl::Env>(env);
   return l;
@@ -184,6 +186,7 @@ int play_command(const std::vector<std::string>& args) {
   rl::UserFiles files;
   add_play_options(app, p);
   add_user_file_options(app, files);
+  add_cpu_option(app, p.cpu);
   if (auto code = parse_args(app, args)) return *code;
   if (std::string why = check_options(p); !why.empty()) return usage_error(app, why);
 

@@ -92,6 +92,7 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, 
   app.add_flag("--double-dqn", o.double_dqn, "dqn: Double DQN targets (implies --target-network)");
   app.add_option("--reward", c.env.reward, "table (seed Table 3.3, default), score or script")->type_name("KIND");
   add_user_file_options(app, c.env.files);
+  add_cpu_option(app, c.env.cpu);
 }
 
 // `resumed_at`: the records a resumed run started with; throughput counts this process's only.

@@ -17,6 +17,7 @@
 
 using namespace psx;
 using psx::test::SpuRig;
+using psx::test::write_test_volumes_and_reverb;
 
 namespace {
 
@@ -67,17 +68,7 @@ void set_up(SpuRig& r) {
   r.w16(0x1F801D90, 0x0060);  // PMON: voices 5 and 6
   r.w16(0x1F801D94, 0x0008);  // NON: voice 3
   r.w16(0x1F801D98, 0x0084);  // EON: voices 2 and 7
-  r.w16(0x1F801D80, 0x3FFF);  // MVOLL/MVOLR
-  r.w16(0x1F801D82, 0x3FFF);
-  r.w16(0x1F801D84, 0x3000);  // EVOLL/EVOLR
-  r.w16(0x1F801D86, 0x3000);
-  r.w16(0x1F801DB0, 0x4000);  // AVOLL/AVOLR: CD input
-  r.w16(0x1F801DB2, 0x4000);
-  const u16 reverb[32] = {0x0040, 0x0030, 0x7000, 0x4000, 0xD000, 0x3000, 0xE000, 0x6000, 0x5000, 0xB000,
-                          0x0100, 0x00F0, 0x00E0, 0x00D0, 0x00C0, 0x00B0, 0x0180, 0x0170, 0x0160, 0x0150,
-                          0x00A0, 0x0090, 0x0080, 0x0078, 0x01F0, 0x01E0, 0x0070, 0x0068, 0x0050, 0x0048,
-                          0x6000, 0x6000};
-  for (u32 i = 0; i < 32; ++i) r.w16(0x1F801DC0 + 2 * i, reverb[i]);
+  write_test_volumes_and_reverb(r);
   r.w16(0x1F801DA2, kReverbBase);
   r.w16(0x1F801DA4, kIrqAddress);
   // ATTR: enable, unmute, the fastest noise clock (shift Fh, step 1: a new bit every sample, so

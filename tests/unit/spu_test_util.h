@@ -1,6 +1,7 @@
 // Shared helpers for the SPU unit tests: a standalone SPU on its own scheduler, register
 // access by psx-spx address, and running whole 44.1 kHz samples.
 #pragma once
+#include <array>
 #include <vector>
 
 #include "core/audio_fifo.h"
@@ -37,5 +38,24 @@ struct SpuRig {
     for (size_t i = 0; i < bytes.size(); ++i) spu.ram()[(byte_addr + i) & (Spu::kRamSize - 1)] = bytes[i];
   }
 };
+
+// The mix and reverb setup the register-driven workloads share (spu_on_demand_test,
+// spu_lazy_test): main volume MVOL 3FFFh, reverb output EVOL 3000h, CD input AVOL 4000h, and the
+// 32 reverb registers at 1F801DC0h (psx-spx "SPU Reverb Registers", dAPF1..vRIN) with short
+// delays, so that a small work area is read and written on every reverb tick.
+inline constexpr std::array<u16, 32> kTestReverbRegs = {
+    0x0040, 0x0030, 0x7000, 0x4000, 0xD000, 0x3000, 0xE000, 0x6000, 0x5000, 0xB000, 0x0100,
+    0x00F0, 0x00E0, 0x00D0, 0x00C0, 0x00B0, 0x0180, 0x0170, 0x0160, 0x0150, 0x00A0, 0x0090,
+    0x0080, 0x0078, 0x01F0, 0x01E0, 0x0070, 0x0068, 0x0050, 0x0048, 0x6000, 0x6000};
+template <class Rig>
+void write_test_volumes_and_reverb(Rig& r) {
+  r.w16(0x1F801D80, 0x3FFF);  // MVOLL/MVOLR
+  r.w16(0x1F801D82, 0x3FFF);
+  r.w16(0x1F801D84, 0x3000);  // EVOLL/EVOLR
+  r.w16(0x1F801D86, 0x3000);
+  r.w16(0x1F801DB0, 0x4000);  // AVOLL/AVOLR: CD input
+  r.w16(0x1F801DB2, 0x4000);
+  for (u32 i = 0; i < kTestReverbRegs.size(); ++i) r.w16(0x1F801DC0 + 2 * i, kTestReverbRegs[i]);
+}
 
 }  // namespace psx::test

@@ -10,9 +10,14 @@ void SoftwareRenderer::load_vram(const u16* pixels) { std::memcpy(vram_.data(), 
 
 // GP0(02) ignores the drawing area and both mask settings and wraps at the VRAM edges.
 void SoftwareRenderer::fill(u32 x, u32 y, u32 width, u32 height, u16 pixel) {
+  // A row is at most two runs, split where it wraps: plain fills the compiler makes wide.
+  x &= kVramWidth - 1;
+  width = std::min(width, kVramWidth);
+  const u32 first = std::min(width, kVramWidth - x);
   for (u32 row = 0; row < height; ++row) {
     u16* line = &vram_[((y + row) & (kVramHeight - 1)) * kVramWidth];
-    for (u32 col = 0; col < width; ++col) line[(x + col) & (kVramWidth - 1)] = pixel;
+    std::fill_n(line + x, first, pixel);
+    std::fill_n(line, width - first, pixel);
   }
 }
 

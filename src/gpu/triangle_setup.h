@@ -38,6 +38,35 @@ inline s32 edge_x(const Vertex& a, const Vertex& b, s32 y) {
   return static_cast<s32>(ceil_div(s64{a.x} * dy + s64{y - a.y} * (b.x - a.x), dy));
 }
 
+// edge_x() on successive rows, without a division per row: the edge's x on row y is
+// ceil(n / dy) with n = a.x*dy + (y - a.y)*(b.x - a.x), kept as quotient q and remainder
+// r = q*dy - n (0 <= r < dy); the next row adds ceil(ex / dy) and carries the remainder.
+class EdgeWalk {
+ public:
+  EdgeWalk() = default;
+  // Starts on row y; the edge must not be horizontal (a.y < b.y).
+  EdgeWalk(const Vertex& a, const Vertex& b, s32 y) : dy_(b.y - a.y) {
+    const s64 ex = b.x - a.x;
+    const s64 n = s64{a.x} * dy_ + s64{y - a.y} * ex;
+    q_ = ceil_div(n, dy_);
+    r_ = q_ * dy_ - n;
+    step_q_ = ceil_div(ex, dy_);
+    step_r_ = step_q_ * dy_ - ex;
+  }
+  s32 x() const { return static_cast<s32>(q_); }
+  void next_row() {
+    q_ += step_q_;
+    r_ += step_r_;
+    if (r_ >= dy_) {
+      r_ -= dy_;
+      --q_;
+    }
+  }
+
+ private:
+  s64 dy_ = 1, q_ = 0, r_ = 0, step_q_ = 0, step_r_ = 0;
+};
+
 // The pixels a non-degenerate sorted triangle covers on row y (a.y <= y < c.y), before clipping:
 // left <= x <= right, the top-left fill rule leaving out the right edge. The rasterizer and the
 // deferred-drawing coverage test both use this, so they agree on every pixel.

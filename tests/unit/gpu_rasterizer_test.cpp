@@ -1,6 +1,8 @@
 // Rasterizer rules (psx-spx "GPU Rendering"): fill convention, size limits, clipping, offsets,
 // Gouraud interpolation, dithering, lines and rectangles. Expected values are worked out in the
 // comments from the documented rules.
+#include <algorithm>
+
 #include "gpu_test_util.h"
 
 namespace psx::test {
@@ -36,6 +38,45 @@ TEST_F(GpuTest, QuadHalvesShareEdgeWithoutOverlap) {
       bool inside = x >= 10 && x < 14 && y >= 10 && y < 14;
       EXPECT_EQ(px(x, y), inside ? rgb15(1, 1, 1) : 0) << x << "," << y;
     }
+}
+
+TEST_F(GpuTest, TrianglesFollowTheEdgeRuleOnEveryRow) {
+  // Random triangles, some clipped from the top (the first row drawn below the middle vertex).
+  // Oracle from the fill rule alone: sort by y into a, b, c; row y (a.y <= y < c.y) is bounded
+  // by the long edge a->c and by a->b above b.y, b->c from b.y on; pixel x is drawn when
+  // left <= x < right for the exact edge positions, compared by cross-multiplying (no division).
+  struct P {
+    s64 x, y;
+  };
+  // x >= edge(p->q) on row y, for p.y < q.y: x*dy >= p.x*dy + (y - p.y)*(q.x - p.x).
+  auto right_of = [](s64 x, s64 y, P p, P q) { return x * (q.y - p.y) >= p.x * (q.y - p.y) + (y - p.y) * (q.x - p.x); };
+  u32 seed = 12345;
+  auto next = [&](u32 range) {
+    seed = seed * 1103515245u + 12345u;
+    return static_cast<s64>((seed >> 8) % range);
+  };
+  for (int t = 0; t < 60; ++t) {
+    P v[3];
+    for (P& p : v) p = {next(300), next(300)};
+    if (t % 4 == 1) v[1].y = std::min(v[0].y, v[2].y) + 1;  // the short edges switch on row 2
+    const s64 top = t % 3 == 0 ? next(200) : 0;
+    gp0({0xE3000000 | static_cast<u32>(top << 10), 0x02000000, 0, (320u << 16) | 320u});
+    gp0({0x20000000 | kWhite, xy(s32(v[0].x), s32(v[0].y)), xy(s32(v[1].x), s32(v[1].y)), xy(s32(v[2].x), s32(v[2].y))});
+    P s[3] = {v[0], v[1], v[2]};
+    std::stable_sort(s, s + 3, [](P p, P q) { return p.y < q.y; });
+    const s64 cross = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y);
+    for (s64 y = 0; y < 320; ++y)
+      for (s64 x = 0; x < 320; ++x) {
+        bool inside = false;
+        if (cross != 0 && y >= std::max(s[0].y, top) && y < s[2].y) {
+          const bool on_long = right_of(x, y, s[0], s[2]);
+          const bool on_short = y < s[1].y ? right_of(x, y, s[0], s[1]) : right_of(x, y, s[1], s[2]);
+          // The long edge is the left one when the middle vertex lies right of it (cross > 0).
+          inside = cross > 0 ? on_long && !on_short : on_short && !on_long;
+        }
+        ASSERT_EQ(px(u32(x), u32(y)), inside ? kWhite15 : 0) << "triangle " << t << " at " << x << "," << y;
+      }
+  }
 }
 
 TEST_F(GpuTest, PolygonSizeLimits) {

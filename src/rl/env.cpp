@@ -77,9 +77,11 @@ Env::Env(const EnvConfig& config) : config_(config) {
   else if (config_.cpu != "interpreter")
     throw std::invalid_argument("cpu: 'interpreter' or 'recompiler', not '" + config_.cpu + "'");
   use_renderer();
-  // Pictures are drawn only when asked for unless the observation is one (frame requests for a
-  // window or a video still get every frame, exactly).
-  console_->set_pixels_observed(obs_kind_ == ObsKind::Visual || obs_kind_ == ObsKind::Multimodal);
+  // Pictures are drawn only when asked for: a visual observation asks for the frame at the end
+  // of a step, so the frames before it are drawn only where they show through (their drawing is
+  // kept and replayed exactly, gpu/draw_queue.h). Frame requests for a window or a video still
+  // get every frame, exactly.
+  console_->set_pixels_observed(false);
   // Likewise sound is mixed only when something hears it (re-checked each step for on_frame).
   console_->set_sound_observed(sound_heard());
   boot();

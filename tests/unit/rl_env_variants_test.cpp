@@ -149,6 +149,29 @@ TEST(EnvCpu, RecompilerStepsTheInterpretersEpisode) {
   EXPECT_EQ(ei.console().save_state(), er.console().save_state());
 }
 
+// A visual observation draws only the frame it shows (Env keeps pixels unobserved and asks for
+// the frame at the end of each step): 25 moves give the same pictures, rewards and final state
+// as a console that draws every frame as it comes.
+TEST(EnvVisual, DrawingOnlyTheObservedFrameGivesTheSamePictures) {
+  EnvConfig c;
+  c.obs = "multimodal";
+  Env lazy(c), drawn(c);
+  drawn.console().set_pixels_observed(true);
+  auto picture = [](const psxrl::rl::Observation& obs) {
+    return std::string(static_cast<const char*>(obs[0].data), obs[0].space->bytes());
+  };
+  ASSERT_EQ(picture(lazy.reset(1, 3)), picture(drawn.reset(1, 3)));
+  for (int i = 0; i < 25; ++i) {
+    if (lazy.episode_over()) {
+      ASSERT_EQ(picture(lazy.reset(1, i)), picture(drawn.reset(1, i))) << i;
+    }
+    const int action = (i * 5 + 1) % lazy.action_count();
+    EXPECT_EQ(lazy.step(action).reward, drawn.step(action).reward) << i;
+    EXPECT_EQ(picture(lazy.observation()), picture(drawn.observation())) << i;
+  }
+  EXPECT_EQ(lazy.console().save_state(), drawn.console().save_state());
+}
+
 TEST(EnvCpu, UnknownCoreIsRefused) {
   EnvConfig c;
   c.cpu = "jit";

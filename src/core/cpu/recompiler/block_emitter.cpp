@@ -132,16 +132,17 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
   mov(byte[rbx + lay.next_in_delay], 1);
 }
 
-// Whether the segment may run as native code (else to its slow path): checked once for the whole
-// run because its instructions change none of it. They write general registers, HI/LO, the pc,
-// the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves to the
-// slow path), so stop_, hooks, interrupts (SR, Cause, I_STAT, I_MASK), the loop head, DCIC and
-// the i-cache stay as they are (a store to RAM leaves the i-cache alone: it is not coherent);
+// Whether the rest of a segment, from run[0], may run as native code (else to its slow path):
+// checked once because its instructions change none of it. They write general registers, HI/LO,
+// the pc, the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves
+// to the slow path), so stop_, hooks, interrupts (SR, Cause, I_STAT, I_MASK), the loop head, DCIC
+// and the i-cache stay as they are (a store to RAM leaves the i-cache alone: it is not coherent);
 // only the deadline, which time reaches, is checked again before each instruction. Every word
 // must be a fetch without time or fill (an i-cache hit on a line held whole, Bus::fetch_hit)
-// that is still the word compiled, checked once per line for the line and once per word for
-// the word. Such a hit also means the code is cached (Bus::cached_code), as the load-shadow
-// model asks of a native load.
+// that is still the word compiled: checked here for run[0]'s line, and by line_check() where
+// each later line begins (nothing native changes the i-cache, so checking a line when it is
+// reached is the same as checking it here). Such a hit also means the code is cached
+// (Bus::cached_code), as the load-shadow model asks of a native load.
 void Impl::guard(std::span<const Step> run, Label& fail) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   cmp(byte[rbx + lay.stop], 0);
@@ -186,15 +187,18 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   test(ecx, 0xFF00);
   jnz(fail, T_NEAR);
   L(interrupts_off);
-  for (size_t k = 0; k < run.size(); ++k) {
-    const u32 pc = run[k].pc;
-    if (k == 0 || (pc & 15) == 0) {
-      mov(rax, reinterpret_cast<u64>(&lay.hot_lines[(pc >> 4) & 255]));
-      cmp(dword[rax], pc & ~15u);
-      jne(fail, T_NEAR);
-      mov(rax, reinterpret_cast<u64>(&lay.icache_words[(pc >> 2) & 1020]));
-    }
-    cmp(dword[rax + 4 * ((pc >> 2) & 3)], run[k].word);
+  line_check(run, fail);
+}
+
+// The i-cache line of run[0] holds run[0] and the words after it in that line, as compiled.
+void Impl::line_check(std::span<const Step> run, Label& fail) {
+  const u32 line = run[0].pc & ~15u;
+  mov(rax, reinterpret_cast<u64>(&lay.hot_lines[(line >> 4) & 255]));
+  cmp(dword[rax], line);
+  jne(fail, T_NEAR);
+  mov(rax, reinterpret_cast<u64>(&lay.icache_words[(line >> 2) & 1020]));
+  for (size_t k = 0; k < run.size() && (run[k].pc & ~15u) == line; ++k) {
+    cmp(dword[rax + 4 * ((run[k].pc >> 2) & 3)], run[k].word);
     jne(fail, T_NEAR);
   }
 }
@@ -371,10 +375,10 @@ BlockEmitter::BlockEmitter(size_t buffer_bytes) : impl_(std::make_unique<Impl>(b
 BlockEmitter::~BlockEmitter() = default;
 
 BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const Step> steps) {
-  // Upper bounds on one step's code (guard, inline, stall stub, slow call, a load's or store's
-  // call and guard for the rest of its segment) and on the frame's.
-  // A guard takes at most 24 bytes per word.
-  const size_t step_bytes = 768 + 24 * steps.size(), frame_bytes = 256;
+  // Upper bounds on one step's code (inline code with a line check, stall stub, and the slow
+  // call and the load's or store's call, each with the guard for the rest: at most 150 bytes
+  // and 24 per word of one line) and on the frame's.
+  const size_t step_bytes = 1280, frame_bytes = 256;
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;
@@ -409,35 +413,46 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       const Step& prev = steps[seg.first + k - 1];
       seg.pipe[k] = {false, Impl::is_load(prev.native), cpu_detail::rt(prev.word)};
     }
-    g.guard(steps.subspan(seg.first, seg.count), seg.slow[0]);
+    const std::span<const Step> run = steps.subspan(seg.first, seg.count);
+    g.guard(run, seg.slow[0]);
     for (size_t k = 0; k < seg.count; ++k) {
-      const bool after_branch = k > 0 && Impl::is_branch(steps[seg.first + k - 1].native);
+      const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);
-      g.native(steps[seg.first + k], k, seg.first + k + 1 == steps.size(), after_branch, seg);
+      if (k > 0 && (run[k].pc & 15) == 0) g.line_check(run.subspan(k), seg.slow[k]);
+      g.native(run[k], k, seg.first + k + 1 == steps.size(), after_branch, seg);
     }
     g.L(seg.end);
   }
   g.L(done);
   g.chain();
+  // Off the main path: an instruction the native code could not run (slow[k]: the guard or a
+  // line check refused; fallback[k]: a load or store the native code does not make) runs as
+  // its call, and the segment goes on natively from the next one if the guard allows it then
+  // (a refusal is often over after one instruction: a cold i-cache line filled by its first
+  // fetch, a load landing), else by the next instruction's slow path. The call leaves the
+  // pipeline as the native code would have (a load pending in rt, or none), so seg.pipe holds
+  // after it too.
   for (Segment& seg : segments) {
-    for (size_t k = 0; k < seg.count; ++k) {
-      g.L(seg.slow[k]);
-      g.call_step(steps[seg.first + k]);
-    }
-    g.jmp(seg.end, Xbyak::CodeGenerator::T_NEAR);
-    for (size_t k = 0; k < seg.count; ++k) {
-      const Step& step = steps[seg.first + k];
-      if (!Impl::is_load(step.native) && !Impl::is_store(step.native)) continue;
-      g.L(seg.fallback[k]);
-      g.call_step(step);
+    const std::span<const Step> run = steps.subspan(seg.first, seg.count);
+    auto call_and_resume = [&](size_t k) {
+      g.call_step(run[k]);
       if (k + 1 == seg.count) {
         g.jmp(seg.end, Xbyak::CodeGenerator::T_NEAR);
-      } else {
-        g.guard(steps.subspan(seg.first + k + 1, seg.count - k - 1), seg.slow[k + 1]);
-        g.jmp(seg.resume[k + 1], Xbyak::CodeGenerator::T_NEAR);
+        return;
       }
+      g.guard(run.subspan(k + 1), seg.slow[k + 1]);
+      g.jmp(seg.resume[k + 1], Xbyak::CodeGenerator::T_NEAR);
+    };
+    for (size_t k = 0; k < seg.count; ++k) {
+      g.L(seg.slow[k]);
+      call_and_resume(k);
     }
-    for (size_t k = 0; k < seg.count; ++k) g.stall_stub(steps[seg.first + k], k, seg);
+    for (size_t k = 0; k < seg.count; ++k) {
+      if (!Impl::is_load(run[k].native) && !Impl::is_store(run[k].native)) continue;
+      g.L(seg.fallback[k]);
+      call_and_resume(k);
+    }
+    for (size_t k = 0; k < seg.count; ++k) g.stall_stub(run[k], k, seg);
   }
   return entry;
 }

@@ -57,6 +57,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void arm_hook_ecx();
   void branch(NativeOp op, u32 pc, u32 i);
   void guard(std::span<const Step> run, Xbyak::Label& fail);
+  void line_check(std::span<const Step> run, Xbyak::Label& fail);
   void native(const Step& s, size_t k, bool last_in_block, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void stall_stub(const Step& s, size_t k, Segment& seg);

@@ -29,7 +29,7 @@ u32 Impl::dest(NativeOp op, u32 i) {
     case NativeOp::Jalr: case NativeOp::Mfhi: case NativeOp::Mflo: return cpu_detail::rd(i);
     default: break;
   }
-  if (op > NativeOp::Sltu) return 0;  // MTHI, MTLO, loads, stores, other branches
+  if (op > NativeOp::Sltu) return 0;  // MTHI, MTLO, MULT/DIV, loads, stores, other branches
   return op >= NativeOp::Sll ? cpu_detail::rd(i) : cpu_detail::rt(i);
 }
 
@@ -252,6 +252,7 @@ void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch
   else if (is_load(op)) load(op, s.word, pipe);
   else if (is_store(op)) store(op, s.word);
   else if (op >= NativeOp::Mfhi && op <= NativeOp::Mtlo) hilo(op, s.word);
+  else if (op >= NativeOp::Mult && op <= NativeOp::Divu) muldiv(op, s.word);
   else alu(op, s.word);
   if (d != 0) mov(reg(d), eax);
   commit(pipe, is_load(op) ? rt(s.word) : d, is_load(op), rt(s.word));

@@ -22,6 +22,7 @@ enum class NativeOp : u8 {
   Addiu, Slti, Sltiu, Andi, Ori, Xori, Lui,
   Sll, Srl, Sra, Sllv, Srlv, Srav, Addu, Subu, And, Or, Xor, Nor, Slt, Sltu,
   Mfhi, Mflo, Mthi, Mtlo,
+  Mult, Multu, Div, Divu,  // block_emitter_muldiv.cpp
   // Loads and stores: native for RAM and the scratchpad (block_emitter_memory.cpp).
   Lb, Lh, Lw, Lbu, Lhu, Sb, Sh, Sw,
   // Branches and jumps (never in a delay slot: the recompiler makes those call steps).

@@ -1,6 +1,7 @@
 // The code generator behind BlockEmitter (block_emitter.h), shared by its two sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
-// operations and branches) and block_emitter_memory.cpp (loads, stores, HI/LO). Only they
+// operations and branches), block_emitter_memory.cpp (loads, stores, HI/LO moves) and
+// block_emitter_muldiv.cpp (multiplies and divides). Only they
 // include this header (and with it xbyak). Registers while a block runs: rbx = the context (the
 // CPU), r12 = the scheduler, r13d = a load's or store's address.
 #pragma once
@@ -66,6 +67,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void load(NativeOp op, u32 i, const Pipe& pipe);
   void store(NativeOp op, u32 i);
   void hilo(NativeOp op, u32 i);
+  // block_emitter_muldiv.cpp
+  void muldiv(NativeOp op, u32 i);
 };
 
 }  // namespace psx

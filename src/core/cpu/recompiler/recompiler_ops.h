@@ -9,8 +9,8 @@ namespace psx {
 
 // The instructions the recompiler knows by name (block_emitter.h NativeOp): the register-only
 // ALU operations, which touch neither memory nor coprocessors and raise no exception, HI/LO
-// moves, the loads and stores of a byte, halfword or word, and the branches and jumps; None for
-// everything else.
+// moves, multiplies and divides, the loads and stores of a byte, halfword or word, and the
+// branches and jumps; None for everything else.
 template <class BusT>
 NativeOp RecompilerT<BusT>::decode_op(u32 i) {
   static constexpr NativeOp kPrimary[48] = {
@@ -44,6 +44,10 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
     case 0x11: return NativeOp::Mthi;
     case 0x12: return NativeOp::Mflo;
     case 0x13: return NativeOp::Mtlo;
+    case 0x18: return NativeOp::Mult;
+    case 0x19: return NativeOp::Multu;
+    case 0x1A: return NativeOp::Div;
+    case 0x1B: return NativeOp::Divu;
     case 0x21: return NativeOp::Addu;
     case 0x23: return NativeOp::Subu;
     case 0x24: return NativeOp::And;

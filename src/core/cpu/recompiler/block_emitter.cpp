@@ -3,6 +3,8 @@
 // the ALU operations and the branches. Loads, stores and HI/LO: block_emitter_memory.cpp.
 #include "core/cpu/recompiler/block_emitter.h"
 
+#include <algorithm>
+
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
 #include "core/cpu/recompiler/emitter_impl.h"
@@ -133,8 +135,8 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 }
 
 // Whether the segment may run as native code (else to its slow path): checked once for the whole
-// run because its instructions change none of it. They write general registers, HI/LO, the pc,
-// the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves to the
+// run because its instructions change none of it. They write general registers, HI/LO, the GTE,
+// the pc, the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves to the
 // slow path), so stop_, hooks, interrupts (SR, Cause, I_STAT, I_MASK), the loop head, DCIC and
 // the i-cache stay as they are (a store to RAM leaves the i-cache alone: it is not coherent);
 // only the deadline, which time reaches, is checked again before each instruction. Every word
@@ -156,6 +158,10 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   jnz(fail, T_NEAR);
   test(cpu32(lay.dcic), Cop0::kDcicPCE);
   jnz(fail, T_NEAR);
+  if (std::any_of(run.begin(), run.end(), [](const Step& s) { return is_cop2(s.native); })) {
+    test(cpu32(lay.sr), Cop0::kCU2);  // else the GTE instructions raise Coprocessor Unusable
+    jz(fail, T_NEAR);
+  }
   if (is_branch(run[0].native)) {  // branch() assumes it is not in a delay slot
     cmp(byte[rbx + lay.next_in_delay], 0);
     jne(fail, T_NEAR);
@@ -253,9 +259,10 @@ void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch
   else if (is_store(op)) store(op, s.word);
   else if (op >= NativeOp::Mfhi && op <= NativeOp::Mtlo) hilo(op, s.word);
   else if (op >= NativeOp::Mult && op <= NativeOp::Divu) muldiv(op, s.word);
+  else if (is_cop2(op)) cop2(op, s.word);
   else alu(op, s.word);
   if (d != 0) mov(reg(d), eax);
-  commit(pipe, is_load(op) ? rt(s.word) : d, is_load(op), rt(s.word));
+  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word));
   if (k == 0 && !last_in_block) {  // the first instruction may be a delay slot
     cmp(cpu32(lay.pc), s.pc + 4);
     jne(*exit, T_NEAR);
@@ -408,7 +415,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.pipe.resize(seg.count);
     for (size_t k = 1; k < seg.count; ++k) {
       const Step& prev = steps[seg.first + k - 1];
-      seg.pipe[k] = {false, Impl::is_load(prev.native), cpu_detail::rt(prev.word)};
+      seg.pipe[k] = {false, Impl::is_delayed(prev.native), cpu_detail::rt(prev.word)};
     }
     g.guard(steps.subspan(seg.first, seg.count), seg.slow[0]);
     for (size_t k = 0; k < seg.count; ++k) {

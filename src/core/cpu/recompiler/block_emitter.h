@@ -23,6 +23,8 @@ enum class NativeOp : u8 {
   Sll, Srl, Sra, Sllv, Srlv, Srav, Addu, Subu, And, Or, Xor, Nor, Slt, Sltu,
   Mfhi, Mflo, Mthi, Mtlo,
   Mult, Multu, Div, Divu,  // block_emitter_muldiv.cpp
+  // GTE moves and commands (block_emitter_cop2.cpp), native while SR.CU2 is set.
+  Mfc2, Cfc2, Mtc2, Ctc2, Gte,
   // Loads and stores: native for RAM and the scratchpad (block_emitter_memory.cpp).
   Lb, Lh, Lw, Lbu, Lhu, Sb, Sh, Sw,
   // Branches and jumps (never in a delay slot: the recompiler makes those call steps).
@@ -49,7 +51,7 @@ class BlockEmitter {
     int loop_head, sr, cause, dcic, hook_pc, extra_hook_pc;
     int in_delay_slot, next_in_delay, stop, hook_armed;  // bool
     int hi, lo;
-    int instructions, load_done_at, muldiv_ready_at;     // u64
+    int instructions, load_done_at, muldiv_ready_at, gte_ready_at;  // u64
     int idle_skip, hooks;                                // pointers
     int now, deadline;                                   // u64, from sched
     int load_issue, load_bus;  // CpuT::kLoadIssue, kLoadBus (the load-shadow model)
@@ -64,6 +66,13 @@ class BlockEmitter {
     const u64* code_bits;     // CodePages::bits(): which RAM words hold compiled code
     void* code_pages;         // the CodePages, and what a store to such a word calls
     void (*code_write)(void* code_pages, u32 ram_offset);
+    // The GTE and its register moves and commands (Gte's member functions).
+    void* gte;
+    u32 (*gte_read_data)(void* gte, u32 r);
+    u32 (*gte_read_control)(void* gte, u32 r);
+    void (*gte_write_data)(void* gte, u32 r, u32 v);
+    void (*gte_write_control)(void* gte, u32 r, u32 v);
+    u32 (*gte_execute)(void* gte, u32 command);  // returns the command's cycles
     // Going on to the next block without the dispatcher (RecompilerT::run): CodePages::
     // any_dirty_cell() and BlockCache::recent_table() (kRecent entries).
     const bool* any_dirty;

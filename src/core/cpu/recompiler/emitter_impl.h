@@ -1,7 +1,8 @@
 // The code generator behind BlockEmitter (block_emitter.h), shared by its two sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
 // operations and branches), block_emitter_memory.cpp (loads, stores, HI/LO moves) and
-// block_emitter_muldiv.cpp (multiplies and divides). Only they
+// block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
+// commands). Only they
 // include this header (and with it xbyak). Registers while a block runs: rbx = the context (the
 // CPU), r12 = the scheduler, r13d = a load's or store's address.
 #pragma once
@@ -49,6 +50,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   static bool is_branch(NativeOp op) { return op >= NativeOp::Beq; }
   static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lhu; }
   static bool is_store(NativeOp op) { return op >= NativeOp::Sb && op <= NativeOp::Sw; }
+  static bool is_cop2(NativeOp op) { return op >= NativeOp::Mfc2 && op <= NativeOp::Gte; }
+  // Whether the instruction's result reaches rt after a load delay (delayed_load).
+  static bool is_delayed(NativeOp op) { return is_load(op) || op == NativeOp::Mfc2 || op == NativeOp::Cfc2; }
   static u32 dest(NativeOp op, u32 i);
 
   // block_emitter.cpp
@@ -69,6 +73,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void hilo(NativeOp op, u32 i);
   // block_emitter_muldiv.cpp
   void muldiv(NativeOp op, u32 i);
+  // block_emitter_cop2.cpp
+  void wait_gte();
+  void cop2(NativeOp op, u32 i);
 };
 
 }  // namespace psx

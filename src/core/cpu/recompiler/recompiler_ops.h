@@ -9,8 +9,8 @@ namespace psx {
 
 // The instructions the recompiler knows by name (block_emitter.h NativeOp): the register-only
 // ALU operations, which touch neither memory nor coprocessors and raise no exception, HI/LO
-// moves, multiplies and divides, the loads and stores of a byte, halfword or word, and the
-// branches and jumps; None for everything else.
+// moves, multiplies and divides, the GTE's register moves and commands, the loads and stores of
+// a byte, halfword or word, and the branches and jumps; None for everything else.
 template <class BusT>
 NativeOp RecompilerT<BusT>::decode_op(u32 i) {
   static constexpr NativeOp kPrimary[48] = {
@@ -24,6 +24,16 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
       NativeOp::None, NativeOp::None, NativeOp::Sb, NativeOp::Sh, NativeOp::None, NativeOp::Sw,
       NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None};
   const u32 op = i >> 26;
+  if (op == 0x12) {  // COP2: a command (imm25), or MFC2/CFC2/MTC2/CTC2 as execute_cop2() decodes them
+    if (i & (1u << 25)) return NativeOp::Gte;
+    switch (cpu_detail::rs(i)) {
+      case 0x00: return NativeOp::Mfc2;
+      case 0x02: return NativeOp::Cfc2;
+      case 0x04: return NativeOp::Mtc2;
+      case 0x06: return NativeOp::Ctc2;
+      default: return NativeOp::None;
+    }
+  }
   if (op == 0x01) {  // BcondZ as CpuT::execute_bcondz() decodes it: bit 16 (>= 0), bits 20-17 (link)
     const u32 r = cpu_detail::rt(i);
     const bool link = (r & 0x1E) == 0x10;
@@ -159,7 +169,8 @@ template <class BusT>
 BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   static_assert(sizeof(c.in_delay_slot_) == 1 && sizeof(c.next_in_delay_) == 1);
   static_assert(sizeof(c.instructions_) == 8 && sizeof(c.load_done_at_) == 8 && sizeof(Cycles) == 8);
-  static_assert(sizeof(c.muldiv_ready_at_) == 8 && sizeof(c.hi_) == 4 && sizeof(bool) == 1);
+  static_assert(sizeof(c.muldiv_ready_at_) == 8 && sizeof(c.gte_ready_at_) == 8);
+  static_assert(sizeof(c.hi_) == 4 && sizeof(bool) == 1);
   static_assert(sizeof(c.pc_) == 4 && sizeof(c.load_reg_) == 4 && sizeof(c.shadow_reg_) == 4);
   static_assert(sizeof(c.stop_) == 1 && sizeof(c.hook_armed_) == 1 && sizeof(c.idle_skip_) == 8);
   static_assert(sizeof(c.hooks_) == 8 && sizeof(c.hook_pc_) == 4 && sizeof(c.extra_hook_pc_) == 4);
@@ -193,6 +204,13 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.instructions = at(&c, &c.instructions_);
   l.load_done_at = at(&c, &c.load_done_at_);
   l.muldiv_ready_at = at(&c, &c.muldiv_ready_at_);
+  l.gte_ready_at = at(&c, &c.gte_ready_at_);
+  l.gte = &c.gte_;
+  l.gte_read_data = [](void* g, u32 r) { return static_cast<Gte*>(g)->read_data(r); };
+  l.gte_read_control = [](void* g, u32 r) { return static_cast<Gte*>(g)->read_control(r); };
+  l.gte_write_data = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_data(r, v); };
+  l.gte_write_control = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_control(r, v); };
+  l.gte_execute = [](void* g, u32 command) { return static_cast<Gte*>(g)->execute(command); };
   l.hi = at(&c, &c.hi_);
   l.lo = at(&c, &c.lo_);
   l.load_issue = int(Cpu::kLoadIssue);

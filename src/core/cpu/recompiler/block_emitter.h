@@ -26,7 +26,7 @@ enum class NativeOp : u8 {
   // GTE moves and commands (block_emitter_cop2.cpp), native while SR.CU2 is set.
   Mfc2, Cfc2, Mtc2, Ctc2, Gte,
   // Loads and stores: native for RAM and the scratchpad (block_emitter_memory.cpp).
-  Lb, Lh, Lw, Lbu, Lhu, Sb, Sh, Sw,
+  Lb, Lh, Lw, Lbu, Lhu, Lwl, Lwr, Sb, Sh, Sw, Swl, Swr,
   // Branches and jumps (never in a delay slot: the recompiler makes those call steps).
   Beq, Bne, Blez, Bgtz, J, Jal, Jr, Jalr, Bltz, Bgez, Bltzal, Bgezal,
 };

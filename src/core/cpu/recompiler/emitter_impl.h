@@ -48,8 +48,11 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Xbyak::Address now() { return qword[r12 + lay.now]; }
 
   static bool is_branch(NativeOp op) { return op >= NativeOp::Beq; }
-  static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lhu; }
-  static bool is_store(NativeOp op) { return op >= NativeOp::Sb && op <= NativeOp::Sw; }
+  static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lwr; }
+  static bool is_store(NativeOp op) { return op >= NativeOp::Sb && op <= NativeOp::Swr; }
+  static bool is_unaligned(NativeOp op) {
+    return op == NativeOp::Lwl || op == NativeOp::Lwr || op == NativeOp::Swl || op == NativeOp::Swr;
+  }
   static bool is_cop2(NativeOp op) { return op >= NativeOp::Mfc2 && op <= NativeOp::Gte; }
   // Whether the instruction's result reaches rt after a load delay (delayed_load).
   static bool is_delayed(NativeOp op) { return is_load(op) || op == NativeOp::Mfc2 || op == NativeOp::Cfc2; }
@@ -69,6 +72,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter_memory.cpp
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
   void load(NativeOp op, u32 i, const Pipe& pipe);
+  void merge_unaligned(NativeOp op, u32 rt, const Pipe& pipe);
   void store(NativeOp op, u32 i);
   void hilo(NativeOp op, u32 i);
   // block_emitter_muldiv.cpp

@@ -10,7 +10,8 @@ namespace psx {
 // The instructions the recompiler knows by name (block_emitter.h NativeOp): the register-only
 // ALU operations, which touch neither memory nor coprocessors and raise no exception, HI/LO
 // moves, multiplies and divides, the GTE's register moves and commands, the loads and stores of
-// a byte, halfword or word, and the branches and jumps; None for everything else.
+// a byte, halfword or word (LWL/LWR/SWL/SWR included), and the branches and jumps; None for
+// everything else.
 template <class BusT>
 NativeOp RecompilerT<BusT>::decode_op(u32 i) {
   static constexpr NativeOp kPrimary[48] = {
@@ -20,9 +21,9 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
       NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
       NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
       NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
-      NativeOp::Lb, NativeOp::Lh, NativeOp::None, NativeOp::Lw, NativeOp::Lbu, NativeOp::Lhu,
-      NativeOp::None, NativeOp::None, NativeOp::Sb, NativeOp::Sh, NativeOp::None, NativeOp::Sw,
-      NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None};
+      NativeOp::Lb, NativeOp::Lh, NativeOp::Lwl, NativeOp::Lw, NativeOp::Lbu, NativeOp::Lhu,
+      NativeOp::Lwr, NativeOp::None, NativeOp::Sb, NativeOp::Sh, NativeOp::Swl, NativeOp::Sw,
+      NativeOp::None, NativeOp::None, NativeOp::Swr, NativeOp::None};
   const u32 op = i >> 26;
   if (op == 0x12) {  // COP2: a command (imm25), or MFC2/CFC2/MTC2/CTC2 as execute_cop2() decodes them
     if (i & (1u << 25)) return NativeOp::Gte;

@@ -16,7 +16,7 @@ namespace {
 using namespace recompiler_test;
 
 constexpr u32 kBase = 0x80010000;
-constexpr u32 kT2 = 10, kT3 = 11, kS0 = 16, kS7 = 23;
+constexpr u32 kT2 = 10, kT3 = 11, kS0 = 16, kS6 = 22, kS7 = 23;
 
 // Operands where results and timing change: zero, one, -1, the most negative and most positive
 // values (0x80000000 / -1 overflows), and the early-out multiplier's magnitude steps
@@ -85,7 +85,8 @@ constexpr u32 kCop2 = 0x12u << 26, kMfc2 = kCop2, kCfc2 = kCop2 | 2 << 21, kMtc2
 // `length` instructions: MTC2/CTC2 of t0-t3 (random values, loaded or set) into any GTE
 // register, MFC2/CFC2 into t0-t3 and r0 (in the delay slot of a load to the same register or
 // not, their value read in their own delay slot or later, added into s0), GTE commands with
-// random sf/mx/v/cv/lm fields (an MFC2 right after one waits for it), loads, and SR writes
+// random sf/mx/v/cv/lm fields (an MFC2 right after one waits for it), LWC2/SWC2 to and from RAM
+// and the scratchpad (misaligned now and then: an address error), loads, and SR writes
 // that clear SR.CU2 now and then (the GTE instructions then raise Coprocessor Unusable, which
 // the handler counts in s1 and skips). Branches have ALU delay slots, so an exception never
 // returns into a delay slot.
@@ -109,6 +110,9 @@ std::vector<u32> gte_stream(u32 seed, u32 length) {
       code.push_back((pick(3) ? kMfc2 : kCfc2) | d << 16 | pick(32) << 11);
       if (pick(2)) code.push_back(rtype(0x21, kS0, d, kS0));  // addu s0, s0, d (the old d)
       code.push_back(rtype(0x21, kS0, d, kS0));
+    } else if (kind < 17) {  // LWC2/SWC2 through RAM or the scratchpad, misaligned one time in eight
+      const u32 off = (4 * pick(256)) | (pick(8) == 0 ? 1 + pick(3) : 0);
+      code.push_back(itype(pick(2) ? 0x32 : 0x3A, pick(2) ? kS7 : kS6, pick(32), off));
     } else if (kind < 19) {
       code.push_back(kCommand | (u32(rng()) & 0x1FFFFC0) | kGteOps[pick(std::size(kGteOps))]);
     } else if (kind < 20) {  // SR: COP2 usable three times in four
@@ -133,9 +137,14 @@ std::vector<u32> gte_stream(u32 seed, u32 length) {
 TEST(RecompilerGte, RandomStreams) {
   for (u32 seed = 1; seed <= 16; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    expect_same_code(gte_stream(seed, 700), kBase, psx::Cop0::kCU2, random_regs(seed), 2, [seed](Console& c) {
+    std::vector<u32> regs = random_regs(seed);
+    regs[kS6 - 1] = 0x1F800000;  // the scratchpad
+    expect_same_code(gte_stream(seed, 700), kBase, psx::Cop0::kCU2, regs, 2, [seed](Console& c) {
       std::mt19937 rng(seed);
-      for (u32 a = 0; a < 0x400; a += 4) c.write32(0x80100000 + a, u32(rng()));
+      for (u32 a = 0; a < 0x400; a += 4) {
+        c.write32(0x80100000 + a, u32(rng()));
+        c.write32(0x1F800000 + a, u32(rng()));
+      }
     });
   }
 }

@@ -227,7 +227,7 @@ void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch
     cmp(rax, qword[r12 + lay.deadline]);
     jae(*exit, T_NEAR);
   }
-  if (is_load(op) || is_store(op)) address_checks(op, s.word, seg.fallback[k]);
+  if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   mov(cpu32(lay.current_pc), s.pc);
   if (k == 0) {
     mov(al, byte[rbx + lay.next_in_delay]);
@@ -256,7 +256,8 @@ void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch
   const u32 d = dest(op, s.word);
   if (is_branch(op)) branch(op, s.pc, s.word);
   else if (is_load(op)) load(op, s.word, pipe);
-  else if (is_store(op)) store(op, s.word);
+  else if (is_store(op) || op == NativeOp::Swc2) store(op, s.word);
+  else if (op == NativeOp::Lwc2) lwc2(s.word);
   else if (op >= NativeOp::Mfhi && op <= NativeOp::Mtlo) hilo(op, s.word);
   else if (op >= NativeOp::Mult && op <= NativeOp::Divu) muldiv(op, s.word);
   else if (is_cop2(op)) cop2(op, s.word);
@@ -435,7 +436,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     g.jmp(seg.end, Xbyak::CodeGenerator::T_NEAR);
     for (size_t k = 0; k < seg.count; ++k) {
       const Step& step = steps[seg.first + k];
-      if (!Impl::is_load(step.native) && !Impl::is_store(step.native)) continue;
+      if (!Impl::is_memory(step.native)) continue;
       g.L(seg.fallback[k]);
       g.call_step(step);
       if (k + 1 == seg.count) {

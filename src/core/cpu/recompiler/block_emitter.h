@@ -23,8 +23,9 @@ enum class NativeOp : u8 {
   Sll, Srl, Sra, Sllv, Srlv, Srav, Addu, Subu, And, Or, Xor, Nor, Slt, Sltu,
   Mfhi, Mflo, Mthi, Mtlo,
   Mult, Multu, Div, Divu,  // block_emitter_muldiv.cpp
-  // GTE moves and commands (block_emitter_cop2.cpp), native while SR.CU2 is set.
-  Mfc2, Cfc2, Mtc2, Ctc2, Gte,
+  // GTE moves and commands (block_emitter_cop2.cpp) and loads and stores (as the others), native
+  // while SR.CU2 is set.
+  Mfc2, Cfc2, Mtc2, Ctc2, Gte, Lwc2, Swc2,
   // Loads and stores: native for RAM and the scratchpad (block_emitter_memory.cpp).
   Lb, Lh, Lw, Lbu, Lhu, Lwl, Lwr, Sb, Sh, Sw, Swl, Swr,
   // Branches and jumps (never in a delay slot: the recompiler makes those call steps).
@@ -55,6 +56,7 @@ class BlockEmitter {
     int idle_skip, hooks;                                // pointers
     int now, deadline;                                   // u64, from sched
     int load_issue, load_bus;  // CpuT::kLoadIssue, kLoadBus (the load-shadow model)
+    int ram_read;              // Bus::kRamRead (a RAM read outside that model: LWC2)
     const u32* irq_stat;
     const u32* irq_mask;
     const u32* hot_lines;     // Bus::hot_lines()

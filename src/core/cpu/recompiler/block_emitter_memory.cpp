@@ -1,5 +1,5 @@
 // Native loads, stores and HI/LO moves for compiled blocks (emitter_impl.h): CpuT::load(),
-// load_unaligned(), store(), store_unaligned(), timed_read() and wait_muldiv() for the accesses the native code makes itself, to RAM
+// load_unaligned(), store(), store_unaligned(), timed_read() and wait_muldiv(), and LWC2/SWC2 for the accesses the native code makes itself, to RAM
 // (its 2 MiB through the first 8 MiB of KUSEG, KSEG0 and KSEG1, as Bus::read/write map it) and
 // to the scratchpad (KUSEG and KSEG0). Everything else about an access (an address error, user
 // mode, a debug data break armed, an isolated cache for a store, D-cache mode, memory watches,
@@ -23,7 +23,7 @@ constexpr u32 kNotRam = 0x1F800000;
 
 u32 width_of(NativeOp op) {
   switch (op) {
-    case NativeOp::Lw: case NativeOp::Sw: return 4;
+    case NativeOp::Lw: case NativeOp::Sw: case NativeOp::Lwc2: case NativeOp::Swc2: return 4;
     case NativeOp::Lh: case NativeOp::Lhu: case NativeOp::Sh: return 2;
     default: return 1;
   }
@@ -38,7 +38,7 @@ u32 width_of(NativeOp op) {
 void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   using namespace cpu_detail;
   const u32 width = width_of(op);
-  const bool store = is_store(op);
+  const bool store = is_store(op) || op == NativeOp::Swc2;
   mov(r13d, reg(rs(i)));
   if (simm(i) != 0) add(r13d, simm(i));
   if (width > 1) {
@@ -199,7 +199,15 @@ void Impl::store(NativeOp op, u32 i) {
   const u32 width = width_of(op);
   Label scratchpad, done;
   const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // SWL/SWR write into the word holding the address
-  mov(eax, reg(cpu_detail::rt(i)));
+  if (op == NativeOp::Swc2) {  // SWC2: the GTE register, once the GTE is done
+    wait_gte();
+    mov(rdi, reinterpret_cast<u64>(lay.gte));
+    mov(esi, cpu_detail::rt(i));
+    mov(rax, reinterpret_cast<u64>(lay.gte_read_data));
+    call(rax);
+  } else {
+    mov(eax, reg(cpu_detail::rt(i)));
+  }
   mov(ecx, r13d);
   test(r13d, kNotRam);
   jnz(scratchpad, T_NEAR);
@@ -231,6 +239,35 @@ void Impl::store(NativeOp op, u32 i) {
   mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
   write();
   L(done);
+}
+
+// LWC2 past its checks: wait_load() (the GTE load is not shadowed but waits its turn), Bus::read32
+// (RAM: kRamRead cycles; the scratchpad: none), wait_gte(), and the GTE register write.
+void Impl::lwc2(u32 i) {
+  Label scratchpad, read;
+  mov(rax, now());
+  mov(rcx, cpu64(lay.load_done_at));
+  cmp(rax, rcx);
+  cmovb(rax, rcx);
+  mov(ecx, r13d);
+  test(r13d, kNotRam);
+  jnz(scratchpad);
+  add(rax, lay.ram_read);
+  and_(ecx, kRamMask);
+  mov(rdx, reinterpret_cast<u64>(lay.ram));
+  jmp(read);
+  L(scratchpad);
+  and_(ecx, kScratchMask);
+  mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
+  L(read);
+  mov(now(), rax);
+  mov(r8d, dword[rdx + rcx]);
+  wait_gte();
+  mov(rdi, reinterpret_cast<u64>(lay.gte));
+  mov(esi, cpu_detail::rt(i));
+  mov(edx, r8d);
+  mov(rax, reinterpret_cast<u64>(lay.gte_write_data));
+  call(rax);
 }
 
 // MFHI/MFLO (eax, after wait_muldiv: time goes on to when a multiply or divide is done) and

@@ -53,7 +53,11 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   static bool is_unaligned(NativeOp op) {
     return op == NativeOp::Lwl || op == NativeOp::Lwr || op == NativeOp::Swl || op == NativeOp::Swr;
   }
-  static bool is_cop2(NativeOp op) { return op >= NativeOp::Mfc2 && op <= NativeOp::Gte; }
+  static bool is_cop2(NativeOp op) { return op >= NativeOp::Mfc2 && op <= NativeOp::Swc2; }
+  // The instructions that access memory (address_checks()).
+  static bool is_memory(NativeOp op) {
+    return is_load(op) || is_store(op) || op == NativeOp::Lwc2 || op == NativeOp::Swc2;
+  }
   // Whether the instruction's result reaches rt after a load delay (delayed_load).
   static bool is_delayed(NativeOp op) { return is_load(op) || op == NativeOp::Mfc2 || op == NativeOp::Cfc2; }
   static u32 dest(NativeOp op, u32 i);
@@ -74,6 +78,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void load(NativeOp op, u32 i, const Pipe& pipe);
   void merge_unaligned(NativeOp op, u32 rt, const Pipe& pipe);
   void store(NativeOp op, u32 i);
+  void lwc2(u32 i);
   void hilo(NativeOp op, u32 i);
   // block_emitter_muldiv.cpp
   void muldiv(NativeOp op, u32 i);

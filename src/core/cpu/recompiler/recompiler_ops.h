@@ -9,7 +9,7 @@ namespace psx {
 
 // The instructions the recompiler knows by name (block_emitter.h NativeOp): the register-only
 // ALU operations, which touch neither memory nor coprocessors and raise no exception, HI/LO
-// moves, multiplies and divides, the GTE's register moves and commands, the loads and stores of
+// moves, multiplies and divides, the GTE's register moves, loads, stores and commands, the loads and stores of
 // a byte, halfword or word (LWL/LWR/SWL/SWR included), and the branches and jumps; None for
 // everything else.
 template <class BusT>
@@ -35,6 +35,8 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
       default: return NativeOp::None;
     }
   }
+  if (op == 0x32) return NativeOp::Lwc2;
+  if (op == 0x3A) return NativeOp::Swc2;
   if (op == 0x01) {  // BcondZ as CpuT::execute_bcondz() decodes it: bit 16 (>= 0), bits 20-17 (link)
     const u32 r = cpu_detail::rt(i);
     const bool link = (r & 0x1E) == 0x10;
@@ -222,6 +224,7 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.now = at(&c.sched_, c.sched_.now_cell());
   l.deadline = at(&c.sched_, c.sched_.deadline_cell());
   if constexpr (std::is_same_v<BusT, Bus>) {  // other buses compile no native steps
+    l.ram_read = int(BusT::kRamRead);
     l.irq_stat = c.irq_.stat_cell();
     l.irq_mask = c.irq_.mask_cell();
     l.hot_lines = c.bus_.hot_lines();

@@ -7,6 +7,7 @@
 
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
+#include "core/cpu/icache.h"
 #include "core/cpu/recompiler/emitter_impl.h"
 
 namespace psx {
@@ -140,10 +141,11 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 // slow path), so stop_, hooks, interrupts (SR, Cause, I_STAT, I_MASK), the loop head, DCIC and
 // the i-cache stay as they are (a store to RAM leaves the i-cache alone: it is not coherent);
 // only the deadline, which time reaches, is checked again before each instruction. Every word
-// must be a fetch without time or fill (an i-cache hit on a line held whole, Bus::fetch_hit)
-// that is still the word compiled, checked once per line for the line and once per word for
-// the word. Such a hit also means the code is cached (Bus::cached_code), as the load-shadow
-// model asks of a native load.
+// must be a fetch without time or fill, an i-cache hit (Bus::fetch_slow: cached code, the line's
+// tag matching and the word's valid bit set; a hit on a line held only in part is as free as on
+// a whole one) that is still the word compiled, checked once per line for the tag and valid bits
+// and once per word for the word. Such a hit also means the code is cached (Bus::cached_code),
+// as the load-shadow model asks of a native load.
 void Impl::guard(std::span<const Step> run, Label& fail) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   cmp(byte[rbx + lay.stop], 0);
@@ -192,16 +194,33 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   test(ecx, 0xFF00);
   jnz(fail, T_NEAR);
   L(interrupts_off);
-  for (size_t k = 0; k < run.size(); ++k) {
-    const u32 pc = run[k].pc;
-    if (k == 0 || (pc & 15) == 0) {
-      mov(rax, reinterpret_cast<u64>(&lay.hot_lines[(pc >> 4) & 255]));
-      cmp(dword[rax], pc & ~15u);
-      jne(fail, T_NEAR);
-      mov(rax, reinterpret_cast<u64>(&lay.icache_words[(pc >> 2) & 1020]));
+  if (run.back().pc >= 0xA0000000) {  // KSEG1 (uncached) or beyond: every fetch takes time
+    jmp(fail, T_NEAR);
+    return;
+  }
+  mov(rax, reinterpret_cast<u64>(lay.cache_control));
+  test(dword[rax], lay.icache_enable);
+  jz(fail, T_NEAR);
+  for (size_t k = 0; k < run.size();) {
+    // The words of one line: its tag must be the code's physical address (KUSEG as it is, KSEG0
+    // less bit 31) with their valid bits set (ICache::hit()), and each must be the word compiled.
+    const u32 line = run[k].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
+    u32 need = 0;
+    for (size_t w = k; w < run.size() && (run[w].pc & ~15u) == line; ++w) need |= 1u << ((run[w].pc >> 2) & 3);
+    mov(rax, reinterpret_cast<u64>(&lay.icache_tags[(line >> 4) & 255]));
+    if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
+      cmp(dword[rax], (phys & ICache::kTagMask) | 0xF);
+    } else {
+      mov(eax, dword[rax]);
+      xor_(eax, (phys & ICache::kTagMask) | need);
+      test(eax, ICache::kTagMask | need);
     }
-    cmp(dword[rax + 4 * ((pc >> 2) & 3)], run[k].word);
-    jne(fail, T_NEAR);
+    jnz(fail, T_NEAR);
+    mov(rax, reinterpret_cast<u64>(&lay.icache_words[(line >> 2) & 1020]));
+    for (; k < run.size() && (run[k].pc & ~15u) == line; ++k) {
+      cmp(dword[rax + 4 * ((run[k].pc >> 2) & 3)], run[k].word);
+      jne(fail, T_NEAR);
+    }
   }
 }
 
@@ -382,8 +401,8 @@ BlockEmitter::~BlockEmitter() = default;
 BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const Step> steps) {
   // Upper bounds on one step's code (guard, inline, stall stub, slow call, a load's or store's
   // call and guard for the rest of its segment) and on the frame's.
-  // A guard takes at most 24 bytes per word.
-  const size_t step_bytes = 768 + 24 * steps.size(), frame_bytes = 256;
+  // A guard takes at most 56 bytes per word (a line check for a single word).
+  const size_t step_bytes = 768 + 56 * steps.size(), frame_bytes = 256;
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;

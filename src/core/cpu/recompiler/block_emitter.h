@@ -59,8 +59,10 @@ class BlockEmitter {
     int ram_read;              // Bus::kRamRead (a RAM read outside that model: LWC2)
     const u32* irq_stat;
     const u32* irq_mask;
-    const u32* hot_lines;     // Bus::hot_lines()
-    const u32* icache_words;  // ICache::words()
+    const u32* icache_tags;    // ICache::tags()
+    const u32* icache_words;   // ICache::words()
+    const u32* cache_control;  // Bus::cache_control_cell()
+    u32 icache_enable;         // Bus::icache_enable_bit()
     u8* ram;                  // Bus::ram(), 2 MiB
     u8* scratchpad;           // Bus::scratchpad(), 1 KiB
     const bool* dcache_mode;  // Bus::dcache_mode_cell()

@@ -227,7 +227,9 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
     l.ram_read = int(BusT::kRamRead);
     l.irq_stat = c.irq_.stat_cell();
     l.irq_mask = c.irq_.mask_cell();
-    l.hot_lines = c.bus_.hot_lines();
+    l.icache_tags = c.bus_.icache().tags();
+    l.cache_control = c.bus_.cache_control_cell();
+    l.icache_enable = BusT::icache_enable_bit();
     l.icache_words = c.bus_.icache().words();
     l.ram = c.bus_.ram();
     l.scratchpad = c.bus_.scratchpad();

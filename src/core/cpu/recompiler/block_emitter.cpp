@@ -144,8 +144,10 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 // must be a fetch without time or fill, an i-cache hit (Bus::fetch_slow: cached code, the line's
 // tag matching and the word's valid bit set; a hit on a line held only in part is as free as on
 // a whole one) that is still the word compiled, checked once per line for the tag and valid bits
-// and once per word for the word. Such a hit also means the code is cached (Bus::cached_code),
-// as the load-shadow model asks of a native load.
+// and once per word for the word: here for the run's first line, and for each further line
+// where the run reaches it (native()), so that a run whose later lines miss runs natively up to
+// them. Such a hit also means the code is cached (Bus::cached_code), as the load-shadow model
+// asks of a native load.
 void Impl::guard(std::span<const Step> run, Label& fail) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   cmp(byte[rbx + lay.stop], 0);
@@ -201,33 +203,37 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   mov(rax, reinterpret_cast<u64>(lay.cache_control));
   test(dword[rax], lay.icache_enable);
   jz(fail, T_NEAR);
-  for (size_t k = 0; k < run.size();) {
-    // The words of one line: its tag must be the code's physical address (KUSEG as it is, KSEG0
-    // less bit 31) with their valid bits set (ICache::hit()), and each must be the word compiled.
-    const u32 line = run[k].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
-    u32 need = 0;
-    for (size_t w = k; w < run.size() && (run[w].pc & ~15u) == line; ++w) need |= 1u << ((run[w].pc >> 2) & 3);
-    mov(rax, reinterpret_cast<u64>(&lay.icache_tags[(line >> 4) & 255]));
-    if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
-      cmp(dword[rax], (phys & ICache::kTagMask) | 0xF);
-    } else {
-      mov(eax, dword[rax]);
-      xor_(eax, (phys & ICache::kTagMask) | need);
-      test(eax, ICache::kTagMask | need);
-    }
-    jnz(fail, T_NEAR);
-    mov(rax, reinterpret_cast<u64>(&lay.icache_words[(line >> 2) & 1020]));
-    for (; k < run.size() && (run[k].pc & ~15u) == line; ++k) {
-      cmp(dword[rax + 4 * ((run[k].pc >> 2) & 3)], run[k].word);
-      jne(fail, T_NEAR);
-    }
+  line_check(run, fail);
+}
+
+// The i-cache check for the words of `run` on its first word's line: the line's tag must be the
+// code's physical address (KUSEG as it is, KSEG0 less bit 31) with those words' valid bits set
+// (ICache::hit()), and each must be the word compiled.
+void Impl::line_check(std::span<const Step> run, Label& fail) {
+  const u32 line = run[0].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
+  size_t n = 0;
+  u32 need = 0;
+  for (; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ((run[n].pc >> 2) & 3);
+  mov(rax, reinterpret_cast<u64>(&lay.icache_tags[(line >> 4) & 255]));
+  if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
+    cmp(dword[rax], (phys & ICache::kTagMask) | 0xF);
+  } else {
+    mov(eax, dword[rax]);
+    xor_(eax, (phys & ICache::kTagMask) | need);
+    test(eax, ICache::kTagMask | need);
+  }
+  jnz(fail, T_NEAR);
+  mov(rax, reinterpret_cast<u64>(&lay.icache_words[(line >> 2) & 1020]));
+  for (size_t k = 0; k < n; ++k) {
+    cmp(dword[rax + 4 * ((run[k].pc >> 2) & 3)], run[k].word);
+    jne(fail, T_NEAR);
   }
 }
 
 // Instruction k of a native segment: CpuT::run()'s loop pass and execute_at_pc(). The guard
 // has checked what no instruction of the segment can change (stop, hooks, interrupts, loop
 // heads, debug breaks, i-cache hits, new_load_* zero), so only time needs a check before each
-// instruction after the first. A branch may arm a hook or name a loop head, but only its delay
+// instruction after the first, and the i-cache where one starts a line the guard left to it. A branch may arm a hook or name a loop head, but only its delay
 // slot follows it in the segment, and step() leaves an armed hook alone in a delay slot, and
 // the loop head lies at or before the branch. After the first instruction the pipeline is
 // known: not in a delay slot, next_pc = pc + 4, and the load delay slot as seg.pipe[k] says.
@@ -237,14 +243,18 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
 // on natively if the guard allows it for the rest (the access, to I/O say, may have changed
 // what the guard checks), else as calls. The call leaves the pipeline as the native code would
 // have (a load pending in rt, or none), so seg.pipe holds after it too.
-void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch, Segment& seg) {
+void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg) {
   using namespace cpu_detail;
+  const Step& s = rest[0];
   const NativeOp op = s.native;
   const Pipe& pipe = seg.pipe[k];
   if (k > 0) {
     mov(rax, now());
     cmp(rax, qword[r12 + lay.deadline]);
     jae(*exit, T_NEAR);
+    // A new i-cache line: its words must hit (guard()), else the rest runs as calls, which
+    // fetch (and fill) it.
+    if ((s.pc & 15) == 0) line_check(rest, seg.slow[k]);
   }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   mov(cpu32(lay.current_pc), s.pc);
@@ -441,7 +451,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(steps[seg.first + k - 1].native);
       g.L(seg.resume[k]);
-      g.native(steps[seg.first + k], k, seg.first + k + 1 == steps.size(), after_branch, seg);
+      g.native(steps.subspan(seg.first + k, seg.count - k), k, seg.first + k + 1 == steps.size(), after_branch, seg);
     }
     g.L(seg.end);
   }

@@ -69,7 +69,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void arm_hook_ecx();
   void branch(NativeOp op, u32 pc, u32 i);
   void guard(std::span<const Step> run, Xbyak::Label& fail);
-  void native(const Step& s, size_t k, bool last_in_block, bool after_branch, Segment& seg);
+  void line_check(std::span<const Step> run, Xbyak::Label& fail);
+  // Instruction k of a segment, rest[0], with the segment's instructions after it.
+  void native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void stall_stub(const Step& s, size_t k, Segment& seg);
   void chain();

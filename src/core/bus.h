@@ -76,6 +76,10 @@ class Bus {
   const ICache& icache() const { return icache_; }
   // fetch_hit()'s table in place (kLines entries), for the recompiler's native code.
   const u32* hot_lines() const { return hot_lines_.data(); }
+  // The cache control register in place and its i-cache enable bit (cached_code()), for the
+  // recompiler's native code, which checks i-cache hits word by word (ICache::tags()).
+  const u32* cache_control_cell() const { return &cache_control_; }
+  static constexpr u32 icache_enable_bit() { return kBccIs1; }
   // BCC selects D-cache mode: loads from RAM also write the scratchpad (see dcache_fill()).
   bool dcache_mode() const { return dcache_mode_; }
   // dcache_mode() and the attached memory watches in place, for the recompiler's native loads

@@ -5,8 +5,8 @@
 // KSEG0, KSEG1 and a KUSEG mirror, the scratchpad, timer registers (I/O), expansion region 1 and
 // wild addresses (bus errors), aligned and not (address errors), stores into their own code,
 // with SR switching between kernel mode, an isolated cache and user mode, and DCIC data breaks
-// armed or not. Named cases pin down the load delay slot and shadow, sign extension, the HI/LO
-// wait after MULT and DIV, and BcondZ links.
+// armed or not. Named cases pin down the load delay slot and shadow, sign extension, LWL/LWR
+// merging, the HI/LO wait after MULT and DIV, and BcondZ links.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -206,6 +206,38 @@ TEST(RecompilerMemory, NamedLoadStoreCases) {
   expect_same_code(code, kBase, 0, regs, 3);
   // The same with SR.IsC set: every store stays out of memory.
   expect_same_code(code, kBase, Cop0::kIsC, regs, 3);
+}
+
+// LWL/LWR pairs (psx-spx "CPU Load/Store Opcodes") at all four alignments in RAM and the
+// scratchpad: the usual pair, whose second load merges with the first's value still in its delay
+// slot; either alone after a load to the same register (merging with that load's value) or to
+// another register, or after the load has landed; into r0; and SWL/SWR pairs, read back.
+TEST(RecompilerMemory, UnalignedLoadsAndStores) {
+  constexpr u32 kLw = 0x23, kLwl = 0x22, kLwr = 0x26, kSwl = 0x2A, kSwr = 0x2E;
+  const auto mem = [](u32 op, u32 base, u32 rt, u32 off) { return itype(op, base, rt, off); };
+  std::vector<u32> code;
+  for (u32 base : {kRamK0, kScratch}) {
+    for (u32 a = 0; a < 4; ++a) {
+      const u32 at = 0x80 + 8 * a + a;  // a word-pair's first byte plus the alignment
+      const std::vector<std::vector<u32>> cases = {
+          {mem(kLwr, base, kT0, at), mem(kLwl, base, kT0, at + 3), kNop},
+          {mem(kLwl, base, kT1, at + 3), mem(kLwr, base, kT1, at), kNop},
+          {mem(kLw, base, kT2, 0x40), mem(kLwl, base, kT2, at), kNop},       // merges with the LW's value
+          {mem(kLw, base, kT3, 0x44), mem(kLwr, base, kT3, at), kNop},
+          {mem(kLw, base, kT2, 0x48), kNop, mem(kLwl, base, kT2, at), kNop},  // the LW has landed
+          {mem(kLw, base, kT1, 0x4C), mem(kLwr, base, kT0, at), kNop},       // another register
+          {mem(kLwl, base, 0, at), mem(kLwr, base, 0, at), kNop},           // r0
+          {mem(kSwl, base, kT0, 0x100 + at), mem(kSwr, base, kT1, 0x104 + at),
+           mem(kLw, base, kT2, 0x100 + 8 * a), mem(kLw, base, kT3, 0x104 + 8 * a), kNop},
+      };
+      for (const auto& c : cases) {
+        code.insert(code.end(), c.begin(), c.end());
+        for (u32 r : {kT0, kT1, kT2, kT3}) code.push_back(rtype(0x21, 16, r, 16));  // addu s0, s0, r
+      }
+    }
+  }
+  code.insert(code.end(), {mem(0x2B, kRamK0, 16, 0x3F0), j(kBase), itype(0x09, kS1, kS1, 1)});
+  expect_same_code(code, kBase, 0, memory_regs(13), 3, random_data(13));
 }
 
 // MFHI/MFLO right after MULT, MULTU, DIV, DIVU (time waits for the result) and a few

@@ -270,4 +270,41 @@ TEST(RecompilerCode, NativeBranches) {
   expect_same_code(code, base, 0, regs, 3);
 }
 
+// Cached code entered in the middle of i-cache lines: a miss fills from the fetched word to the
+// line's end (psx-spx "Memory Map", i-Cache), so the loop's first line and the subroutine's
+// line are held only in part, and their hits are as free as on whole lines (native code must
+// still be the interpreter's timing). Every 64 passes the loop isolates the cache and writes its
+// own line's tag with no valid bits (BCC.TAG, psx-spx "Memory Control" FFFE0130h), so the next
+// pass misses and refills from the loop head.
+TEST(RecompilerCode, PartlyValidICacheLines) {
+  const u32 base = 0x80010000, kT2 = 10, kT3 = 11, kAt = 1, kCodeReg = 18;
+  const auto addiu = [](u32 t, u32 s, u32 imm) { return itype(0x09, s, t, imm); };
+  std::vector<u32> code(10, kNop);
+  code[0] = j(base + 0x28);
+  const std::vector<u32> loop = {
+      addiu(kT0, kT0, 1),                                  // 0x28: loop (word 2 of its line)
+      0x03u << 26 | (((base + 0x104) >> 2) & 0x03FFFFFF),  // jal sub (word 1 of its line)
+      kNop,
+      itype(0x0C, kT0, kT1, 63),                           // andi t1, t0, 63
+      itype(0x05, kT1, 0, 13),                             // bne t1, zero, over the flush
+      kNop,
+      itype(0x0F, 0, kAt, 0xFFFE),                         // lui at, FFFEh
+      itype(0x0F, 0, kT2, 1), itype(0x0D, kT2, kT2, 0xE98C),  // t2 = 1E98Ch: BCC with TAG
+      itype(0x2B, kAt, kT2, 0x130),                        // sw t2, 130h(at)
+      itype(0x0F, 0, kT3, 1), itype(0x10, 4, kT3, 0) | 12 << 11,  // mtc0 (SR.IsC), sr
+      itype(0x2B, kCodeReg, 0, 0x28),                      // sw zero, 28h(code): the loop line's tag
+      itype(0x10, 4, 0, 0) | 12 << 11,                     // mtc0 zero, sr
+      itype(0x0D, 0, kT2, 0xE988), itype(0x0F, 0, kT3, 1), rtype(0x25, kT2, kT3, kT2),  // t2 = 1E988h
+      itype(0x2B, kAt, kT2, 0x130),                        // BCC back to its reset value
+      j(base + 0x28),                                      // over here: back to the loop
+      addiu(kS1, kS1, 1)};
+  code.insert(code.end(), loop.begin(), loop.end());
+  code.resize(0x41, kNop);  // the subroutine at 0x104
+  const std::vector<u32> sub = {rtype(0x21, kT3, kT0, kT3), rtype(0x08, 31, 0, 0), addiu(kT2, kT2, 3)};
+  code.insert(code.end(), sub.begin(), sub.end());
+  std::vector<u32> regs(31, 0);
+  regs[kCodeReg - 1] = base;
+  expect_same_code(code, base, 0, regs, 3);
+}
+
 }  // namespace

@@ -62,6 +62,8 @@ class ICache {
   void invalidate_all() { tags_.fill(0); }
 
   u32 tag(u32 line_index) const { return tags_[line_index]; }
+  // The tags in place (tag(l) is tags()[l]), for the recompiler's native code.
+  const u32* tags() const { return tags_.data(); }
 
   // Version 2 added the code words. Reading a version-1 section the caller refills the valid
   // words from memory (refill_valid): the state was made when a hit ran what memory held.

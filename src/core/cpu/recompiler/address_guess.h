@@ -21,7 +21,8 @@ class AddressGuess {
   bool elsewhere(u32 i) const {
     using namespace cpu_detail;
     const u32 s = rs(i);
-    if (op(i) < 0x20 || op(i) > 0x2E || !((known_ >> s) & 1)) return false;
+    const bool memory = (op(i) >= 0x20 && op(i) <= 0x2E) || op(i) == 0x32 || op(i) == 0x3A;  // LWC2, SWC2
+    if (!memory || !((known_ >> s) & 1)) return false;
     return !native_memory(val_[s] + simm(i));
   }
   // Follows what instruction i writes.

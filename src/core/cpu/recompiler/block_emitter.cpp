@@ -3,8 +3,11 @@
 // the ALU operations and the branches. Loads, stores and HI/LO: block_emitter_memory.cpp.
 #include "core/cpu/recompiler/block_emitter.h"
 
+#include <algorithm>
+
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
+#include "core/cpu/icache.h"
 #include "core/cpu/recompiler/emitter_impl.h"
 
 namespace psx {
@@ -29,7 +32,7 @@ u32 Impl::dest(NativeOp op, u32 i) {
     case NativeOp::Jalr: case NativeOp::Mfhi: case NativeOp::Mflo: return cpu_detail::rd(i);
     default: break;
   }
-  if (op > NativeOp::Sltu) return 0;  // MTHI, MTLO, loads, stores, other branches
+  if (op > NativeOp::Sltu) return 0;  // MTHI, MTLO, MULT/DIV, loads, stores, other branches
   return op >= NativeOp::Sll ? cpu_detail::rd(i) : cpu_detail::rt(i);
 }
 
@@ -132,17 +135,20 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
   mov(byte[rbx + lay.next_in_delay], 1);
 }
 
-// Whether the rest of a segment, from run[0], may run as native code (else to its slow path):
-// checked once because its instructions change none of it. They write general registers, HI/LO,
-// the pc, the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves
-// to the slow path), so stop_, hooks, interrupts (SR, Cause, I_STAT, I_MASK), the loop head, DCIC
-// and the i-cache stay as they are (a store to RAM leaves the i-cache alone: it is not coherent);
+// Whether the segment may run as native code (else to its slow path): checked once for the whole
+// run because its instructions change none of it. They write general registers, HI/LO, the GTE,
+// the pc, the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves to the
+// slow path), so stop_, hooks, interrupts (SR, Cause, I_STAT, I_MASK), the loop head, DCIC and
+// the i-cache stay as they are (a store to RAM leaves the i-cache alone: it is not coherent);
 // only the deadline, which time reaches, is checked again before each instruction. Every word
-// must be a fetch without time or fill (an i-cache hit on a line held whole, Bus::fetch_hit)
-// that is still the word compiled: checked here for run[0]'s line, and by line_check() where
-// each later line begins (nothing native changes the i-cache, so checking a line when it is
-// reached is the same as checking it here). Such a hit also means the code is cached
-// (Bus::cached_code), as the load-shadow model asks of a native load.
+// must be a fetch without time or fill, an i-cache hit (Bus::fetch_slow: cached code, the line's
+// tag matching and the word's valid bit set; a hit on a line held only in part is as free as on
+// a whole one) that is still the word compiled, checked once per line for the tag and valid bits
+// and once per word for the word: here for the run's first line, and for each further line
+// where the run reaches it (native(); nothing native changes the i-cache, so checking a line
+// when it is reached is the same as checking it here), so that a run whose later lines miss runs
+// natively up to them. Such a hit also means the code is cached (Bus::cached_code), as the load-shadow model
+// asks of a native load.
 void Impl::guard(std::span<const Step> run, Label& fail) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   cmp(byte[rbx + lay.stop], 0);
@@ -157,6 +163,10 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   jnz(fail, T_NEAR);
   test(cpu32(lay.dcic), Cop0::kDcicPCE);
   jnz(fail, T_NEAR);
+  if (std::any_of(run.begin(), run.end(), [](const Step& s) { return is_cop2(s.native); })) {
+    test(cpu32(lay.sr), Cop0::kCU2);  // else the GTE instructions raise Coprocessor Unusable
+    jz(fail, T_NEAR);
+  }
   if (is_branch(run[0].native)) {  // branch() assumes it is not in a delay slot
     cmp(byte[rbx + lay.next_in_delay], 0);
     jne(fail, T_NEAR);
@@ -187,17 +197,35 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   test(ecx, 0xFF00);
   jnz(fail, T_NEAR);
   L(interrupts_off);
+  if (run.back().pc >= 0xA0000000) {  // KSEG1 (uncached) or beyond: every fetch takes time
+    jmp(fail, T_NEAR);
+    return;
+  }
+  mov(rax, reinterpret_cast<u64>(lay.cache_control));
+  test(dword[rax], lay.icache_enable);
+  jz(fail, T_NEAR);
   line_check(run, fail);
 }
 
-// The i-cache line of run[0] holds run[0] and the words after it in that line, as compiled.
+// The i-cache check for the words of `run` on its first word's line: the line's tag must be the
+// code's physical address (KUSEG as it is, KSEG0 less bit 31) with those words' valid bits set
+// (ICache::hit()), and each must be the word compiled.
 void Impl::line_check(std::span<const Step> run, Label& fail) {
-  const u32 line = run[0].pc & ~15u;
-  mov(rax, reinterpret_cast<u64>(&lay.hot_lines[(line >> 4) & 255]));
-  cmp(dword[rax], line);
-  jne(fail, T_NEAR);
+  const u32 line = run[0].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
+  size_t n = 0;
+  u32 need = 0;
+  for (; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ((run[n].pc >> 2) & 3);
+  mov(rax, reinterpret_cast<u64>(&lay.icache_tags[(line >> 4) & 255]));
+  if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
+    cmp(dword[rax], (phys & ICache::kTagMask) | 0xF);
+  } else {
+    mov(eax, dword[rax]);
+    xor_(eax, (phys & ICache::kTagMask) | need);
+    test(eax, ICache::kTagMask | need);
+  }
+  jnz(fail, T_NEAR);
   mov(rax, reinterpret_cast<u64>(&lay.icache_words[(line >> 2) & 1020]));
-  for (size_t k = 0; k < run.size() && (run[k].pc & ~15u) == line; ++k) {
+  for (size_t k = 0; k < n; ++k) {
     cmp(dword[rax + 4 * ((run[k].pc >> 2) & 3)], run[k].word);
     jne(fail, T_NEAR);
   }
@@ -206,26 +234,28 @@ void Impl::line_check(std::span<const Step> run, Label& fail) {
 // Instruction k of a native segment: CpuT::run()'s loop pass and execute_at_pc(). The guard
 // has checked what no instruction of the segment can change (stop, hooks, interrupts, loop
 // heads, debug breaks, i-cache hits, new_load_* zero), so only time needs a check before each
-// instruction after the first. A branch may arm a hook or name a loop head, but only its delay
-// slot follows it in the segment, and step() leaves an armed hook alone in a delay slot, and
-// the loop head lies at or before the branch. After the first instruction the pipeline is
+// instruction after the first, and the i-cache where one starts a line the guard left to it. A
+// branch may arm a hook or name a loop head, but only its delay slot follows it in the segment,
+// and step() leaves an armed hook alone in a delay slot, and the loop head lies at or before the
+// branch. After the first instruction the pipeline is
 // known: not in a delay slot, next_pc = pc + 4, and the load delay slot as seg.pipe[k] says.
 // A branch's delay slot (after_branch) runs with in_delay_slot_ set and goes wherever the
 // branch set next_pc_. A load or store first checks, before changing anything, that it can make
-// its access natively; if not, it runs as a call (seg.fallback[k]), after which the segment goes
-// on natively if the guard allows it for the rest (the access, to I/O say, may have changed
-// what the guard checks), else as calls. The call leaves the pipeline as the native code would
-// have (a load pending in rt, or none), so seg.pipe holds after it too.
-void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch, Segment& seg) {
+// its access natively; if not, it runs as a call (seg.fallback[k]; see emit() for what follows).
+void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg) {
   using namespace cpu_detail;
+  const Step& s = rest[0];
   const NativeOp op = s.native;
   const Pipe& pipe = seg.pipe[k];
   if (k > 0) {
     mov(rax, now());
     cmp(rax, qword[r12 + lay.deadline]);
     jae(*exit, T_NEAR);
+    // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
+    // which fetches (and fills) it.
+    if ((s.pc & 15) == 0) line_check(rest, seg.slow[k]);
   }
-  if (is_load(op) || is_store(op)) address_checks(op, s.word, seg.fallback[k]);
+  if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   mov(cpu32(lay.current_pc), s.pc);
   if (k == 0) {
     mov(al, byte[rbx + lay.next_in_delay]);
@@ -254,11 +284,14 @@ void Impl::native(const Step& s, size_t k, bool last_in_block, bool after_branch
   const u32 d = dest(op, s.word);
   if (is_branch(op)) branch(op, s.pc, s.word);
   else if (is_load(op)) load(op, s.word, pipe);
-  else if (is_store(op)) store(op, s.word);
+  else if (is_store(op) || op == NativeOp::Swc2) store(op, s.word);
+  else if (op == NativeOp::Lwc2) lwc2(s.word);
   else if (op >= NativeOp::Mfhi && op <= NativeOp::Mtlo) hilo(op, s.word);
+  else if (op >= NativeOp::Mult && op <= NativeOp::Divu) muldiv(op, s.word);
+  else if (is_cop2(op)) cop2(op, s.word);
   else alu(op, s.word);
   if (d != 0) mov(reg(d), eax);
-  commit(pipe, is_load(op) ? rt(s.word) : d, is_load(op), rt(s.word));
+  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word));
   if (k == 0 && !last_in_block) {  // the first instruction may be a delay slot
     cmp(cpu32(lay.pc), s.pc + 4);
     jne(*exit, T_NEAR);
@@ -376,9 +409,9 @@ BlockEmitter::~BlockEmitter() = default;
 
 BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const Step> steps) {
   // Upper bounds on one step's code (inline code with a line check, stall stub, and the slow
-  // call and the load's or store's call, each with the guard for the rest: at most 150 bytes
-  // and 24 per word of one line) and on the frame's.
-  const size_t step_bytes = 1280, frame_bytes = 256;
+  // call and the load's or store's call, each with the guard for the rest: at most about 180
+  // bytes and a line check of at most 90) and on the frame's.
+  const size_t step_bytes = 1536, frame_bytes = 256;
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;
@@ -411,15 +444,14 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.pipe.resize(seg.count);
     for (size_t k = 1; k < seg.count; ++k) {
       const Step& prev = steps[seg.first + k - 1];
-      seg.pipe[k] = {false, Impl::is_load(prev.native), cpu_detail::rt(prev.word)};
+      seg.pipe[k] = {false, Impl::is_delayed(prev.native), cpu_detail::rt(prev.word)};
     }
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
     g.guard(run, seg.slow[0]);
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);
-      if (k > 0 && (run[k].pc & 15) == 0) g.line_check(run.subspan(k), seg.slow[k]);
-      g.native(run[k], k, seg.first + k + 1 == steps.size(), after_branch, seg);
+      g.native(run.subspan(k), k, seg.first + k + 1 == steps.size(), after_branch, seg);
     }
     g.L(seg.end);
   }
@@ -448,7 +480,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       call_and_resume(k);
     }
     for (size_t k = 0; k < seg.count; ++k) {
-      if (!Impl::is_load(run[k].native) && !Impl::is_store(run[k].native)) continue;
+      if (!Impl::is_memory(run[k].native)) continue;
       g.L(seg.fallback[k]);
       call_and_resume(k);
     }

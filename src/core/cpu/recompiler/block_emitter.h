@@ -22,8 +22,12 @@ enum class NativeOp : u8 {
   Addiu, Slti, Sltiu, Andi, Ori, Xori, Lui,
   Sll, Srl, Sra, Sllv, Srlv, Srav, Addu, Subu, And, Or, Xor, Nor, Slt, Sltu,
   Mfhi, Mflo, Mthi, Mtlo,
+  Mult, Multu, Div, Divu,  // block_emitter_muldiv.cpp
+  // GTE moves and commands (block_emitter_cop2.cpp) and loads and stores (as the others), native
+  // while SR.CU2 is set.
+  Mfc2, Cfc2, Mtc2, Ctc2, Gte, Lwc2, Swc2,
   // Loads and stores: native for RAM and the scratchpad (block_emitter_memory.cpp).
-  Lb, Lh, Lw, Lbu, Lhu, Sb, Sh, Sw,
+  Lb, Lh, Lw, Lbu, Lhu, Lwl, Lwr, Sb, Sh, Sw, Swl, Swr,
   // Branches and jumps (never in a delay slot: the recompiler makes those call steps).
   Beq, Bne, Blez, Bgtz, J, Jal, Jr, Jalr, Bltz, Bgez, Bltzal, Bgezal,
 };
@@ -48,14 +52,17 @@ class BlockEmitter {
     int loop_head, sr, cause, dcic, hook_pc, extra_hook_pc;
     int in_delay_slot, next_in_delay, stop, hook_armed;  // bool
     int hi, lo;
-    int instructions, load_done_at, muldiv_ready_at;     // u64
+    int instructions, load_done_at, muldiv_ready_at, gte_ready_at;  // u64
     int idle_skip, hooks;                                // pointers
     int now, deadline;                                   // u64, from sched
     int load_issue, load_bus;  // CpuT::kLoadIssue, kLoadBus (the load-shadow model)
+    int ram_read;              // Bus::kRamRead (a RAM read outside that model: LWC2)
     const u32* irq_stat;
     const u32* irq_mask;
-    const u32* hot_lines;     // Bus::hot_lines()
-    const u32* icache_words;  // ICache::words()
+    const u32* icache_tags;    // ICache::tags()
+    const u32* icache_words;   // ICache::words()
+    const u32* cache_control;  // Bus::cache_control_cell()
+    u32 icache_enable;         // Bus::icache_enable_bit()
     u8* ram;                  // Bus::ram(), 2 MiB
     u8* scratchpad;           // Bus::scratchpad(), 1 KiB
     const bool* dcache_mode;  // Bus::dcache_mode_cell()
@@ -63,6 +70,13 @@ class BlockEmitter {
     const u64* code_bits;     // CodePages::bits(): which RAM words hold compiled code
     void* code_pages;         // the CodePages, and what a store to such a word calls
     void (*code_write)(void* code_pages, u32 ram_offset);
+    // The GTE and its register moves and commands (Gte's member functions).
+    void* gte;
+    u32 (*gte_read_data)(void* gte, u32 r);
+    u32 (*gte_read_control)(void* gte, u32 r);
+    void (*gte_write_data)(void* gte, u32 r, u32 v);
+    void (*gte_write_control)(void* gte, u32 r, u32 v);
+    u32 (*gte_execute)(void* gte, u32 command);  // returns the command's cycles
     // Going on to the next block without the dispatcher (RecompilerT::run): CodePages::
     // any_dirty_cell() and BlockCache::recent_table() (kRecent entries).
     const bool* any_dirty;

@@ -1,5 +1,5 @@
 // Native loads, stores and HI/LO moves for compiled blocks (emitter_impl.h): CpuT::load(),
-// store(), timed_read() and wait_muldiv() for the accesses the native code makes itself, to RAM
+// load_unaligned(), store(), store_unaligned(), timed_read() and wait_muldiv(), and LWC2/SWC2 for the accesses the native code makes itself, to RAM
 // (its 2 MiB through the first 8 MiB of KUSEG, KSEG0 and KSEG1, as Bus::read/write map it) and
 // to the scratchpad (KUSEG and KSEG0). Everything else about an access (an address error, user
 // mode, a debug data break armed, an isolated cache for a store, D-cache mode, memory watches,
@@ -23,7 +23,7 @@ constexpr u32 kNotRam = 0x1F800000;
 
 u32 width_of(NativeOp op) {
   switch (op) {
-    case NativeOp::Lw: case NativeOp::Sw: return 4;
+    case NativeOp::Lw: case NativeOp::Sw: case NativeOp::Lwc2: case NativeOp::Swc2: return 4;
     case NativeOp::Lh: case NativeOp::Lhu: case NativeOp::Sh: return 2;
     default: return 1;
   }
@@ -32,13 +32,13 @@ u32 width_of(NativeOp op) {
 }  // namespace
 
 // r13d = the address (rs + offset). Before the instruction changes anything, whether its access
-// is one the native code makes: aligned (check_address), in kernel mode (user mode may raise an
-// address error), no DCIC data break armed, a store not into an isolated cache, no D-cache mode
+// is one the native code makes: aligned (check_address; LWL/LWR/SWL/SWR need not be), in kernel
+// mode (user mode may raise an address error), no DCIC data break armed, a store not into an isolated cache, no D-cache mode
 // (loads would fill the scratchpad), no memory watches on a store, and RAM or the scratchpad.
 void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   using namespace cpu_detail;
   const u32 width = width_of(op);
-  const bool store = is_store(op);
+  const bool store = is_store(op) || op == NativeOp::Swc2;
   mov(r13d, reg(rs(i)));
   if (simm(i) != 0) add(r13d, simm(i));
   if (width > 1) {
@@ -116,8 +116,9 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   add(rcx, lay.load_bus);
   mov(cpu64(lay.load_done_at), rcx);
   mov(cpu32(lay.shadow_reg), t);
+  const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // LWL/LWR read the word holding the address
   mov(ecx, r13d);
-  and_(ecx, kRamMask);
+  and_(ecx, kRamMask & word_mask);
   mov(rdx, reinterpret_cast<u64>(lay.ram));
   read_width(*this, op);
   jmp(done, T_NEAR);
@@ -128,10 +129,68 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   cmovb(rax, rcx);
   mov(now(), rax);
   mov(ecx, r13d);
-  and_(ecx, kScratchMask);
+  and_(ecx, kScratchMask & word_mask);
   mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
   read_width(*this, op);
   L(done);
+  if (is_unaligned(op)) merge_unaligned(op, t, pipe);
+}
+
+// CpuT::load_unaligned()'s merge of the word read (eax) into rt's value, which is the value of a
+// load to rt still in its delay slot (load_reg_ == rt: load_val_) rather than the register.
+// LWL puts the word's low (offset + 1) bytes in the top of rt, LWR its bytes from the offset on
+// in the bottom.
+void Impl::merge_unaligned(NativeOp op, u32 t, const Pipe& pipe) {
+  mov(edx, reg(t));
+  if (pipe.dynamic) {
+    cmp(cpu32(lay.load_reg), t);
+    cmove(edx, cpu32(lay.load_val));
+  } else if (pipe.after_load && pipe.load_reg == t) {
+    mov(edx, cpu32(lay.load_val));
+  }
+  mov(ecx, r13d);
+  and_(ecx, 3);
+  shl(ecx, 3);  // sh = offset * 8
+  if (op == NativeOp::Lwl) {  // (cur & (00FFFFFFh >> sh)) | (word << (24 - sh))
+    mov(r8d, 0x00FFFFFF);
+    shr(r8d, cl);
+    and_(edx, r8d);
+    neg(ecx);
+    add(ecx, 24);
+    shl(eax, cl);
+  } else {  // (cur & ~(FFFFFFFFh >> sh)) | (word >> sh)
+    mov(r8d, 0xFFFFFFFF);
+    shr(r8d, cl);
+    not_(r8d);
+    and_(edx, r8d);
+    shr(eax, cl);
+  }
+  or_(eax, edx);
+}
+
+// CpuT::store_unaligned()'s bytes, written into the word at [rdx + rcx] (rcx kept) from the
+// register's value (eax): SWL its top (offset + 1) bytes into the word's bytes 0..offset, SWR its
+// low (4 - offset) bytes into bytes offset..3. Host memory takes them as one word.
+static void store_unaligned(Impl& g, NativeOp op) {
+  g.mov(g.r8, g.rcx);
+  g.mov(g.ecx, g.r13d);
+  g.and_(g.ecx, 3);
+  g.shl(g.ecx, 3);  // offset * 8
+  g.mov(g.r9d, 0xFFFFFFFF);
+  if (op == NativeOp::Swl) {  // bytes 0..offset: mask FFFFFFFFh >> (24 - offset * 8)
+    g.neg(g.ecx);
+    g.add(g.ecx, 24);
+    g.shr(g.r9d, g.cl);
+    g.shr(g.eax, g.cl);
+  } else {  // bytes offset..3: mask FFFFFFFFh << (offset * 8)
+    g.shl(g.r9d, g.cl);
+    g.shl(g.eax, g.cl);
+  }
+  g.not_(g.r9d);
+  g.and_(g.r9d, g.dword[g.rdx + g.r8]);
+  g.or_(g.eax, g.r9d);
+  g.mov(g.dword[g.rdx + g.r8], g.eax);
+  g.mov(g.rcx, g.r8);
 }
 
 // CpuT::store() past its checks: Bus::write() to RAM, with CodePages::on_ram_write() called
@@ -139,14 +198,24 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
 void Impl::store(NativeOp op, u32 i) {
   const u32 width = width_of(op);
   Label scratchpad, done;
-  mov(eax, reg(cpu_detail::rt(i)));
+  const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // SWL/SWR write into the word holding the address
+  if (op == NativeOp::Swc2) {  // SWC2: the GTE register, once the GTE is done
+    wait_gte();
+    mov(rdi, reinterpret_cast<u64>(lay.gte));
+    mov(esi, cpu_detail::rt(i));
+    mov(rax, reinterpret_cast<u64>(lay.gte_read_data));
+    call(rax);
+  } else {
+    mov(eax, reg(cpu_detail::rt(i)));
+  }
   mov(ecx, r13d);
   test(r13d, kNotRam);
   jnz(scratchpad, T_NEAR);
-  and_(ecx, kRamMask);
+  and_(ecx, kRamMask & word_mask);
   const auto write = [&] {
     const Xbyak::RegExp at = rdx + rcx;
-    if (width == 4) mov(dword[at], eax);
+    if (is_unaligned(op)) store_unaligned(*this, op);
+    else if (width == 4) mov(dword[at], eax);
     else if (width == 2) mov(word[at], ax);
     else mov(byte[at], al);
   };
@@ -166,10 +235,39 @@ void Impl::store(NativeOp op, u32 i) {
   call(rax);
   jmp(done, T_NEAR);
   L(scratchpad);
-  and_(ecx, kScratchMask);
+  and_(ecx, kScratchMask & word_mask);
   mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
   write();
   L(done);
+}
+
+// LWC2 past its checks: wait_load() (the GTE load is not shadowed but waits its turn), Bus::read32
+// (RAM: kRamRead cycles; the scratchpad: none), wait_gte(), and the GTE register write.
+void Impl::lwc2(u32 i) {
+  Label scratchpad, read;
+  mov(rax, now());
+  mov(rcx, cpu64(lay.load_done_at));
+  cmp(rax, rcx);
+  cmovb(rax, rcx);
+  mov(ecx, r13d);
+  test(r13d, kNotRam);
+  jnz(scratchpad);
+  add(rax, lay.ram_read);
+  and_(ecx, kRamMask);
+  mov(rdx, reinterpret_cast<u64>(lay.ram));
+  jmp(read);
+  L(scratchpad);
+  and_(ecx, kScratchMask);
+  mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
+  L(read);
+  mov(now(), rax);
+  mov(r8d, dword[rdx + rcx]);
+  wait_gte();
+  mov(rdi, reinterpret_cast<u64>(lay.gte));
+  mov(esi, cpu_detail::rt(i));
+  mov(edx, r8d);
+  mov(rax, reinterpret_cast<u64>(lay.gte_write_data));
+  call(rax);
 }
 
 // MFHI/MFLO (eax, after wait_muldiv: time goes on to when a multiply or divide is done) and

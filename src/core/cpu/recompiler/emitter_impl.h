@@ -1,6 +1,8 @@
 // The code generator behind BlockEmitter (block_emitter.h), shared by its two sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
-// operations and branches) and block_emitter_memory.cpp (loads, stores, HI/LO). Only they
+// operations and branches), block_emitter_memory.cpp (loads, stores, HI/LO moves) and
+// block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
+// commands). Only they
 // include this header (and with it xbyak). Registers while a block runs: rbx = the context (the
 // CPU), r12 = the scheduler, r13d = a load's or store's address.
 #pragma once
@@ -46,8 +48,18 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Xbyak::Address now() { return qword[r12 + lay.now]; }
 
   static bool is_branch(NativeOp op) { return op >= NativeOp::Beq; }
-  static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lhu; }
-  static bool is_store(NativeOp op) { return op >= NativeOp::Sb && op <= NativeOp::Sw; }
+  static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lwr; }
+  static bool is_store(NativeOp op) { return op >= NativeOp::Sb && op <= NativeOp::Swr; }
+  static bool is_unaligned(NativeOp op) {
+    return op == NativeOp::Lwl || op == NativeOp::Lwr || op == NativeOp::Swl || op == NativeOp::Swr;
+  }
+  static bool is_cop2(NativeOp op) { return op >= NativeOp::Mfc2 && op <= NativeOp::Swc2; }
+  // The instructions that access memory (address_checks()).
+  static bool is_memory(NativeOp op) {
+    return is_load(op) || is_store(op) || op == NativeOp::Lwc2 || op == NativeOp::Swc2;
+  }
+  // Whether the instruction's result reaches rt after a load delay (delayed_load).
+  static bool is_delayed(NativeOp op) { return is_load(op) || op == NativeOp::Mfc2 || op == NativeOp::Cfc2; }
   static u32 dest(NativeOp op, u32 i);
 
   // block_emitter.cpp
@@ -58,15 +70,23 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void branch(NativeOp op, u32 pc, u32 i);
   void guard(std::span<const Step> run, Xbyak::Label& fail);
   void line_check(std::span<const Step> run, Xbyak::Label& fail);
-  void native(const Step& s, size_t k, bool last_in_block, bool after_branch, Segment& seg);
+  // Instruction k of a segment, rest[0], with the segment's instructions after it.
+  void native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void stall_stub(const Step& s, size_t k, Segment& seg);
   void chain();
   // block_emitter_memory.cpp
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
   void load(NativeOp op, u32 i, const Pipe& pipe);
+  void merge_unaligned(NativeOp op, u32 rt, const Pipe& pipe);
   void store(NativeOp op, u32 i);
+  void lwc2(u32 i);
   void hilo(NativeOp op, u32 i);
+  // block_emitter_muldiv.cpp
+  void muldiv(NativeOp op, u32 i);
+  // block_emitter_cop2.cpp
+  void wait_gte();
+  void cop2(NativeOp op, u32 i);
 };
 
 }  // namespace psx

@@ -9,7 +9,8 @@ namespace psx {
 
 // The instructions the recompiler knows by name (block_emitter.h NativeOp): the register-only
 // ALU operations, which touch neither memory nor coprocessors and raise no exception, HI/LO
-// moves, the loads and stores of a byte, halfword or word, and the branches and jumps; None for
+// moves, multiplies and divides, the GTE's register moves, loads, stores and commands, the loads and stores of
+// a byte, halfword or word (LWL/LWR/SWL/SWR included), and the branches and jumps; None for
 // everything else.
 template <class BusT>
 NativeOp RecompilerT<BusT>::decode_op(u32 i) {
@@ -20,10 +21,22 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
       NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
       NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
       NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None,
-      NativeOp::Lb, NativeOp::Lh, NativeOp::None, NativeOp::Lw, NativeOp::Lbu, NativeOp::Lhu,
-      NativeOp::None, NativeOp::None, NativeOp::Sb, NativeOp::Sh, NativeOp::None, NativeOp::Sw,
-      NativeOp::None, NativeOp::None, NativeOp::None, NativeOp::None};
+      NativeOp::Lb, NativeOp::Lh, NativeOp::Lwl, NativeOp::Lw, NativeOp::Lbu, NativeOp::Lhu,
+      NativeOp::Lwr, NativeOp::None, NativeOp::Sb, NativeOp::Sh, NativeOp::Swl, NativeOp::Sw,
+      NativeOp::None, NativeOp::None, NativeOp::Swr, NativeOp::None};
   const u32 op = i >> 26;
+  if (op == 0x12) {  // COP2: a command (imm25), or MFC2/CFC2/MTC2/CTC2 as execute_cop2() decodes them
+    if (i & (1u << 25)) return NativeOp::Gte;
+    switch (cpu_detail::rs(i)) {
+      case 0x00: return NativeOp::Mfc2;
+      case 0x02: return NativeOp::Cfc2;
+      case 0x04: return NativeOp::Mtc2;
+      case 0x06: return NativeOp::Ctc2;
+      default: return NativeOp::None;
+    }
+  }
+  if (op == 0x32) return NativeOp::Lwc2;
+  if (op == 0x3A) return NativeOp::Swc2;
   if (op == 0x01) {  // BcondZ as CpuT::execute_bcondz() decodes it: bit 16 (>= 0), bits 20-17 (link)
     const u32 r = cpu_detail::rt(i);
     const bool link = (r & 0x1E) == 0x10;
@@ -44,6 +57,10 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
     case 0x11: return NativeOp::Mthi;
     case 0x12: return NativeOp::Mflo;
     case 0x13: return NativeOp::Mtlo;
+    case 0x18: return NativeOp::Mult;
+    case 0x19: return NativeOp::Multu;
+    case 0x1A: return NativeOp::Div;
+    case 0x1B: return NativeOp::Divu;
     case 0x21: return NativeOp::Addu;
     case 0x23: return NativeOp::Subu;
     case 0x24: return NativeOp::And;
@@ -155,7 +172,8 @@ template <class BusT>
 BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   static_assert(sizeof(c.in_delay_slot_) == 1 && sizeof(c.next_in_delay_) == 1);
   static_assert(sizeof(c.instructions_) == 8 && sizeof(c.load_done_at_) == 8 && sizeof(Cycles) == 8);
-  static_assert(sizeof(c.muldiv_ready_at_) == 8 && sizeof(c.hi_) == 4 && sizeof(bool) == 1);
+  static_assert(sizeof(c.muldiv_ready_at_) == 8 && sizeof(c.gte_ready_at_) == 8);
+  static_assert(sizeof(c.hi_) == 4 && sizeof(bool) == 1);
   static_assert(sizeof(c.pc_) == 4 && sizeof(c.load_reg_) == 4 && sizeof(c.shadow_reg_) == 4);
   static_assert(sizeof(c.stop_) == 1 && sizeof(c.hook_armed_) == 1 && sizeof(c.idle_skip_) == 8);
   static_assert(sizeof(c.hooks_) == 8 && sizeof(c.hook_pc_) == 4 && sizeof(c.extra_hook_pc_) == 4);
@@ -189,6 +207,13 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.instructions = at(&c, &c.instructions_);
   l.load_done_at = at(&c, &c.load_done_at_);
   l.muldiv_ready_at = at(&c, &c.muldiv_ready_at_);
+  l.gte_ready_at = at(&c, &c.gte_ready_at_);
+  l.gte = &c.gte_;
+  l.gte_read_data = [](void* g, u32 r) { return static_cast<Gte*>(g)->read_data(r); };
+  l.gte_read_control = [](void* g, u32 r) { return static_cast<Gte*>(g)->read_control(r); };
+  l.gte_write_data = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_data(r, v); };
+  l.gte_write_control = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_control(r, v); };
+  l.gte_execute = [](void* g, u32 command) { return static_cast<Gte*>(g)->execute(command); };
   l.hi = at(&c, &c.hi_);
   l.lo = at(&c, &c.lo_);
   l.load_issue = int(Cpu::kLoadIssue);
@@ -199,9 +224,12 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.now = at(&c.sched_, c.sched_.now_cell());
   l.deadline = at(&c.sched_, c.sched_.deadline_cell());
   if constexpr (std::is_same_v<BusT, Bus>) {  // other buses compile no native steps
+    l.ram_read = int(BusT::kRamRead);
     l.irq_stat = c.irq_.stat_cell();
     l.irq_mask = c.irq_.mask_cell();
-    l.hot_lines = c.bus_.hot_lines();
+    l.icache_tags = c.bus_.icache().tags();
+    l.cache_control = c.bus_.cache_control_cell();
+    l.icache_enable = BusT::icache_enable_bit();
     l.icache_words = c.bus_.icache().words();
     l.ram = c.bus_.ram();
     l.scratchpad = c.bus_.scratchpad();

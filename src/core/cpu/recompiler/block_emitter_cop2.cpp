@@ -1,0 +1,53 @@
+// Native GTE instructions for compiled blocks (emitter_impl.h): CpuT::execute_cop2()'s register
+// moves MFC2/CFC2 (the value arrives after a load delay, as a load's does), MTC2/CTC2, and the
+// commands (imm25), each after wait_gte() (the CPU waits for the command in progress), calling
+// the GTE's own functions from the block without leaving it. A command's duration sets when the
+// GTE is next free. The segment's guard has checked SR.CU2 (else the instructions raise
+// Coprocessor Unusable through their call steps).
+#include "core/cpu/decode.h"
+#include "core/cpu/recompiler/emitter_impl.h"
+
+namespace psx {
+
+using Impl = BlockEmitter::Impl;
+
+// CpuT::wait_gte(): time goes on to when the GTE's command in progress ends.
+void Impl::wait_gte() {
+  mov(rax, now());
+  mov(rcx, cpu64(lay.gte_ready_at));
+  cmp(rax, rcx);
+  cmovb(rax, rcx);
+  mov(now(), rax);
+}
+
+// MFC2/CFC2 leave the value in eax (native() makes it the pending load).
+void Impl::cop2(NativeOp op, u32 i) {
+  using namespace cpu_detail;
+  wait_gte();
+  mov(rdi, reinterpret_cast<u64>(lay.gte));
+  switch (op) {
+    case NativeOp::Mfc2:
+    case NativeOp::Cfc2:
+      mov(esi, rd(i));
+      mov(rax, reinterpret_cast<u64>(op == NativeOp::Mfc2 ? lay.gte_read_data : lay.gte_read_control));
+      call(rax);
+      break;
+    case NativeOp::Mtc2:
+    case NativeOp::Ctc2:
+      mov(esi, rd(i));
+      mov(edx, reg(rt(i)));
+      mov(rax, reinterpret_cast<u64>(op == NativeOp::Mtc2 ? lay.gte_write_data : lay.gte_write_control));
+      call(rax);
+      break;
+    default:  // a command: the GTE is busy for the cycles it returns
+      mov(esi, i & 0x1FFFFFF);
+      mov(rax, reinterpret_cast<u64>(lay.gte_execute));
+      call(rax);
+      mov(eax, eax);
+      add(rax, now());
+      mov(cpu64(lay.gte_ready_at), rax);
+      break;
+  }
+}
+
+}  // namespace psx

@@ -92,14 +92,15 @@ u32 Spu::voices_needed() const {
   return (1u << 1) | (1u << 3) | (pitch_mod_ >> 1) | reverb_on_;
 }
 
-void Spu::generate_sample() {
+void Spu::generate_sample(u32 skip, u32 later) {
   apply_key_events();
   Mix mix;
   const bool enabled = (attr_ & kAttrEnable) != 0;
   const bool mixing = this->mixing();
   if (enabled) {
     const u32 needed = voices_needed();
-    for (u32 i = 0; i < kNumVoices; ++i) sample_voice(i, (needed >> i) & 1, mix);
+    for (u32 i = 0; i < kNumVoices; ++i)
+      if (!((skip >> i) & 1)) sample_voice(i, (needed >> i) & 1, mix);
     noise_.tick(attr_);
   }
   // "Mute SPU" silences the voices; CD audio does not care.

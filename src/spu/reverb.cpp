@@ -101,11 +101,25 @@ s16 Reverb::process_side(u32 side, s32 input, u8* ram, bool we, IrqWatch& irq) {
   return static_cast<s16>(out);
 }
 
-StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq) {
+void Reverb::push_input(s32 in_left, s32 in_right) {
   in_pos_ = (in_pos_ + 1) & (kRing - 1);
   in_history_[0][in_pos_] = static_cast<s16>(sat(in_left));
   in_history_[1][in_pos_] = static_cast<s16>(sat(in_right));
+}
 
+void Reverb::end_tick() {
+  if (phase_ == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
+  phase_ ^= 1;
+}
+
+void Reverb::skip_tick(s32 in_left, s32 in_right) {
+  push_input(in_left, in_right);
+  out_pos_[phase_] = (out_pos_[phase_] + 1) & (kRing - 1);
+  end_tick();
+}
+
+StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq) {
+  push_input(in_left, in_right);
   const u32 side = phase_;
   out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
   out_history_[side][out_pos_[side]] = process_side(side, downsample(side), ram, write_enable, irq);
@@ -115,8 +129,7 @@ StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable,
     out.left = static_cast<s16>(upsample(0, side == 0));
     out.right = static_cast<s16>(upsample(1, side == 1));
   }
-  if (side == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
-  phase_ ^= 1;
+  end_tick();
   return out;
 }
 

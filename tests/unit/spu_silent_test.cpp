@@ -18,6 +18,7 @@
 #include "spu_test_util.h"
 
 using namespace psx;
+using psx::test::SpuRig;
 using psx::test::write_test_volumes_and_reverb;
 
 namespace {
@@ -26,10 +27,11 @@ constexpr u32 kAttr = 0x1F801DAA, kIrqA = 0x1F801DA4, kEndx = 0x1F801D9C;
 constexpr u16 kAttrOn = 0xC000 | 0x3C00 | 0x0001;  // enable, unmute, noise clock, CD input
 constexpr u16 kAttrIrq = 0x0040, kAttrReverb = 0x0080;
 // Sound RAM layout (bytes): loops at 1000h, 2000h and 3000h, random blocks from 4000h to 8000h,
-// and random blocks in the reverb work area at ESA = F000h (78000h..7FFFFh).
+// and random blocks filling the reverb work area at ESA = FE00h (7F000h..7FFFFh), which the
+// short reverb delays of kTestReverbRegs read and write all over.
 constexpr u32 kLoop = 0x1000, kOneBlockLoop = 0x2000, kEndMute = 0x3000, kRandom = 0x4000, kRandomEnd = 0x8000;
-constexpr u16 kReverbBase = 0xF000;
-constexpr u32 kInReverbArea = 0x7C000;
+constexpr u16 kReverbBase = 0xFE00;
+constexpr u32 kInReverbArea = 0x7F000;
 
 struct Lcg {
   u32 x;
@@ -67,11 +69,12 @@ struct Rig {
       irq.write(0x0, ~(1u << static_cast<u32>(Irq::Spu)));  // acknowledge I_STAT bit 9
     }
   }
-  // Like the CPU: time moves in instruction-sized steps; due events run between steps.
+  // Like the CPU: time moves in instruction-sized steps, now and then a long stall (a DMA
+  // transfer), so that an event may run many samples late; due events run between steps.
   void run_for(Cycles n, Lcg& steps) {
     const Cycles end = sched.now() + n;
     while (sched.now() < end) {
-      sched.advance(1 + steps.next(40));
+      sched.advance(steps.next(500) == 0 ? 1 + steps.next(150000) : 1 + steps.next(40));
       if (sched.now() >= sched.next_deadline()) {
         sched.run_due_events();
         note_irq();
@@ -102,7 +105,7 @@ struct Rig {
 
 struct Workload {
   u16 irq_address;   // IRQA, 8-byte units
-  bool reverb;       // ATTR bit 7: the reverb writes its work area; EON on the playing voices
+  bool reverb;       // ATTR bit 7 at first (the reverb writes its work area); EON on voices 0, 7
   u32 seed;
 };
 
@@ -121,7 +124,7 @@ void fill_ram(Rig& r, u32 seed) {
     return static_cast<u8>(k < 11 ? 0 : k < 13 ? 4 : k < 15 ? 3 : 1);
   };
   for (u32 a = kRandom; a < kRandomEnd; a += 16) put_block(ram, a, random_flags(), rng);
-  for (u32 a = kInReverbArea; a < kInReverbArea + 0x800; a += 16) put_block(ram, a, random_flags(), rng);
+  for (u32 a = kInReverbArea; a < Spu::kRamSize; a += 16) put_block(ram, a, random_flags(), rng);
   // The rest of the capture area and the reverb area keep their contents: zeros, then whatever
   // the SPU writes there.
 }
@@ -155,7 +158,7 @@ void set_up(Rig& r, const Workload& w) {
   }
   r.w16(0x1F801D90, 0x0C06);  // PMON: voices 1, 2, 10, 11
   r.w16(0x1F801D94, 0x1030);  // NON: voices 4, 5, 12
-  r.w16(0x1F801D98, w.reverb ? 0x0081 : 0);  // EON: voices 0 and 7
+  r.w16(0x1F801D98, 0x0081);  // EON: voices 0 and 7
   r.w16(kIrqA, w.irq_address);
   r.w16(0x1F801DAC, 0x0004);  // capture-buffer writes check IRQA too
   r.w16(kAttr, kAttrOn | (w.reverb ? kAttrReverb : 0));
@@ -175,12 +178,14 @@ void operate(Rig& r, const Workload& w, Lcg& ops, Lcg& steps) {
     case 6: r.voice_w(v, 0x4, some_pitch(ops)); break;
     case 7: r.voice_w(v, ops.next(2) ? 0x6 : 0xE, static_cast<u16>(some_address(ops) / 8)); break;  // SSA/LSAX
     case 8: r.w16(ops.next(2) ? 0x1F801D90 : 0x1F801D94, static_cast<u16>(ops.next(0x10000))); break;  // PMON/NON
-    case 9: {  // IRQ9 on, acknowledged and on again, or off: the flag stays up until acknowledged
-      const u32 k = ops.next(4);
+    case 9: {  // IRQ9 on, acknowledged and on again, or off: the flag stays up until acknowledged;
+      // IRQA moved; reverb writes switched
+      const u32 k = ops.next(5);
       if (k == 0) r.w16(kAttr, base | kAttrIrq);
       if (k == 1) r.w16(kAttr, base), r.w16(kAttr, base | kAttrIrq);
       if (k == 2) r.w16(kAttr, base);
       if (k == 3) r.w16(kIrqA, ops.next(2) ? w.irq_address : static_cast<u16>(some_address(ops) / 8 + 2 * ops.next(4)));
+      if (k == 4) r.w16(kAttr, r.attr ^ kAttrReverb);
       break;
     }
     case 10: r.voice_w(v, 2 * ops.next(2), ops.next(4) == 0 ? 0xC07F : 0x3FFF); break;  // a sweep or fixed volume
@@ -248,8 +253,62 @@ TEST(SpuSilent, BatchesMatchPerSampleWithIrqInReverbArea) {
 }
 
 TEST(SpuSilent, BatchesMatchPerSampleOtherSeeds) {
-  for (u32 seed : {5u, 6u, 7u}) {
-    compare({static_cast<u16>(kRandom / 8 + 2 * seed), seed == 6, seed});
+  // IRQA in the work area while the reverb only reads it; on random blocks with and without
+  // reverb writes.
+  for (const Workload& w : {Workload{static_cast<u16>(kInReverbArea / 8 + 100), false, 5},
+                            Workload{static_cast<u16>(kRandom / 8 + 12), true, 6},
+                            Workload{static_cast<u16>(kRandom / 8 + 14), false, 7}}) {
+    compare(w);
     if (HasFatalFailure()) return;
+  }
+}
+
+namespace {
+
+// When I_STAT bit 9 is first seen: stepping sample by sample, except for one stall of `stall`
+// cycles after `before` samples (as a long DMA transfer stalls the CPU) followed by a SPUSTAT
+// read, which makes the stalled samples in one catch-up before the late event runs (inside its
+// callback an event makes only the samples due by its own turn). Every voice sits Off at level
+// 0 on block 0 (never keyed) at pitch 0, except voice 5 at 4000h (4 ADPCM samples per output
+// sample: a block every 7 samples, psx-spx "Pitch Counter"); IRQ9 is on, the capture buffers do
+// not check IRQA (RAM_CTRL 0) and the reverb, writes off, runs on the work area at ESA = FE00h
+// (halfwords 3F800h on) with all offsets 0: each tick it reads its buffer address, which moves
+// one halfword every second tick (psx-spx "SPU Reverb Formula").
+Cycles first_irq(u32 max_batch, u16 irq_address, u32 before, Cycles stall) {
+  SpuRig r;
+  r.spu.set_max_batch(max_batch);
+  r.spu.set_observed(false);
+  r.w16(0x1F801DA2, 0xFE00);
+  r.voice_w(5, 0x4, 0x4000);
+  r.w16(kIrqA, irq_address);
+  r.w16(kAttr, 0x8000 | kAttrIrq);
+  const u32 irq9 = 1u << static_cast<u32>(Irq::Spu);
+  for (u32 i = 0; i < 3000 && !(r.irq.stat() & irq9); ++i) {
+    if (i == before) {
+      r.sched.advance(stall);
+      r.r16(0x1F801DAE);
+      r.sched.run_due_events();
+      if (r.irq.stat() & irq9) break;
+    }
+    r.run_samples(1);
+  }
+  return (r.irq.stat() & irq9) ? r.sched.now() : 0;
+}
+
+}  // namespace
+
+TEST(SpuSilent, SilentVoiceAndUnheardReverbRaiseIrq9InALateCatchUp) {
+  // Voice 5 is in block k during samples 7k+1..7k+7 (sample k due at k * 768 cycles) and reads
+  // its header at IRQA = 220h (byte 1100h, block 272, past the capture buffers that the SPU
+  // writes) in sample 1905. The reverb's buffer address is halfword 3F800h + (t-1)/2 in tick t,
+  // in 8-byte unit FE0Ah from tick 81 on.
+  const u16 voice_block = 0x220, reverb_unit = 0xFE0A;
+  const Cycles stall = 400 * Spu::kCyclesPerSample;
+  for (u32 batch : {1u, Spu::kDefaultMaxBatch}) {
+    EXPECT_EQ(first_irq(batch, voice_block, 9999, 0), 1905u * Spu::kCyclesPerSample) << batch;
+    EXPECT_EQ(first_irq(batch, reverb_unit, 9999, 0), 81u * Spu::kCyclesPerSample) << batch;
+    // Samples 1801..2200 and 1..400 made in one catch-up: the hits raise IRQ9 at its end.
+    EXPECT_EQ(first_irq(batch, voice_block, 1800, stall), 2200u * Spu::kCyclesPerSample) << batch;
+    EXPECT_EQ(first_irq(batch, reverb_unit, 0, stall), 400u * Spu::kCyclesPerSample) << batch;
   }
 }

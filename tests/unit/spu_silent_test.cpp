@@ -188,7 +188,11 @@ void operate(Rig& r, const Workload& w, Lcg& ops, Lcg& steps) {
       if (k == 4) r.w16(kAttr, r.attr ^ kAttrReverb);
       break;
     }
-    case 10: r.voice_w(v, 2 * ops.next(2), ops.next(4) == 0 ? 0xC07F : 0x3FFF); break;  // a sweep or fixed volume
+    case 10: {  // a sweep (bit 15; bits 12-14 mode, direction, phase; bits 0-6 rate) or a fixed volume
+      const u16 sweep = static_cast<u16>(0x8000 | ops.next(8) << 12 | ops.next(0x7F));
+      r.voice_w(v, 2 * ops.next(2), ops.next(3) == 0 ? sweep : 0x3FFF);
+      break;
+    }
     case 11: {  // the host changes a block some voice may read
       Lcg rng{ops.next(1000)};
       put_block(r.spu.ram(), some_address(ops), static_cast<u8>(ops.next(8)), rng);

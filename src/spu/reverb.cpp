@@ -49,7 +49,8 @@ void Reverb::write(u32 hw, s32 value, u8* ram, bool write_enable, IrqWatch& irq)
 }
 
 s32 Reverb::downsample(u32 side) const {
-  // Only the even taps and the centre one are nonzero.
+  // Only the even taps and the centre one are nonzero; they reach 38 inputs back.
+  if (zero_inputs_ >= 39) return 0;
   const auto& h = in_history_[side];
   s32 sum = kFir[19] * h[(in_pos_ - 19) & (kRing - 1)];
   for (u32 k = 0; k < 39; k += 2) sum += kFir[k] * h[(in_pos_ - k) & (kRing - 1)];
@@ -105,6 +106,7 @@ void Reverb::push_input(s32 in_left, s32 in_right) {
   in_pos_ = (in_pos_ + 1) & (kRing - 1);
   in_history_[0][in_pos_] = static_cast<s16>(sat(in_left));
   in_history_[1][in_pos_] = static_cast<s16>(sat(in_right));
+  zero_inputs_ = (in_left == 0 && in_right == 0) ? std::min(zero_inputs_ + 1, kRing) : 0;
 }
 
 void Reverb::end_tick() {
@@ -142,6 +144,7 @@ void Reverb::do_state(StateIO& s) {
   s.pod(out_pos_);
   s.pod(in_history_);
   s.pod(out_history_);
+  if (s.loading()) zero_inputs_ = 0;
   if (s.loading() && (current_ > 0x3FFFF || phase_ > 1 || in_pos_ >= kRing || out_pos_[0] >= kRing || out_pos_[1] >= kRing))
     s.fail("reverb state out of range");
 }

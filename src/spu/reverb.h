@@ -66,6 +66,9 @@ class Reverb {
   std::array<u32, 2> out_pos_{};  // newest 22.05 kHz output of each side
   std::array<std::array<s16, kRing>, 2> in_history_{};   // 44.1 kHz inputs
   std::array<std::array<s16, kRing>, 2> out_history_{};  // 22.05 kHz outputs
+  // Consecutive ticks whose inputs were both 0 (up to kRing; not state: a load restarts it at 0).
+  // From 39 on, every tap downsample() reads is 0.
+  u32 zero_inputs_ = 0;
 };
 
 }  // namespace psx::spu

@@ -172,7 +172,8 @@ class Spu final : public IoDevice, public DmaPort {
   void book();
 
   // Sample generation (spu_mixer.cpp). Voices in `skip` were already stepped through this
-  // sample (step_silent_voices); `later` samples follow in the same catch-up.
+  // sample (step_silent_voices); `later` samples follow in the same catch-up (0 where nothing
+  // may be left out).
   void generate_sample(u32 skip, u32 later);
   void apply_key_events();
   struct Mix {

@@ -3,6 +3,7 @@
 // 4 KiB of sound RAM, reverb, the main volume, and the 44.1 kHz stereo output. The mix and the
 // output are made only while something hears them (set_observed); the rest runs every sample.
 #include <algorithm>
+#include <bit>
 
 #include "spu/spu.h"
 
@@ -99,8 +100,11 @@ void Spu::generate_sample(u32 skip, u32 later) {
   const bool mixing = this->mixing();
   if (enabled) {
     const u32 needed = voices_needed();
-    for (u32 i = 0; i < kNumVoices; ++i)
-      if (!((skip >> i) & 1)) sample_voice(i, (needed >> i) & 1, mix);
+    // Lowest voice first (pitch modulation reads the previous voice's output of this sample).
+    for (u32 left = ((1u << kNumVoices) - 1) & ~skip; left != 0; left &= left - 1) {
+      const u32 i = static_cast<u32>(std::countr_zero(left));
+      sample_voice(i, (needed >> i) & 1, mix);
+    }
     noise_.tick(attr_);
   }
   // "Mute SPU" silences the voices; CD audio does not care.

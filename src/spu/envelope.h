@@ -79,6 +79,8 @@ class VolumeSweep {
   }
   s16 level() const { return level_; }
   void set_level(s16 v) { level_ = v; }
+  // A fixed volume already latched: tick() changes nothing.
+  bool latched() const { return !(reg_ & 0x8000) && level_ == static_cast<s16>(reg_ << 1); }
 
   void do_state(StateIO& s);
 

@@ -49,7 +49,8 @@ void Reverb::write(u32 hw, s32 value, u8* ram, bool write_enable, IrqWatch& irq)
 }
 
 s32 Reverb::downsample(u32 side) const {
-  // Only the even taps and the centre one are nonzero.
+  // Only the even taps and the centre one are nonzero; they reach 38 inputs back.
+  if (zero_inputs_ >= 39) return 0;
   const auto& h = in_history_[side];
   s32 sum = kFir[19] * h[(in_pos_ - 19) & (kRing - 1)];
   for (u32 k = 0; k < 39; k += 2) sum += kFir[k] * h[(in_pos_ - k) & (kRing - 1)];
@@ -101,11 +102,26 @@ s16 Reverb::process_side(u32 side, s32 input, u8* ram, bool we, IrqWatch& irq) {
   return static_cast<s16>(out);
 }
 
-StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq) {
+void Reverb::push_input(s32 in_left, s32 in_right) {
   in_pos_ = (in_pos_ + 1) & (kRing - 1);
   in_history_[0][in_pos_] = static_cast<s16>(sat(in_left));
   in_history_[1][in_pos_] = static_cast<s16>(sat(in_right));
+  zero_inputs_ = (in_left == 0 && in_right == 0) ? std::min(zero_inputs_ + 1, kRing) : 0;
+}
 
+void Reverb::end_tick() {
+  if (phase_ == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
+  phase_ ^= 1;
+}
+
+void Reverb::skip_tick(s32 in_left, s32 in_right) {
+  push_input(in_left, in_right);
+  out_pos_[phase_] = (out_pos_[phase_] + 1) & (kRing - 1);
+  end_tick();
+}
+
+StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq) {
+  push_input(in_left, in_right);
   const u32 side = phase_;
   out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
   out_history_[side][out_pos_[side]] = process_side(side, downsample(side), ram, write_enable, irq);
@@ -115,8 +131,7 @@ StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable,
     out.left = static_cast<s16>(upsample(0, side == 0));
     out.right = static_cast<s16>(upsample(1, side == 1));
   }
-  if (side == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
-  phase_ ^= 1;
+  end_tick();
   return out;
 }
 
@@ -129,6 +144,7 @@ void Reverb::do_state(StateIO& s) {
   s.pod(out_pos_);
   s.pod(in_history_);
   s.pod(out_history_);
+  if (s.loading()) zero_inputs_ = 0;
   if (s.loading() && (current_ > 0x3FFFF || phase_ > 1 || in_pos_ >= kRing || out_pos_[0] >= kRing || out_pos_[1] >= kRing))
     s.fail("reverb state out of range");
 }

@@ -37,11 +37,21 @@ class Reverb {
   // otherwise: the output filter holds no state of its own). Writes to the work area only when
   // `write_enable` (ATTR bit 7); reads always happen.
   StereoSample tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq);
+  // A tick whose 22.05 kHz value nobody reads: it is overwritten in the output history
+  // (kRing entries per side, one side a tick) kTicksToOverwrite ticks later, before any read.
+  // Valid only when the tick has no other effect: no work-area writes (ATTR bit 7 clear), no
+  // IRQ9 possible from its reads, no output wanted meanwhile. Then only the input history and
+  // the positions move.
+  static constexpr u32 kTicksToOverwrite = 128;
+  void skip_tick(s32 in_left, s32 in_right);
 
   void do_state(StateIO& s);
 
  private:
   static constexpr u32 kRing = 64;
+  static_assert(kTicksToOverwrite == 2 * kRing);
+  void push_input(s32 in_left, s32 in_right);
+  void end_tick();
   s16 process_side(u32 side, s32 input, u8* ram, bool write_enable, IrqWatch& irq);
   u32 address(s32 rel_halfwords) const;
   s16 read(u32 halfword, const u8* ram, IrqWatch& irq) const;
@@ -56,6 +66,9 @@ class Reverb {
   std::array<u32, 2> out_pos_{};  // newest 22.05 kHz output of each side
   std::array<std::array<s16, kRing>, 2> in_history_{};   // 44.1 kHz inputs
   std::array<std::array<s16, kRing>, 2> out_history_{};  // 22.05 kHz outputs
+  // Consecutive ticks whose inputs were both 0 (up to kRing; not state: a load restarts it at 0).
+  // From 39 on, every tap downsample() reads is 0.
+  u32 zero_inputs_ = 0;
 };
 
 }  // namespace psx::spu

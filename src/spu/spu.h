@@ -160,6 +160,9 @@ class Spu final : public IoDevice, public DmaPort {
   // Lazy generation (spu.cpp). next_sample_ is when the first sample not yet made is due.
   void on_sample();
   void catch_up(Cycles horizon);
+  // Steps the silent voices (Voice::silent) through the `samples` samples after the one just
+  // made, where that is exact; returns them (bit mask) for the sample-by-sample loop to skip.
+  u32 step_silent_voices(u32 samples);
   // Whether a sample could raise IRQ9: both enables set and the flag not already up (a raised
   // flag stays until ATTR acknowledges it, so further hits change nothing).
   bool irq_possible() const {
@@ -168,8 +171,10 @@ class Spu final : public IoDevice, public DmaPort {
   Cycles next_booking() const;
   void book();
 
-  // Sample generation (spu_mixer.cpp).
-  void generate_sample();
+  // Sample generation (spu_mixer.cpp). Voices in `skip` were already stepped through this
+  // sample (step_silent_voices); `later` samples follow in the same catch-up (0 where nothing
+  // may be left out).
+  void generate_sample(u32 skip, u32 later);
   void apply_key_events();
   struct Mix {
     s32 left = 0, right = 0, reverb_left = 0, reverb_right = 0;

@@ -55,6 +55,31 @@ Voice::BlockEvent Voice::advance(u32 step, bool noise) {
   return BlockEvent::LoopEnd;
 }
 
+bool Voice::step_silent(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end) {
+  // psx-spx "SPU ADPCM Pitch": the counter moves by `step` each sample and a block is left when
+  // bits 12+ reach 28, so the crossings fall every ceil(remaining / step) samples.
+  constexpr u32 kBlockEnd = kAdpcmBlockSamples << 12;
+  u32 done = 0;  // samples stepped so far
+  while (true) {
+    if (!has_block_) {
+      const u32 addr = (current_address_ * 8u) & 0x7FFFF;
+      // The first read sees the RAM of the run's first sample; later ones must not be written.
+      if (done > 0 && (addr < unwritten.begin || addr + kAdpcmBlockBytes > unwritten.end)) return false;
+      fetch_block(ram);
+    }
+    const u32 left = samples - done;
+    const u32 to_cross = step == 0 ? left + 1 : (kBlockEnd - counter_ + step - 1) / step;
+    if (to_cross > left) {
+      counter_ += left * step;  // stays inside the block
+      return true;
+    }
+    // counter_ + to_cross * step < kBlockEnd + step: advance() leaves the block exactly once.
+    if (advance(to_cross * step, noise) == BlockEvent::LoopEnd) loop_end = true;
+    done += to_cross;
+    if (done == samples) return true;
+  }
+}
+
 void Voice::do_state(StateIO& s, bool with_output) {
   volume_left.do_state(s);
   volume_right.do_state(s);

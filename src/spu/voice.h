@@ -41,6 +41,23 @@ class Voice {
   // the voice unless it plays noise (the ADPCM flags still advance then).
   BlockEvent advance(u32 step, bool noise);
 
+  // Silent: the envelope Off at level 0 (its tick does nothing, the output is 0) and both volumes
+  // fixed and latched (their ticks change nothing). Such a voice only moves its pitch counter.
+  bool silent() const {
+    return adsr.phase() == Adsr::Phase::Off && adsr.level() == 0 && volume_left.latched() && volume_right.latched();
+  }
+  // Sound RAM the SPU itself does not write during a run of samples (byte range [begin, end)).
+  struct RamWindow {
+    u32 begin = 0, end = 0;
+  };
+  // Steps a silent voice over `samples` (>= 1) samples at a constant, already clipped `step`,
+  // crossing by crossing instead of sample by sample: each block crossed into is decoded as the
+  // sample-by-sample loop would (the ADPCM history and LSAX stay exact), LoopEnd jumps and sets
+  // `loop_end`. Blocks are read from `ram` as it is at the run's first sample; one read later
+  // that lies outside `unwritten` could have changed in between: then it returns false and the
+  // voice is left half-stepped (the caller restores it and steps it sample by sample).
+  bool step_silent(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end);
+
   u16 current_address() const { return current_address_; }
   // Byte address of the halfword holding the current sample (for the IRQ address check).
   u32 data_address() const { return current_address_ * 8u + 2 + ((counter_ >> 12) / 4) * 2; }

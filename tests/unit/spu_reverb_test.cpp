@@ -2,6 +2,7 @@
 // write, the all-pass read path with the FIR up-sampler, and the work-area wrap.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "spu/reverb.h"
@@ -73,4 +74,29 @@ TEST(SpuReverb, IrqWatchSeesWorkAreaAccesses) {
   Reverb::IrqWatch irq{true, 0xF000 + 0x10, false};
   rv.tick(0, 0, ram.data(), false, true, irq);
   EXPECT_TRUE(irq.hit);
+}
+
+TEST(SpuReverb, InputFilterReachesBack38Inputs) {
+  // psx-spx "Reverb Buffer Resampling": the 39-tap filter's outermost tap is -0001h, 38 inputs
+  // back. An impulse of 4000h on the left input in tick 1 (the left side runs on odd ticks)
+  // reaches the left 22.05 kHz input in tick 39 as (4000h * -1) >> 15 = -1 and is gone by tick
+  // 41. With vLIN = vIIR = 7FFFh and an empty work area, the same-side reflection writes
+  // [mLSAME] = (Lin * vLIN) * vIIR = -1 there (>> 15 floors: -7FFFh >> 15 = -1), else 0. The
+  // buffer address in tick t is the base + (t-1)/2 halfwords.
+  std::vector<u8> ram(512 * 1024, 0);
+  Reverb rv;
+  rv.write_base(0xF000);
+  const u32 base = 0xF000 * 4;
+  rv.regs[Reverb::vLIN] = rv.regs[Reverb::vIIR] = 0x7FFF;
+  rv.regs[Reverb::mLSAME] = 0x10;  // 40h halfwords on
+  Reverb::IrqWatch irq;
+  s16 written[2] = {};
+  for (u32 t = 1; t <= 41; ++t) {
+    if (t == 39 || t == 41) std::fill(ram.begin(), ram.end(), 0);  // the earlier ticks' writes
+    rv.tick(t == 1 ? 0x4000 : 0, 0, ram.data(), true, false, irq);
+    if (t == 39) written[0] = get(ram, base + 19 + 0x40);
+    if (t == 41) written[1] = get(ram, base + 20 + 0x40);
+  }
+  EXPECT_EQ(written[0], -1);
+  EXPECT_EQ(written[1], 0);
 }

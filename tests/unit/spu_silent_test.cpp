@@ -1,0 +1,318 @@
+// Silent voices stepped a batch at a time (Spu::step_silent_voices, Voice::step_silent) and reverb
+// ticks whose value is overwritten unread (Reverb::skip_tick) must leave the SPU exactly as the
+// per-sample reference (max batch 1) does: the same save-state bytes (sound RAM, voices with
+// their ADPCM history, LSAX, ENDX, reverb histories), the same register reads, IRQ9 at the same
+// cycles, and the same output samples where the SPU is observed. The workloads have voices that
+// are Off at level 0 while their pitch counters cross blocks with LoopStart, LoopEnd and Repeat
+// flags (psx-spx "SPU ADPCM Samples"), pitches from 0 to above 4000h (clipped, psx-spx "Pitch
+// Counter"), blocks in the capture buffers (0..FFFh, written every sample) and in a reverb work
+// area that ATTR bit 7 lets the reverb write, ENVX written on Off voices (their ADPCM history is
+// heard then), PMON and NON on silent voices, key events at any cycle, and IRQA on the blocks
+// silent voices cross, with IRQ9 enabled and with its flag left up.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spu_test_util.h"
+
+using namespace psx;
+using psx::test::SpuRig;
+using psx::test::write_test_volumes_and_reverb;
+
+namespace {
+
+constexpr u32 kAttr = 0x1F801DAA, kIrqA = 0x1F801DA4, kEndx = 0x1F801D9C;
+constexpr u16 kAttrOn = 0xC000 | 0x3C00 | 0x0001;  // enable, unmute, noise clock, CD input
+constexpr u16 kAttrIrq = 0x0040, kAttrReverb = 0x0080;
+// Sound RAM layout (bytes): loops at 1000h, 2000h and 3000h, random blocks from 4000h to 8000h,
+// and random blocks filling the reverb work area at ESA = FE00h (7F000h..7FFFFh), which the
+// short reverb delays of kTestReverbRegs read and write all over.
+constexpr u32 kLoop = 0x1000, kOneBlockLoop = 0x2000, kEndMute = 0x3000, kRandom = 0x4000, kRandomEnd = 0x8000;
+constexpr u16 kReverbBase = 0xFE00;
+constexpr u32 kInReverbArea = 0x7F000;
+
+struct Lcg {
+  u32 x;
+  u32 next(u32 n) {
+    x = x * 1664525u + 1013904223u;
+    return (x >> 8) % n;
+  }
+};
+
+// One ADPCM block (psx-spx "SPU ADPCM Samples"): shift 0..12 and filter 0..4 in byte 0, the
+// flags in byte 1, 28 random nibbles.
+void put_block(u8* ram, u32 addr, u8 flags, Lcg& rng) {
+  ram[addr] = static_cast<u8>(rng.next(13) | rng.next(5) << 4);
+  ram[addr + 1] = flags;
+  for (u32 i = 2; i < 16; ++i) ram[addr + i] = static_cast<u8>(rng.next(256));
+}
+
+struct Rig {
+  Scheduler sched;
+  InterruptController irq;
+  AudioFifo cd;
+  Spu spu{sched, irq, cd};
+  std::vector<Cycles> irq_times;
+  std::vector<u32> reads;
+  std::vector<StereoSample> out;
+  u16 attr = 0;
+
+  Rig(u32 max_batch, bool observed) {
+    spu.set_max_batch(max_batch);
+    spu.set_observed(observed);
+  }
+  void note_irq() {
+    if (irq.stat() & (1u << static_cast<u32>(Irq::Spu))) {
+      irq_times.push_back(sched.now());
+      irq.write(0x0, ~(1u << static_cast<u32>(Irq::Spu)));  // acknowledge I_STAT bit 9
+    }
+  }
+  // Like the CPU: time moves in instruction-sized steps, now and then a long stall (a DMA
+  // transfer), so that an event may run many samples late; due events run between steps.
+  void run_for(Cycles n, Lcg& steps) {
+    const Cycles end = sched.now() + n;
+    while (sched.now() < end) {
+      sched.advance(steps.next(500) == 0 ? 1 + steps.next(150000) : 1 + steps.next(40));
+      if (sched.now() >= sched.next_deadline()) {
+        sched.run_due_events();
+        note_irq();
+      }
+    }
+  }
+  void w16(u32 addr, u16 v) {
+    if (addr == kAttr) attr = v;
+    spu.io_write(addr - Spu::kBase, v, 2);
+    note_irq();
+  }
+  void r16(u32 addr) {
+    reads.push_back(spu.io_read(addr - Spu::kBase, 2));
+    note_irq();
+  }
+  void voice_w(u32 v, u32 reg, u16 value) { w16(0x1F801C00 + v * 0x10 + reg, value); }
+  std::vector<u8> state() {
+    StateIO w;
+    spu.do_state(w);
+    return w.buffer();
+  }
+  void take() {
+    std::vector<StereoSample> v;
+    spu.take_samples(v);
+    out.insert(out.end(), v.begin(), v.end());
+  }
+};
+
+struct Workload {
+  u16 irq_address;   // IRQA, 8-byte units
+  bool reverb;       // ATTR bit 7 at first (the reverb writes its work area); EON on voices 0, 7
+  u32 seed;
+};
+
+void fill_ram(Rig& r, u32 seed) {
+  Lcg rng{seed};
+  u8* ram = r.spu.ram();
+  // Four blocks: LoopStart, two plain, LoopEnd+Repeat (back to the first).
+  const u8 loop_flags[4] = {4, 0, 0, 3};
+  for (u32 b = 0; b < 4; ++b) put_block(ram, kLoop + 16 * b, loop_flags[b], rng);
+  put_block(ram, kOneBlockLoop, 7, rng);  // LoopStart+LoopEnd+Repeat on itself
+  // Two plain blocks and LoopEnd without Repeat: End+Mute, then on at LSAX.
+  for (u32 b = 0; b < 3; ++b) put_block(ram, kEndMute + 16 * b, b == 2 ? 1 : 0, rng);
+  // Mostly plain blocks, some LoopStart, some LoopEnd with or without Repeat.
+  auto random_flags = [&] {
+    const u32 k = rng.next(16);
+    return static_cast<u8>(k < 11 ? 0 : k < 13 ? 4 : k < 15 ? 3 : 1);
+  };
+  for (u32 a = kRandom; a < kRandomEnd; a += 16) put_block(ram, a, random_flags(), rng);
+  for (u32 a = kInReverbArea; a < Spu::kRamSize; a += 16) put_block(ram, a, random_flags(), rng);
+  // The rest of the capture area and the reverb area keep their contents: zeros, then whatever
+  // the SPU writes there.
+}
+
+u32 some_address(Lcg& ops) {
+  const u32 where[] = {0x0000, 0x0400, 0x0F80, kLoop, kOneBlockLoop, kEndMute, kInReverbArea, kInReverbArea + 0x400};
+  const u32 k = ops.next(11);
+  return k < 8 ? where[k] : kRandom + 16 * ops.next((kRandomEnd - kRandom) / 16);
+}
+
+u16 some_pitch(Lcg& ops) {
+  const u16 pitches[] = {0, 1, 0x10, 0x0123, 0x0800, 0x1000, 0x3FFF, 0x4000, 0xFFFF};
+  const u32 k = ops.next(11);
+  return k < 9 ? pitches[k] : static_cast<u16>(ops.next(0x10000));
+}
+
+void set_up(Rig& r, const Workload& w) {
+  fill_ram(r, w.seed);
+  write_test_volumes_and_reverb(r);
+  r.w16(0x1F801DA2, kReverbBase);
+  Lcg ops{w.seed * 3 + 1};
+  // Every voice starts somewhere; none is keyed yet, so all are Off at level 0 and walk from
+  // address 0 (the capture buffers) at their pitch until keyed.
+  for (u32 v = 0; v < Spu::kNumVoices; ++v) {
+    r.voice_w(v, 0x0, 0x3FFF);
+    r.voice_w(v, 0x2, 0x2000);
+    r.voice_w(v, 0x4, some_pitch(ops));
+    r.voice_w(v, 0x6, static_cast<u16>(some_address(ops) / 8));
+    r.voice_w(v, 0x8, 0x00FF);                           // fast attack, sustain level max
+    r.voice_w(v, 0xA, v % 3 == 0 ? 0x1FC0 : 0x0000);     // slow or instant release
+  }
+  r.w16(0x1F801D90, 0x0C06);  // PMON: voices 1, 2, 10, 11
+  r.w16(0x1F801D94, 0x1030);  // NON: voices 4, 5, 12
+  r.w16(0x1F801D98, 0x0081);  // EON: voices 0 and 7
+  r.w16(kIrqA, w.irq_address);
+  r.w16(0x1F801DAC, 0x0004);  // capture-buffer writes check IRQA too
+  r.w16(kAttr, kAttrOn | (w.reverb ? kAttrReverb : 0));
+}
+
+// One step: time passes, then one register access or RAM change.
+void operate(Rig& r, const Workload& w, Lcg& ops, Lcg& steps) {
+  r.run_for(1 + ops.next(ops.next(4) == 0 ? 400000 : 20000), steps);
+  const u32 v = ops.next(Spu::kNumVoices);
+  const u16 base = r.attr & ~kAttrIrq;
+  switch (ops.next(14)) {
+    case 0: case 1: r.w16(0x1F801D88 + 2 * (v / 16), static_cast<u16>(1u << (v % 16))); break;  // KON
+    case 2: case 3: r.w16(0x1F801D8C + 2 * (v / 16), static_cast<u16>(1u << (v % 16))); break;  // KOFF
+    case 4: r.r16(kEndx), r.r16(kEndx + 2); break;
+    // ENVX of a voice: heard from the next sample on (an Off voice stays at it), or back to 0.
+    case 5: r.voice_w(v, 0xC, ops.next(2) ? 0 : static_cast<u16>(ops.next(0x8000))); break;
+    case 6: r.voice_w(v, 0x4, some_pitch(ops)); break;
+    case 7: r.voice_w(v, ops.next(2) ? 0x6 : 0xE, static_cast<u16>(some_address(ops) / 8)); break;  // SSA/LSAX
+    case 8: r.w16(ops.next(2) ? 0x1F801D90 : 0x1F801D94, static_cast<u16>(ops.next(0x10000))); break;  // PMON/NON
+    case 9: {  // IRQ9 on, acknowledged and on again, or off: the flag stays up until acknowledged;
+      // IRQA moved; reverb writes switched
+      const u32 k = ops.next(5);
+      if (k == 0) r.w16(kAttr, base | kAttrIrq);
+      if (k == 1) r.w16(kAttr, base), r.w16(kAttr, base | kAttrIrq);
+      if (k == 2) r.w16(kAttr, base);
+      if (k == 3) r.w16(kIrqA, ops.next(2) ? w.irq_address : static_cast<u16>(some_address(ops) / 8 + 2 * ops.next(4)));
+      if (k == 4) r.w16(kAttr, r.attr ^ kAttrReverb);
+      break;
+    }
+    case 10: {  // a sweep (bit 15; bits 12-14 mode, direction, phase; bits 0-6 rate) or a fixed volume
+      const u16 sweep = static_cast<u16>(0x8000 | ops.next(8) << 12 | ops.next(0x7F));
+      r.voice_w(v, 2 * ops.next(2), ops.next(3) == 0 ? sweep : 0x3FFF);
+      break;
+    }
+    case 11: {  // the host changes a block some voice may read
+      Lcg rng{ops.next(1000)};
+      put_block(r.spu.ram(), some_address(ops), static_cast<u8>(ops.next(8)), rng);
+      break;
+    }
+    case 12: r.take(); break;
+    default: r.r16(0x1F801C0C + 0x10 * v); break;  // ENVX
+  }
+}
+
+void expect_same(Rig& a, Rig& b, bool outputs, const std::string& what) {
+  ASSERT_EQ(a.state(), b.state()) << what;
+  ASSERT_EQ(a.reads, b.reads) << what;
+  ASSERT_EQ(a.irq_times, b.irq_times) << what;
+  if (!outputs) return;
+  a.take();
+  b.take();
+  ASSERT_EQ(a.out.size(), b.out.size()) << what;
+  for (size_t i = 0; i < a.out.size(); ++i)
+    ASSERT_TRUE(a.out[i].left == b.out[i].left && a.out[i].right == b.out[i].right) << what << " sample " << i;
+}
+
+// The workload on the reference (max batch 1, observed), on batching SPUs observed and not, and
+// on a per-sample one not observed; all compared every 50 steps. Returns the IRQ9 count.
+size_t compare(const Workload& w) {
+  std::vector<std::unique_ptr<Rig>> rigs;
+  rigs.push_back(std::make_unique<Rig>(1, true));
+  rigs.push_back(std::make_unique<Rig>(Spu::kDefaultMaxBatch, true));
+  rigs.push_back(std::make_unique<Rig>(Spu::kDefaultMaxBatch, false));
+  rigs.push_back(std::make_unique<Rig>(1, false));
+  for (auto& r : rigs) set_up(*r, w);
+  std::vector<Lcg> ops(rigs.size(), Lcg{w.seed}), steps(rigs.size(), Lcg{w.seed * 7 + 3});
+  for (u32 round = 0; round < 12; ++round) {
+    for (size_t i = 0; i < rigs.size(); ++i)
+      for (u32 k = 0; k < 50; ++k) operate(*rigs[i], w, ops[i], steps[i]);
+    for (size_t i = 1; i < rigs.size(); ++i) {
+      expect_same(*rigs[0], *rigs[i], i == 1, "rig " + std::to_string(i) + " round " + std::to_string(round));
+      if (::testing::Test::HasFatalFailure()) return 0;
+    }
+  }
+  return rigs[0]->irq_times.size();
+}
+
+}  // namespace
+
+TEST(SpuSilent, BatchesMatchPerSampleWithIrqOnLoopBlocks) {
+  // IRQA on the second block of the four-block loop, which silent voices cross again and again.
+  EXPECT_GE(compare({static_cast<u16>(kLoop / 8 + 2), false, 1}), 5u);
+}
+
+TEST(SpuSilent, BatchesMatchPerSampleWithIrqInCaptureBuffers) {
+  EXPECT_GE(compare({static_cast<u16>(0x0400 / 8 + 16), false, 2}), 5u);
+}
+
+TEST(SpuSilent, BatchesMatchPerSampleWithReverbWritingBlocksVoicesRead) {
+  // ATTR bit 7 set: the reverb writes the work area that holds some voices' blocks.
+  compare({static_cast<u16>(kRandom / 8 + 40), true, 3});
+}
+
+TEST(SpuSilent, BatchesMatchPerSampleWithIrqInReverbArea) {
+  compare({static_cast<u16>(kInReverbArea / 8 + 6), true, 4});
+}
+
+TEST(SpuSilent, BatchesMatchPerSampleOtherSeeds) {
+  // IRQA in the work area while the reverb only reads it; on random blocks with and without
+  // reverb writes.
+  for (const Workload& w : {Workload{static_cast<u16>(kInReverbArea / 8 + 100), false, 5},
+                            Workload{static_cast<u16>(kRandom / 8 + 12), true, 6},
+                            Workload{static_cast<u16>(kRandom / 8 + 14), false, 7}}) {
+    compare(w);
+    if (HasFatalFailure()) return;
+  }
+}
+
+namespace {
+
+// When I_STAT bit 9 is first seen: stepping sample by sample, except for one stall of `stall`
+// cycles after `before` samples (as a long DMA transfer stalls the CPU) followed by a SPUSTAT
+// read, which makes the stalled samples in one catch-up before the late event runs (inside its
+// callback an event makes only the samples due by its own turn). Every voice sits Off at level
+// 0 on block 0 (never keyed) at pitch 0, except voice 5 at 4000h (4 ADPCM samples per output
+// sample: a block every 7 samples, psx-spx "Pitch Counter"); IRQ9 is on, the capture buffers do
+// not check IRQA (RAM_CTRL 0) and the reverb, writes off, runs on the work area at ESA = FE00h
+// (halfwords 3F800h on) with all offsets 0: each tick it reads its buffer address, which moves
+// one halfword every second tick (psx-spx "SPU Reverb Formula").
+Cycles first_irq(u32 max_batch, u16 irq_address, u32 before, Cycles stall) {
+  SpuRig r;
+  r.spu.set_max_batch(max_batch);
+  r.spu.set_observed(false);
+  r.w16(0x1F801DA2, 0xFE00);
+  r.voice_w(5, 0x4, 0x4000);
+  r.w16(kIrqA, irq_address);
+  r.w16(kAttr, 0x8000 | kAttrIrq);
+  const u32 irq9 = 1u << static_cast<u32>(Irq::Spu);
+  for (u32 i = 0; i < 3000 && !(r.irq.stat() & irq9); ++i) {
+    if (i == before) {
+      r.sched.advance(stall);
+      r.r16(0x1F801DAE);
+      r.sched.run_due_events();
+      if (r.irq.stat() & irq9) break;
+    }
+    r.run_samples(1);
+  }
+  return (r.irq.stat() & irq9) ? r.sched.now() : 0;
+}
+
+}  // namespace
+
+TEST(SpuSilent, SilentVoiceAndUnheardReverbRaiseIrq9InALateCatchUp) {
+  // Voice 5 is in block k during samples 7k+1..7k+7 (sample k due at k * 768 cycles) and reads
+  // its header at IRQA = 220h (byte 1100h, block 272, past the capture buffers that the SPU
+  // writes) in sample 1905. The reverb's buffer address is halfword 3F800h + (t-1)/2 in tick t,
+  // in 8-byte unit FE0Ah from tick 81 on.
+  const u16 voice_block = 0x220, reverb_unit = 0xFE0A;
+  const Cycles stall = 400 * Spu::kCyclesPerSample;
+  for (u32 batch : {1u, Spu::kDefaultMaxBatch}) {
+    EXPECT_EQ(first_irq(batch, voice_block, 9999, 0), 1905u * Spu::kCyclesPerSample) << batch;
+    EXPECT_EQ(first_irq(batch, reverb_unit, 9999, 0), 81u * Spu::kCyclesPerSample) << batch;
+    // Samples 1801..2200 and 1..400 made in one catch-up: the hits raise IRQ9 at its end.
+    EXPECT_EQ(first_irq(batch, voice_block, 1800, stall), 2200u * Spu::kCyclesPerSample) << batch;
+    EXPECT_EQ(first_irq(batch, reverb_unit, 0, stall), 400u * Spu::kCyclesPerSample) << batch;
+  }
+}

@@ -16,6 +16,7 @@
 #include "tumble_console_util.h"
 
 using namespace psx;
+using psx::test::Lcg;
 using psx::test::write_test_volumes_and_reverb;
 
 namespace {
@@ -25,15 +26,6 @@ constexpr u16 kReverbBase = 0xFE00;  // ESA (8-byte units): a 4 KiB work area at
 constexpr u32 kStat = 0x1F801DAE, kAttr = 0x1F801DAA, kIrqA = 0x1F801DA4, kRamCtrl = 0x1F801DAC;
 constexpr u16 kAttrOn = 0xC000 | 0x3C00 | 0x0080 | 0x0005;  // enable, unmute, noise, reverb, CD
 constexpr u16 kAttrIrq = 0x0040;
-
-// A fixed pseudo-random sequence (the same in every rig).
-struct Lcg {
-  u32 x;
-  u32 next(u32 n) {
-    x = x * 1664525u + 1013904223u;
-    return (x >> 8) % n;
-  }
-};
 
 std::vector<u8> sine_blocks(double amplitude, size_t period, bool loop) {
   std::vector<s16> pcm(period * 28);
@@ -45,29 +37,15 @@ std::vector<u8> sine_blocks(double amplitude, size_t period, bool loop) {
 
 // A standalone SPU with two CD feeding events, one registered before the SPU's event and one
 // after (ties with a sample go to the lower handle), driven like the CPU drives the console.
-struct Rig {
-  Scheduler sched;
-  InterruptController irq;
-  AudioFifo cd;
-  Scheduler::Handle feed_before = sched.add_event("feed.before", [this](Cycles late) { feed(feed_before, 0, late); });
-  Spu spu{sched, irq, cd};
+struct Rig : psx::test::SpuTrace {
   Scheduler::Handle feed_after = sched.add_event("feed.after", [this](Cycles late) { feed(feed_after, 1, late); });
   Lcg feed_rng[2] = {{11}, {23}};
   s16 cd_value = 0;
-  u16 attr = 0;  // the last ATTR written
-  std::vector<Cycles> irq_times;
-  std::vector<u32> reads;
-  std::vector<StereoSample> out;  // every output sample taken so far
-
-  void take() {
-    std::vector<StereoSample> v;
-    spu.take_samples(v);
-    out.insert(out.end(), v.begin(), v.end());
-  }
 
   explicit Rig(u32 max_batch) {
+    before_spu_event = [this](Cycles late) { feed(before_spu, 0, late); };
     spu.set_max_batch(max_batch);
-    sched.schedule(feed_before, 7 * Spu::kCyclesPerSample);
+    sched.schedule(before_spu, 7 * Spu::kCyclesPerSample);
     sched.schedule(feed_after, 9 * Spu::kCyclesPerSample);
   }
   // A CD sector's worth of frames at a time, at times often on the sample grid (a tie with a
@@ -80,38 +58,9 @@ struct Rig {
     const Cycles gap = r.next(2) ? Cycles{768} * (1 + r.next(700)) : 1 + r.next(400000);
     sched.schedule_at(h, sched.now() - late + gap);
   }
-  void note_irq() {
-    if (irq.stat() & (1u << static_cast<u32>(Irq::Spu))) {
-      irq_times.push_back(sched.now());
-      irq.write(0x0, ~(1u << static_cast<u32>(Irq::Spu)));  // acknowledge I_STAT bit 9
-    }
-  }
-  // Like the CPU: time moves in instruction-sized steps; due events run between steps.
+  // Like the CPU: time moves in instruction-sized steps.
   void run_for(Cycles n, Lcg& steps) {
-    const Cycles end = sched.now() + n;
-    while (sched.now() < end) {
-      sched.advance(1 + steps.next(30));
-      if (sched.now() >= sched.next_deadline()) {
-        sched.run_due_events();
-        note_irq();
-      }
-    }
-  }
-  void w16(u32 addr, u16 v) {
-    if (addr == kAttr) attr = v;
-    spu.io_write(addr - Spu::kBase, v, 2);
-    note_irq();
-  }
-  u16 r16(u32 addr) {
-    const u16 v = static_cast<u16>(spu.io_read(addr - Spu::kBase, 2));
-    reads.push_back(v);
-    note_irq();
-    return v;
-  }
-  std::vector<u8> state() {
-    StateIO w;
-    spu.do_state(w);
-    return w.buffer();
+    SpuTrace::run_for(n, [&] { return 1 + steps.next(30); });
   }
 };
 

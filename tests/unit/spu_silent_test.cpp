@@ -18,6 +18,7 @@
 #include "spu_test_util.h"
 
 using namespace psx;
+using psx::test::Lcg;
 using psx::test::SpuRig;
 using psx::test::write_test_volumes_and_reverb;
 
@@ -33,14 +34,6 @@ constexpr u32 kLoop = 0x1000, kOneBlockLoop = 0x2000, kEndMute = 0x3000, kRandom
 constexpr u16 kReverbBase = 0xFE00;
 constexpr u32 kInReverbArea = 0x7F000;
 
-struct Lcg {
-  u32 x;
-  u32 next(u32 n) {
-    x = x * 1664525u + 1013904223u;
-    return (x >> 8) % n;
-  }
-};
-
 // One ADPCM block (psx-spx "SPU ADPCM Samples"): shift 0..12 and filter 0..4 in byte 0, the
 // flags in byte 1, 28 random nibbles.
 void put_block(u8* ram, u32 addr, u8 flags, Lcg& rng) {
@@ -49,57 +42,15 @@ void put_block(u8* ram, u32 addr, u8 flags, Lcg& rng) {
   for (u32 i = 2; i < 16; ++i) ram[addr + i] = static_cast<u8>(rng.next(256));
 }
 
-struct Rig {
-  Scheduler sched;
-  InterruptController irq;
-  AudioFifo cd;
-  Spu spu{sched, irq, cd};
-  std::vector<Cycles> irq_times;
-  std::vector<u32> reads;
-  std::vector<StereoSample> out;
-  u16 attr = 0;
-
+struct Rig : psx::test::SpuTrace {
   Rig(u32 max_batch, bool observed) {
     spu.set_max_batch(max_batch);
     spu.set_observed(observed);
   }
-  void note_irq() {
-    if (irq.stat() & (1u << static_cast<u32>(Irq::Spu))) {
-      irq_times.push_back(sched.now());
-      irq.write(0x0, ~(1u << static_cast<u32>(Irq::Spu)));  // acknowledge I_STAT bit 9
-    }
-  }
   // Like the CPU: time moves in instruction-sized steps, now and then a long stall (a DMA
-  // transfer), so that an event may run many samples late; due events run between steps.
+  // transfer), so that an event may run many samples late.
   void run_for(Cycles n, Lcg& steps) {
-    const Cycles end = sched.now() + n;
-    while (sched.now() < end) {
-      sched.advance(steps.next(500) == 0 ? 1 + steps.next(150000) : 1 + steps.next(40));
-      if (sched.now() >= sched.next_deadline()) {
-        sched.run_due_events();
-        note_irq();
-      }
-    }
-  }
-  void w16(u32 addr, u16 v) {
-    if (addr == kAttr) attr = v;
-    spu.io_write(addr - Spu::kBase, v, 2);
-    note_irq();
-  }
-  void r16(u32 addr) {
-    reads.push_back(spu.io_read(addr - Spu::kBase, 2));
-    note_irq();
-  }
-  void voice_w(u32 v, u32 reg, u16 value) { w16(0x1F801C00 + v * 0x10 + reg, value); }
-  std::vector<u8> state() {
-    StateIO w;
-    spu.do_state(w);
-    return w.buffer();
-  }
-  void take() {
-    std::vector<StereoSample> v;
-    spu.take_samples(v);
-    out.insert(out.end(), v.begin(), v.end());
+    SpuTrace::run_for(n, [&] { return steps.next(500) == 0 ? 1 + steps.next(150000) : 1 + steps.next(40); });
   }
 };
 

@@ -2,11 +2,13 @@
 // access by psx-spx address, and running whole 44.1 kHz samples.
 #pragma once
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "core/audio_fifo.h"
 #include "core/irq.h"
 #include "core/scheduler.h"
+#include "core/state.h"
 #include "spu/spu.h"
 
 namespace psx::test {
@@ -36,6 +38,78 @@ struct SpuRig {
   }
   void put_ram(u32 byte_addr, const std::vector<u8>& bytes) {
     for (size_t i = 0; i < bytes.size(); ++i) spu.ram()[(byte_addr + i) & (Spu::kRamSize - 1)] = bytes[i];
+  }
+};
+
+// A fixed pseudo-random sequence (the same in every rig of a comparison).
+struct Lcg {
+  u32 x;
+  u32 next(u32 n) {
+    x = x * 1664525u + 1013904223u;
+    return (x >> 8) % n;
+  }
+};
+
+// The rig of the randomised workloads that compare batch sizes (spu_lazy_test,
+// spu_silent_test): a standalone SPU driven like the CPU drives it, recording what can be seen
+// of it - register reads, IRQ9 edges (noted with their time and acknowledged at once), output
+// samples and the state bytes.
+struct SpuTrace {
+  Scheduler sched;
+  InterruptController irq;
+  AudioFifo cd;
+  // An event registered before the SPU's, so that it wins a tie with a sample (the lower handle
+  // runs first); it calls before_spu_event, which a workload sets if it books the event.
+  std::function<void(Cycles)> before_spu_event;
+  Scheduler::Handle before_spu = sched.add_event("trace.before_spu", [this](Cycles late) { before_spu_event(late); });
+  Spu spu{sched, irq, cd};
+  u16 attr = 0;  // the last ATTR written
+  std::vector<Cycles> irq_times;
+  std::vector<u32> reads;
+  std::vector<StereoSample> out;  // every output sample taken so far
+
+  static constexpr u32 kAttr = 0x1F801DAA;
+
+  void note_irq() {
+    if (irq.stat() & (1u << static_cast<u32>(Irq::Spu))) {
+      irq_times.push_back(sched.now());
+      irq.write(0x0, ~(1u << static_cast<u32>(Irq::Spu)));  // acknowledge I_STAT bit 9
+    }
+  }
+  // Like the CPU: time moves in steps of step() cycles (instruction-sized, now and then a long
+  // stall in some workloads); due events run between steps.
+  template <class Step>
+  void run_for(Cycles n, Step step) {
+    const Cycles end = sched.now() + n;
+    while (sched.now() < end) {
+      sched.advance(step());
+      if (sched.now() >= sched.next_deadline()) {
+        sched.run_due_events();
+        note_irq();
+      }
+    }
+  }
+  void w16(u32 addr, u16 v) {
+    if (addr == kAttr) attr = v;
+    spu.io_write(addr - Spu::kBase, v, 2);
+    note_irq();
+  }
+  u16 r16(u32 addr) {
+    const u16 v = static_cast<u16>(spu.io_read(addr - Spu::kBase, 2));
+    reads.push_back(v);
+    note_irq();
+    return v;
+  }
+  void voice_w(u32 v, u32 reg, u16 value) { w16(0x1F801C00 + v * 0x10 + reg, value); }
+  std::vector<u8> state() {
+    StateIO w;
+    spu.do_state(w);
+    return w.buffer();
+  }
+  void take() {
+    std::vector<StereoSample> v;
+    spu.take_samples(v);
+    out.insert(out.end(), v.begin(), v.end());
   }
 };
 

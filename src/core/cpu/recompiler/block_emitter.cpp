@@ -461,9 +461,11 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   // line check refused; fallback[k]: a load or store the native code does not make) runs as
   // its call, and the segment goes on natively from the next one if the guard allows it then
   // (a refusal is often over after one instruction: a cold i-cache line filled by its first
-  // fetch, a load landing), else by the next instruction's slow path. The call leaves the
-  // pipeline as the native code would have (a load pending in rt, or none), so seg.pipe holds
-  // after it too.
+  // fetch, a load landing), else by the next instruction's slow path. Only the slow path's
+  // entries from native code (the segment's start, a line's start) re-guard: a refusal that
+  // outlasts one instruction mostly outlasts the line, and each re-guard is code to emit. The
+  // call leaves the pipeline as the native code would have (a load pending in rt, or none), so
+  // seg.pipe holds after it too.
   for (Segment& seg : segments) {
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
     auto call_and_resume = [&](size_t k) {
@@ -477,8 +479,13 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     };
     for (size_t k = 0; k < seg.count; ++k) {
       g.L(seg.slow[k]);
-      call_and_resume(k);
+      if (k == 0 || (run[k].pc & 15) == 0) {
+        call_and_resume(k);
+      } else {
+        g.call_step(run[k]);  // on into slow[k + 1]
+      }
     }
+    g.jmp(seg.end, Xbyak::CodeGenerator::T_NEAR);
     for (size_t k = 0; k < seg.count; ++k) {
       if (!Impl::is_memory(run[k].native)) continue;
       g.L(seg.fallback[k]);

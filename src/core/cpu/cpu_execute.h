@@ -121,16 +121,16 @@ void CpuT<BusT>::execute_special(u32 instr) {
       u64 r = u64(s64(s32(s)) * s64(s32(t)));
       hi_ = u32(r >> 32);
       lo_ = u32(r);
-      // Early-out multiplier: 6/9/13 cycles by the magnitude of rs (psx-spx "CPU Timings").
+      // Early-out multiplier: its time goes by the magnitude of rs.
       u32 m = s32(s) < 0 ? ~s : s;
-      muldiv_ready_at_ = sched_.now() + (m < 0x800 ? 6 : m < 0x100000 ? 9 : 13);
+      muldiv_ready_at_ = sched_.now() + multiply_cycles(m);
       break;
     }
     case 0x19: {  // MULTU
       u64 r = u64(s) * u64(t);
       hi_ = u32(r >> 32);
       lo_ = u32(r);
-      muldiv_ready_at_ = sched_.now() + (s < 0x800 ? 6 : s < 0x100000 ? 9 : 13);
+      muldiv_ready_at_ = sched_.now() + multiply_cycles(s);
       break;
     }
     case 0x1A:  // DIV: division by zero and 0x80000000/-1 give the documented results
@@ -144,7 +144,7 @@ void CpuT<BusT>::execute_special(u32 instr) {
         hi_ = u32(s32(s) % s32(t));
         lo_ = u32(s32(s) / s32(t));
       }
-      muldiv_ready_at_ = sched_.now() + 36;
+      muldiv_ready_at_ = sched_.now() + kDivideCycles;
       break;
     case 0x1B:  // DIVU
       if (t == 0) {
@@ -154,7 +154,7 @@ void CpuT<BusT>::execute_special(u32 instr) {
         hi_ = s % t;
         lo_ = s / t;
       }
-      muldiv_ready_at_ = sched_.now() + 36;
+      muldiv_ready_at_ = sched_.now() + kDivideCycles;
       break;
     case 0x20: {  // ADD
       u32 r = s + t;

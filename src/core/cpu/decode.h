@@ -35,6 +35,19 @@ inline bool reads_reg(u32 i, u32 r) {
     default: return s;  // BcondZ, BLEZ, BGTZ, immediate ALU, loads, LWC2, SWC2: the base
   }
 }
+
+// The multiply/divide unit's timing (psx-spx "CPU Timings"), shared by the interpreter and the
+// recompiler's native code: the early-out multiplier takes 6, 9 or 13 cycles by the magnitude of
+// rs (below kMultiplyFastBelow, below kMultiplyMediumBelow, else), a divide always 36.
+inline constexpr u32 kMultiplyFastBelow = 0x800, kMultiplyMediumBelow = 0x100000;
+inline constexpr u32 kMultiplyFastCycles = 6, kMultiplyMediumCycles = 9, kMultiplySlowCycles = 13;
+inline constexpr u32 kDivideCycles = 36;
+inline constexpr u32 multiply_cycles(u32 magnitude) {
+  return magnitude < kMultiplyFastBelow     ? kMultiplyFastCycles
+         : magnitude < kMultiplyMediumBelow ? kMultiplyMediumCycles
+                                            : kMultiplySlowCycles;
+}
+
 }  // namespace cpu_detail
 
 }  // namespace psx

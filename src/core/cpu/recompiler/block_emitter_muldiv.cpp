@@ -1,8 +1,7 @@
 // Native MULT, MULTU, DIV and DIVU for compiled blocks (emitter_impl.h): CpuT::execute_special()'s
 // results in HI/LO, including the documented division by zero and 0x80000000 / -1 results that
 // x86's IDIV/DIV would fault on, and its timing model: the result is ready (for MFHI/MFLO's
-// wait_muldiv) 6, 9 or 13 cycles after a multiply by the magnitude of rs (the early-out
-// multiplier), 36 after a divide.
+// wait_muldiv) as cpu_detail's multiply/divide timing says (decode.h).
 #include "core/cpu/decode.h"
 #include "core/cpu/recompiler/emitter_impl.h"
 
@@ -13,16 +12,15 @@ using Impl = BlockEmitter::Impl;
 
 namespace {
 
-constexpr u32 kDivCycles = 36;
-
-// r8 = a multiply's cycles for the magnitude in edx: 6 below 800h, 9 below 100000h, else 13.
+// r8 = a multiply's cycles for the magnitude in edx (cpu_detail::multiply_cycles).
 void multiply_cycles(Impl& g) {
-  g.mov(g.r8d, 13);
-  g.mov(g.r9d, 9);
-  g.cmp(g.edx, 0x100000);
+  using namespace cpu_detail;
+  g.mov(g.r8d, kMultiplySlowCycles);
+  g.mov(g.r9d, kMultiplyMediumCycles);
+  g.cmp(g.edx, kMultiplyMediumBelow);
   g.cmovb(g.r8d, g.r9d);
-  g.mov(g.r9d, 6);
-  g.cmp(g.edx, 0x800);
+  g.mov(g.r9d, kMultiplyFastCycles);
+  g.cmp(g.edx, kMultiplyFastBelow);
   g.cmovb(g.r8d, g.r9d);
 }
 
@@ -82,7 +80,7 @@ void Impl::muldiv(NativeOp op, u32 i) {
   mov(cpu32(lay.lo), eax);
   L(done);
   mov(rax, now());
-  add(rax, kDivCycles);
+  add(rax, cpu_detail::kDivideCycles);
   mov(cpu64(lay.muldiv_ready_at), rax);
 }
 

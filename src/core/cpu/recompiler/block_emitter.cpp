@@ -479,13 +479,12 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     };
     for (size_t k = 0; k < seg.count; ++k) {
       g.L(seg.slow[k]);
-      if (k == 0 || (run[k].pc & 15) == 0) {
+      if (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count) {
         call_and_resume(k);
       } else {
         g.call_step(run[k]);  // on into slow[k + 1]
       }
     }
-    g.jmp(seg.end, Xbyak::CodeGenerator::T_NEAR);
     for (size_t k = 0; k < seg.count; ++k) {
       if (!Impl::is_memory(run[k].native)) continue;
       g.L(seg.fallback[k]);

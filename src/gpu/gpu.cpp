@@ -47,14 +47,10 @@ u32 Gpu::gpustat() const {
   s |= u32{display_disabled_} << 23;
   s |= u32{irq_flag_} << 24;
   const bool ready_cmd = gp0_mode_ != Gp0Mode::CpuToVram && !download_.active;
-  const bool ready_send = download_.active;
-  const bool ready_dma = !download_.active;
   s |= u32{ready_cmd} << 26;
-  s |= u32{ready_send} << 27;
-  s |= u32{ready_dma} << 28;
-  // 25: DMA request, meaning depends on GP1(04): off 0, FIFO not full (always here), 28, 27.
-  const bool request[4] = {false, true, ready_dma, ready_send};
-  s |= u32{request[dma_direction_]} << 25;
+  s |= u32{download_.active} << 27;   // ready to send VRAM to the CPU
+  s |= u32{!download_.active} << 28;  // ready to receive a DMA block
+  s |= u32{dma_request()} << 25;
   s |= dma_direction_ << 29;
   s |= u32{field_line_odd()} << 31;
   return s;
@@ -68,7 +64,17 @@ bool Gpu::field_line_odd() const {
   return timing_.line() & 1;
 }
 
-bool Gpu::dma_request() const { return (gpustat() >> 25) & 1; }
+// GPUSTAT.25, which the DMA controller polls once per linked-list node: its meaning follows
+// GP1(04): off 0, FIFO not full (always, here), then bit 28 (ready for a DMA block), bit 27
+// (ready to send VRAM). Computed alone, without the rest of GPUSTAT.
+bool Gpu::dma_request() const {
+  switch (dma_direction_) {
+    case 0: return false;
+    case 1: return true;
+    case 2: return !download_.active;
+    default: return download_.active;
+  }
+}
 
 u32 Gpu::gpuread() {
   if (!download_.active) return gpuread_latch_;

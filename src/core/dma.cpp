@@ -2,6 +2,7 @@
 #include "core/dma.h"
 
 #include <algorithm>
+#include <bit>
 
 #include "core/bus.h"
 #include "core/irq.h"
@@ -125,18 +126,25 @@ bool Dma::may_run(u32 ch) const {
   return (c.chcr & kChcrTrigger) || device_request(ch);
 }
 
-int Dma::pick_channel() const {
+int Dma::pick_channel(u32 candidates) const {
   // Lowest DPCR priority value wins; on a tie the higher channel number wins (psx-spx).
   int best = -1;
-  for (u32 ch = 0; ch < kChannels; ++ch)
+  for (; candidates != 0; candidates &= candidates - 1) {
+    const u32 ch = static_cast<u32>(std::countr_zero(candidates));  // ascending, for the tie rule
     if (may_run(ch) && (best < 0 || priority(ch) <= priority(static_cast<u32>(best)))) best = static_cast<int>(ch);
+  }
   return best;
 }
 
 void Dma::service() {
+  // Only busy, enabled channels may run, and during a slice no channel becomes either (only CPU
+  // writes to CHCR and DPCR do that), so the others need not be asked for each list node.
+  u32 candidates = 0;
+  for (u32 c = 0; c < kChannels; ++c)
+    if ((channels_[c].chcr & kChcrBusy) && enabled(c)) candidates |= 1u << c;
   u32 budget = kSliceWords;
   int ch;
-  while (budget > 0 && (ch = pick_channel()) >= 0) {
+  while (budget > 0 && (ch = pick_channel(candidates)) >= 0) {
     u32 c = static_cast<u32>(ch);
     u32 moved;
     if (c == Otc) moved = run_otc(c);
@@ -148,7 +156,7 @@ void Dma::service() {
   Cycles next = Scheduler::kNever;
   // A slice that used its whole budget continues one cycle later, so the scheduler's dispatch
   // loop returns and other events (frame end, run limits) still get their turn.
-  if (budget == 0 && pick_channel() >= 0) next = sched_.now() + 1;
+  if (budget == 0 && pick_channel(candidates) >= 0) next = sched_.now() + 1;
   for (u32 c = 0; c < kChannels; ++c) {
     const Channel& chan = channels_[c];
     if (!(chan.chcr & kChcrBusy) || !enabled(c)) continue;

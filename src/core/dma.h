@@ -71,7 +71,8 @@ class Dma : public IoDevice {
   u32 priority(u32 ch) const { return (dpcr_ >> (ch * 4)) & 7; }
   bool device_request(u32 ch) const;
   bool may_run(u32 ch) const;
-  int pick_channel() const;
+  // The channel to run next among `candidates` (a bit per channel), or -1.
+  int pick_channel(u32 candidates) const;
 
   // Runs every channel that may run, highest priority first, within one bounded slice of words,
   // then books the event that continues or polls the ones still waiting.

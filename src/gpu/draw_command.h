@@ -41,7 +41,9 @@ struct DrawCommand {
   u16 pixel = 0;
   MaskMode mask;
   u32 pixels = 0;
-  // Set by the queue: what this call (with the next one, for a triangle pair) surely replaces.
+  // Set by the queue: write_rect(), computed once (pruning asks for it often), and what this
+  // call (with the next one, for a triangle pair) surely replaces.
+  Rect write;
   Rect cover;
   bool cover_with_next = false;
 

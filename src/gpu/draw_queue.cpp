@@ -101,7 +101,8 @@ void DrawQueue::write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m
   push(c);
 }
 
-void DrawQueue::push(const DrawCommand& c) {
+void DrawQueue::push(DrawCommand c) {
+  c.write = c.write_rect();
   if (!deferred_) return execute(c, true);
   queue_.push_back(c);
   const size_t n = queue_.size();
@@ -111,7 +112,7 @@ void DrawQueue::push(const DrawCommand& c) {
   // Two triangles pair up unless a VBlank came between them (its frame sees only the first).
   if (last.cover.empty() && n >= 2 && !(frame_pending_ && frame_position_ == n - 1)) {
     DrawCommand& first = queue_[n - 2];
-    const Rect a = first.write_rect(), b = last.write_rect();
+    const Rect a = first.write, b = last.write;
     const Rect bounds{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
     const Rect pair = bounds.area() >= kMinCover ? triangle_pair_cover(first, last) : Rect{};
     if (!pair.empty()) first.cover = pair, first.cover_with_next = true, end = n - 2;
@@ -121,7 +122,7 @@ void DrawQueue::push(const DrawCommand& c) {
 }
 
 void DrawQueue::execute(const DrawCommand& c, bool after_frame) {
-  if (frame_pending_ && after_frame && c.write_rect().intersects(frame_rect_)) convert_frame();
+  if (frame_pending_ && after_frame && c.write.intersects(frame_rect_)) convert_frame();
   using Kind = DrawCommand::Kind;
   switch (c.kind) {
     case Kind::Triangle: return target_->draw_triangle(c.triangle, c.ds);
@@ -176,7 +177,7 @@ void DrawQueue::prune(const Rect& cover, size_t end) {
   for (size_t i = end; i-- > 0;) {
     if (!frame_added && i < frame_position_) readers.add(frame_rect_), frame_added = true;
     const DrawCommand& c = queue_[i];
-    const Rect w = c.write_rect();
+    const Rect& w = c.write;
     if (cover.contains(w) && !readers.read(w)) {
       keep_[i] = 0, any_dropped = true;
       continue;

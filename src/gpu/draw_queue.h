@@ -54,7 +54,7 @@ class DrawQueue {
   void drop();
 
  private:
-  void push(const DrawCommand& c);
+  void push(DrawCommand c);
   void execute(const DrawCommand& c, bool after_frame);
   void convert_frame();
   void prune(const Rect& cover, size_t end);

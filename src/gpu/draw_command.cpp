@@ -137,13 +137,14 @@ Rect triangle_pair_cover(const DrawCommand& first, const DrawCommand& second) {
   // Every row from the first covered to the last must be covered from the same left to the same
   // right pixel by the union of the two spans (clipped to the drawing area, as drawn).
   Rect cover{0, std::min(begin[0], begin[1]), 0, std::max(end[0], end[1]) + 1};
+  SpanWalk walk[2] = {SpanWalk(s[0], begin[0]), SpanWalk(s[1], begin[1])};
   for (s32 y = cover.y0; y < cover.y1; ++y) {
     s32 left[2], right[2];
     u32 spans = 0;
     for (u32 i = 0; i < 2; ++i) {
       if (y < begin[i] || y > end[i]) continue;
-      row_span(s[i], y, left[spans], right[spans]);
-      left[spans] = std::max(left[spans], ds.area_left), right[spans] = std::min(right[spans], ds.area_right);
+      left[spans] = std::max(walk[i].left(), ds.area_left), right[spans] = std::min(walk[i].right(), ds.area_right);
+      walk[i].next_row();
       if (left[spans] <= right[spans]) ++spans;
     }
     if (spans == 0) return {};

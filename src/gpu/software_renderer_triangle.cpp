@@ -49,17 +49,11 @@ void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds
   s32 y_begin = std::max(a.y, ds.area_top);
   s32 y_end = std::min(c.y - 1, ds.area_bottom);
   if (y_begin > y_end) return;
-  // row_span()'s edges, walked row by row: the long edge a->c, and a->b above b, b->c from b on.
-  const bool long_edge_left = cross > 0;
-  EdgeWalk long_edge(a, c, y_begin);
-  EdgeWalk short_edge = y_begin < b.y ? EdgeWalk(a, b, y_begin) : EdgeWalk(b, c, y_begin);
-  for (s32 y = y_begin; y <= y_end; ++y, long_edge.next_row(), short_edge.next_row()) {
-    if (y == b.y && y > y_begin) short_edge = EdgeWalk(b, c, y);
+  SpanWalk span(sorted, y_begin);
+  for (s32 y = y_begin; y <= y_end; ++y, span.next_row()) {
     if ((y & 1) == ds.skip_row_parity) continue;
-    s32 x_left = long_edge_left ? long_edge.x() : short_edge.x();
-    s32 x_right = (long_edge_left ? short_edge.x() : long_edge.x()) - 1;
-    x_left = std::max(x_left, ds.area_left);
-    x_right = std::min(x_right, ds.area_right);
+    const s32 x_left = std::max(span.left(), ds.area_left);
+    const s32 x_right = std::min(span.right(), ds.area_right);
     if (x_left > x_right) continue;
 
     s32 dx = x_left - a.x, dy = y - a.y;

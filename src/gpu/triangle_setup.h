@@ -67,17 +67,30 @@ class EdgeWalk {
   s64 dy_ = 1, q_ = 0, r_ = 0, step_q_ = 0, step_r_ = 0;
 };
 
-// The pixels a non-degenerate sorted triangle covers on row y (a.y <= y < c.y), before clipping:
-// left <= x <= right, the top-left fill rule leaving out the right edge. The rasterizer and the
-// deferred-drawing coverage test both use this, so they agree on every pixel.
-inline void row_span(const SortedTriangle& s, s32 y, s32& left, s32& right) {
-  const Vertex &a = *s.p[0], &b = *s.p[1], &c = *s.p[2];
-  const s32 x_long = edge_x(a, c, y);
-  const s32 x_short = y < b.y ? edge_x(a, b, y) : edge_x(b, c, y);
-  const bool long_edge_left = s.cross > 0;  // the middle vertex lies right of the long edge a->c
-  left = long_edge_left ? x_long : x_short;
-  right = (long_edge_left ? x_short : x_long) - 1;
-}
+// The pixels a non-degenerate sorted triangle covers on successive rows from y (a.y <= y < c.y),
+// before clipping: left() <= x <= right(), the top-left fill rule leaving out the right edge.
+// The edges are the long one a->c and the short one a->b above b, b->c from b on. The rasterizer
+// and the deferred-drawing coverage test both walk this, so they agree on every pixel.
+class SpanWalk {
+ public:
+  SpanWalk(const SortedTriangle& s, s32 y)
+      : b_(*s.p[1]), c_(*s.p[2]), y_(y), long_left_(s.cross > 0), long_(*s.p[0], c_, y),
+        short_(y < b_.y ? EdgeWalk(*s.p[0], b_, y) : EdgeWalk(b_, c_, y)) {}
+  s32 left() const { return long_left_ ? long_.x() : short_.x(); }
+  s32 right() const { return (long_left_ ? short_.x() : long_.x()) - 1; }
+  void next_row() {
+    ++y_;
+    long_.next_row();
+    if (y_ == b_.y && b_.y < c_.y) short_ = EdgeWalk(b_, c_, y_);  // not past a flat bottom
+    else short_.next_row();
+  }
+
+ private:
+  const Vertex &b_, &c_;
+  s32 y_;
+  bool long_left_;  // the middle vertex lies right of the long edge a->c
+  EdgeWalk long_, short_;
+};
 
 // d(attribute)/dx and d(attribute)/dy in 12-bit fixed point for the plane through three vertices.
 struct Gradient {

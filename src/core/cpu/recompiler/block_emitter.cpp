@@ -15,12 +15,28 @@ namespace psx {
 using Xbyak::Label;
 using Impl = BlockEmitter::Impl;
 
+void Impl::flush() { mov(qword[r12 + lay.now], now); }
+
+void Impl::reload() {
+  mov(now, qword[r12 + lay.now]);
+  mov(deadline, qword[r12 + lay.deadline]);
+}
+
+// Whatever is called may read the time (a timer's counter, a step's own bookkeeping) or move it
+// (a step, a DMA), and a step may book an event before the deadline. The GTE's and the code
+// pages' functions do neither today, but going through here keeps that from mattering.
+void Impl::call_out(const void* fn) {
+  flush();
+  mov(rax, reinterpret_cast<u64>(fn));
+  call(rax);
+  reload();
+}
+
 void Impl::call_step(const Step& s) {
   mov(rdi, rbx);
   mov(esi, s.pc);
   mov(edx, s.word);
-  mov(rax, reinterpret_cast<u64>(s.fn));
-  call(rax);
+  call_out(reinterpret_cast<const void*>(s.fn));
   test(al, al);
   jz(*exit, T_NEAR);
 }
@@ -155,8 +171,7 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   jne(fail, T_NEAR);
   cmp(byte[rbx + lay.hook_armed], 0);
   jne(fail, T_NEAR);
-  mov(rax, qword[r12 + lay.now]);
-  cmp(rax, qword[r12 + lay.deadline]);
+  cmp(now, deadline);
   jae(fail, T_NEAR);
   mov(eax, cpu32(lay.new_load_reg));
   or_(eax, cpu32(lay.new_load_val));
@@ -248,8 +263,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   const NativeOp op = s.native;
   const Pipe& pipe = seg.pipe[k];
   if (k > 0) {
-    mov(rax, now());
-    cmp(rax, qword[r12 + lay.deadline]);
+    cmp(now, deadline);
     jae(*exit, T_NEAR);
     // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
     // which fetches (and fills) it.
@@ -268,7 +282,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
   inc(qword[rbx + lay.instructions]);
-  inc(now());
+  inc(now);
   cmp(cpu32(lay.shadow_reg), 0);
   jne(seg.stall[k], T_NEAR);
   L(seg.stall_back[k]);
@@ -332,8 +346,7 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
   const Pipe& pipe = seg.pipe[k];
   L(seg.stall[k]);
   Label stall, wait;
-  mov(rax, now());
-  cmp(rax, cpu64(lay.load_done_at));
+  cmp(now, cpu64(lay.load_done_at));
   jb(stall);  // not yet done: maybe wait
   mov(cpu32(lay.shadow_reg), 0);
   jmp(seg.stall_back[k], T_NEAR);
@@ -357,8 +370,7 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
   jmp(seg.stall_back[k], T_NEAR);
   L(wait);
   if (any) {
-    mov(rax, cpu64(lay.load_done_at));
-    mov(now(), rax);
+    mov(now, cpu64(lay.load_done_at));
     mov(cpu32(lay.shadow_reg), 0);
     jmp(seg.stall_back[k], T_NEAR);
   }
@@ -371,10 +383,10 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
 // same checks and does what they ask.
 void Impl::chain() {
   Label back, no_loop_head;
+  flush();
   cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
-  mov(rax, now());
-  cmp(rax, qword[r12 + lay.deadline]);
+  cmp(now, deadline);
   jae(back, T_NEAR);
   mov(eax, cpu32(lay.pc));
   cmp(eax, cpu32(lay.loop_head));
@@ -393,15 +405,26 @@ void Impl::chain() {
   cmp(dword[rdx + rcx], eax);
   jne(back, T_NEAR);
   mov(rax, qword[rdx + rcx + 8]);
-  pop(r13);
-  pop(r12);
-  pop(rbx);
+  epilogue();
   jmp(rax);
   L(back);
-  pop(r13);
-  pop(r12);
-  pop(rbx);
+  epilogue();
   ret();
+}
+
+// Six callee-saved pushes and 8 bytes more leave the stack 16-byte aligned at each call, as the
+// ABI wants (the return address made it 8 off).
+void Impl::prologue(const Layout& layout) {
+  for (const Xbyak::Reg64& r : {rbx, r12, r13, r14, r15, rbp}) push(r);
+  sub(rsp, 8);
+  mov(rbx, reinterpret_cast<u64>(layout.context));
+  mov(r12, reinterpret_cast<u64>(layout.sched));
+  reload();
+}
+
+void Impl::epilogue() {
+  add(rsp, 8);
+  for (const Xbyak::Reg64& r : {rbp, r15, r14, r13, r12, rbx}) pop(r);
 }
 
 BlockEmitter::BlockEmitter(size_t buffer_bytes) : impl_(std::make_unique<Impl>(buffer_bytes)) {}
@@ -419,12 +442,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.exit = &done;
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
-  // Three callee-saved pushes leave the stack 16-byte aligned at each call, as the ABI wants.
-  g.push(g.rbx);
-  g.push(g.r12);
-  g.push(g.r13);
-  g.mov(g.rbx, reinterpret_cast<u64>(layout.context));
-  g.mov(g.r12, reinterpret_cast<u64>(layout.sched));
+  g.prologue(layout);
   std::vector<Segment> segments;
   segments.reserve(steps.size());  // labels must not move once used
   for (size_t i = 0; i < steps.size();) {

@@ -4,7 +4,9 @@
 // block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
 // commands). Only they
 // include this header (and with it xbyak). Registers while a block runs: rbx = the context (the
-// CPU), r12 = the scheduler, r13d = a load's or store's address.
+// CPU), r12 = the scheduler, r13d = a load's or store's address, r14 = the scheduler's time and
+// r15 = its deadline (the cells in memory are stale while native code runs: flush() writes the
+// time back before anything outside the block can look, reload() reads both after a call).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -45,7 +47,14 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Xbyak::Address reg(u32 r) { return dword[rbx + lay.regs + 4 * int(r)]; }
   Xbyak::Address cpu32(int off) { return dword[rbx + off]; }
   Xbyak::Address cpu64(int off) { return qword[rbx + off]; }
-  Xbyak::Address now() { return qword[r12 + lay.now]; }
+  // Time lives in registers inside a block: `now` counts native instructions' cycles without a
+  // memory read-modify-write per instruction and `deadline` is compared without loads.
+  const Xbyak::Reg64& now = r14;
+  const Xbyak::Reg64& deadline = r15;
+  void flush();
+  void reload();
+  // A call out of native code to fn (arguments already in place): time flushed before, reloaded after.
+  void call_out(const void* fn);
 
   static bool is_branch(NativeOp op) { return op >= NativeOp::Beq; }
   static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lwr; }
@@ -75,6 +84,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void stall_stub(const Step& s, size_t k, Segment& seg);
   void chain();
+  void prologue(const Layout& layout);
+  void epilogue();
   // block_emitter_memory.cpp
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
   void load(NativeOp op, u32 i, const Pipe& pipe);

@@ -15,15 +15,20 @@ namespace psx {
 using Xbyak::Label;
 using Impl = BlockEmitter::Impl;
 
-void Impl::flush() { mov(qword[r12 + lay.now], now); }
+void Impl::flush() {
+  mov(qword[r12 + lay.now], now);
+  mov(cpu64(lay.instructions), instructions);
+}
 
 void Impl::reload() {
   mov(now, qword[r12 + lay.now]);
   mov(deadline, qword[r12 + lay.deadline]);
+  mov(instructions, cpu64(lay.instructions));
 }
 
 // Whatever is called may read the time (a timer's counter, a step's own bookkeeping) or move it
-// (a step, a DMA), and a step may book an event before the deadline. The GTE's and the code
+// (a step, a DMA), a step may book an event before the deadline, and a step counts its
+// instruction (and hooks or idle skipping may read the count). The GTE's and the code
 // pages' functions do neither today, but going through here keeps that from mattering.
 void Impl::call_out(const void* fn) {
   flush();
@@ -281,7 +286,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   } else if (k == 1) {
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
-  inc(qword[rbx + lay.instructions]);
+  inc(instructions);
   inc(now);
   cmp(cpu32(lay.shadow_reg), 0);
   jne(seg.stall[k], T_NEAR);

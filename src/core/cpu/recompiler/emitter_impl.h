@@ -5,8 +5,9 @@
 // commands). Only they
 // include this header (and with it xbyak). Registers while a block runs: rbx = the context (the
 // CPU), r12 = the scheduler, r13d = a load's or store's address, r14 = the scheduler's time and
-// r15 = its deadline (the cells in memory are stale while native code runs: flush() writes the
-// time back before anything outside the block can look, reload() reads both after a call).
+// r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
+// native code runs: flush() writes the time and the count back before anything outside the
+// block can look, reload() reads all three after a call).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -51,6 +52,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // memory read-modify-write per instruction and `deadline` is compared without loads.
   const Xbyak::Reg64& now = r14;
   const Xbyak::Reg64& deadline = r15;
+  const Xbyak::Reg64& instructions = rbp;
   void flush();
   void reload();
   // A call out of native code to fn (arguments already in place): time flushed before, reloaded after.

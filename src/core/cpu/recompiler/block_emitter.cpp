@@ -4,6 +4,7 @@
 #include "core/cpu/recompiler/block_emitter.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
@@ -384,11 +385,11 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
 // The block's end: RecompilerT::run()'s next loop pass. When it would call the block that
 // find()'s table holds for the pc (no stop, time before the deadline, no idle-loop head to hand
 // to IdleSkip, no written code pages whose blocks must be dropped first), the block jumps there
-// itself, a tail call in the same frame; otherwise it returns to the dispatcher, which makes the
-// same checks and does what they ask.
+// itself, past that block's prologue (kPrologueBytes), in the same frame and with the time and
+// count still in their registers; otherwise it writes them back and returns to the dispatcher,
+// which makes the same checks and does what they ask.
 void Impl::chain() {
   Label back, no_loop_head;
-  flush();
   cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
   cmp(now, deadline);
@@ -410,21 +411,28 @@ void Impl::chain() {
   cmp(dword[rdx + rcx], eax);
   jne(back, T_NEAR);
   mov(rax, qword[rdx + rcx + 8]);
-  epilogue();
+  add(rax, kPrologueBytes);
   jmp(rax);
   L(back);
+  flush();
   epilogue();
   ret();
 }
 
 // Six callee-saved pushes and 8 bytes more leave the stack 16-byte aligned at each call, as the
-// ABI wants (the return address made it 8 off).
+// ABI wants (the return address made it 8 off). Padded to kPrologueBytes, where a block linked
+// from another (chain()) enters with the frame made and the registers loaded: every block of
+// an emitter runs the same CPU on the same scheduler.
 void Impl::prologue(const Layout& layout) {
+  const size_t start = getSize();
   for (const Xbyak::Reg64& r : {rbx, r12, r13, r14, r15, rbp}) push(r);
   sub(rsp, 8);
   mov(rbx, reinterpret_cast<u64>(layout.context));
   mov(r12, reinterpret_cast<u64>(layout.sched));
   reload();
+  const size_t used = getSize() - start;  // at most 57 bytes (the longest encodings)
+  if (used > kPrologueBytes) throw std::logic_error("recompiler: block prologue longer than kPrologueBytes");
+  nop(kPrologueBytes - used);
 }
 
 void Impl::epilogue() {

@@ -86,6 +86,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void stall_stub(const Step& s, size_t k, Segment& seg);
   void chain();
+  static constexpr size_t kPrologueBytes = 64;
   void prologue(const Layout& layout);
   void epilogue();
   // block_emitter_memory.cpp

@@ -270,13 +270,13 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   const Pipe& pipe = seg.pipe[k];
   if (k > 0) {
     cmp(now, deadline);
-    jae(*exit, T_NEAR);
+    jae(seg.late[k], T_NEAR);
     // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
     // which fetches (and fills) it.
     if ((s.pc & 15) == 0) line_check(rest, seg.slow[k]);
   }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
-  mov(cpu32(lay.current_pc), s.pc);
+  if (k == 0 || after_branch) mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
   if (k == 0) {
     mov(al, byte[rbx + lay.next_in_delay]);
     mov(byte[rbx + lay.in_delay_slot], al);
@@ -297,9 +297,8 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     mov(cpu32(lay.pc), eax);
     add(eax, 4);
     mov(cpu32(lay.next_pc), eax);
-  } else {
-    mov(cpu32(lay.pc), s.pc + 4);
-    mov(cpu32(lay.next_pc), s.pc + 8);
+  } else if (is_branch(op)) {
+    mov(cpu32(lay.next_pc), s.pc + 8);  // a branch not taken leaves it so; its delay slot reads it
   }
   const u32 d = dest(op, s.word);
   if (is_branch(op)) branch(op, s.pc, s.word);
@@ -316,6 +315,19 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     cmp(cpu32(lay.pc), s.pc + 4);
     jne(*exit, T_NEAR);
   }
+}
+
+// current_pc_, pc_ and next_pc_ after instruction j of a segment, which native code writes only
+// where someone outside the block can look (sync_pc() at a segment's end, before a slow or
+// fallback call, at a deadline exit): the segment's first instruction and a delay slot write
+// theirs, which depend on where the CPU came from; any other one's are its address, the next
+// and the one after, except that a branch has set next_pc_ itself. Nothing called from inside
+// an instruction reads them (the GTE, the code pages).
+void Impl::sync_pc(std::span<const Step> run, size_t j) {
+  if (j == 0 || is_branch(run[j - 1].native)) return;
+  mov(cpu32(lay.current_pc), run[j].pc);
+  mov(cpu32(lay.pc), run[j].pc + 4);
+  if (!is_branch(run[j].native)) mov(cpu32(lay.next_pc), run[j].pc + 8);
 }
 
 // execute_at_pc()'s load delay slot after the instruction: the previous instruction's load
@@ -472,6 +484,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.resume = std::vector<Label>(seg.count);
     seg.stall = std::vector<Label>(seg.count);
     seg.stall_back = std::vector<Label>(seg.count);
+    seg.late = std::vector<Label>(seg.count);
     seg.pipe.resize(seg.count);
     for (size_t k = 1; k < seg.count; ++k) {
       const Step& prev = steps[seg.first + k - 1];
@@ -484,6 +497,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       g.L(seg.resume[k]);
       g.native(run.subspan(k), k, seg.first + k + 1 == steps.size(), after_branch, seg);
     }
+    g.sync_pc(run, seg.count - 1);
     g.L(seg.end);
   }
   g.L(done);
@@ -510,6 +524,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     };
     for (size_t k = 0; k < seg.count; ++k) {
       g.L(seg.slow[k]);
+      if (k > 0) g.sync_pc(run, k - 1);  // from native code (or the call before: the same values)
       if (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count) {
         call_and_resume(k);
       } else {
@@ -519,7 +534,13 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     for (size_t k = 0; k < seg.count; ++k) {
       if (!Impl::is_memory(run[k].native)) continue;
       g.L(seg.fallback[k]);
+      if (k > 0) g.sync_pc(run, k - 1);
       call_and_resume(k);
+    }
+    for (size_t k = 1; k < seg.count; ++k) {
+      g.L(seg.late[k]);
+      g.sync_pc(run, k - 1);
+      g.jmp(*g.exit, Xbyak::CodeGenerator::T_NEAR);
     }
     for (size_t k = 0; k < seg.count; ++k) g.stall_stub(run[k], k, seg);
   }

@@ -30,12 +30,12 @@ struct Pipe {
 
 // One native segment's pieces emitted after the block's main path: its steps as calls (the slow
 // path; `slow[k]` enters it at instruction k), a load's or store's call when the native code
-// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), and the
-// shadow-stall stubs.
+// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), the
+// shadow-stall stubs, and the exits when the deadline comes before instruction k (`late[k]`).
 struct Segment {
   size_t first, count;
   Xbyak::Label end;
-  std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back;
+  std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back, late;
   std::vector<Pipe> pipe;  // per instruction
 };
 
@@ -84,6 +84,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
+  void sync_pc(std::span<const Step> run, size_t j);
   void stall_stub(const Step& s, size_t k, Segment& seg);
   void chain();
   static constexpr size_t kPrologueBytes = 64;

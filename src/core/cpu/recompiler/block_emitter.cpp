@@ -4,6 +4,7 @@
 #include "core/cpu/recompiler/block_emitter.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
@@ -15,12 +16,33 @@ namespace psx {
 using Xbyak::Label;
 using Impl = BlockEmitter::Impl;
 
+void Impl::flush() {
+  mov(qword[r12 + lay.now], now);
+  mov(cpu64(lay.instructions), instructions);
+}
+
+void Impl::reload() {
+  mov(now, qword[r12 + lay.now]);
+  mov(deadline, qword[r12 + lay.deadline]);
+  mov(instructions, cpu64(lay.instructions));
+}
+
+// Whatever is called may read the time (a timer's counter, a step's own bookkeeping) or move it
+// (a step, a DMA), a step may book an event before the deadline, and a step counts its
+// instruction (and hooks or idle skipping may read the count). The GTE's and the code
+// pages' functions do neither today, but going through here keeps that from mattering.
+void Impl::call_out(const void* fn) {
+  flush();
+  mov(rax, reinterpret_cast<u64>(fn));
+  call(rax);
+  reload();
+}
+
 void Impl::call_step(const Step& s) {
   mov(rdi, rbx);
   mov(esi, s.pc);
   mov(edx, s.word);
-  mov(rax, reinterpret_cast<u64>(s.fn));
-  call(rax);
+  call_out(reinterpret_cast<const void*>(s.fn));
   test(al, al);
   jz(*exit, T_NEAR);
 }
@@ -155,8 +177,7 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   jne(fail, T_NEAR);
   cmp(byte[rbx + lay.hook_armed], 0);
   jne(fail, T_NEAR);
-  mov(rax, qword[r12 + lay.now]);
-  cmp(rax, qword[r12 + lay.deadline]);
+  cmp(now, deadline);
   jae(fail, T_NEAR);
   mov(eax, cpu32(lay.new_load_reg));
   or_(eax, cpu32(lay.new_load_val));
@@ -248,15 +269,14 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   const NativeOp op = s.native;
   const Pipe& pipe = seg.pipe[k];
   if (k > 0) {
-    mov(rax, now());
-    cmp(rax, qword[r12 + lay.deadline]);
-    jae(*exit, T_NEAR);
+    cmp(now, deadline);
+    jae(seg.late[k], T_NEAR);
     // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
     // which fetches (and fills) it.
     if ((s.pc & 15) == 0) line_check(rest, seg.slow[k]);
   }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
-  mov(cpu32(lay.current_pc), s.pc);
+  if (k == 0 || after_branch) mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
   if (k == 0) {
     mov(al, byte[rbx + lay.next_in_delay]);
     mov(byte[rbx + lay.in_delay_slot], al);
@@ -267,8 +287,8 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   } else if (k == 1) {
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
-  inc(qword[rbx + lay.instructions]);
-  inc(now());
+  inc(instructions);
+  inc(now);
   cmp(cpu32(lay.shadow_reg), 0);
   jne(seg.stall[k], T_NEAR);
   L(seg.stall_back[k]);
@@ -277,9 +297,8 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     mov(cpu32(lay.pc), eax);
     add(eax, 4);
     mov(cpu32(lay.next_pc), eax);
-  } else {
-    mov(cpu32(lay.pc), s.pc + 4);
-    mov(cpu32(lay.next_pc), s.pc + 8);
+  } else if (is_branch(op)) {
+    mov(cpu32(lay.next_pc), s.pc + 8);  // a branch not taken leaves it so; its delay slot reads it
   }
   const u32 d = dest(op, s.word);
   if (is_branch(op)) branch(op, s.pc, s.word);
@@ -296,6 +315,19 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     cmp(cpu32(lay.pc), s.pc + 4);
     jne(*exit, T_NEAR);
   }
+}
+
+// current_pc_, pc_ and next_pc_ after instruction j of a segment, which native code writes only
+// where someone outside the block can look (sync_pc() at a segment's end, before a slow or
+// fallback call, at a deadline exit): the segment's first instruction and a delay slot write
+// theirs, which depend on where the CPU came from; any other one's are its address, the next
+// and the one after, except that a branch has set next_pc_ itself. Nothing called from inside
+// an instruction reads them (the GTE, the code pages).
+void Impl::sync_pc(std::span<const Step> run, size_t j) {
+  if (j == 0 || is_branch(run[j - 1].native)) return;
+  mov(cpu32(lay.current_pc), run[j].pc);
+  mov(cpu32(lay.pc), run[j].pc + 4);
+  if (!is_branch(run[j].native)) mov(cpu32(lay.next_pc), run[j].pc + 8);
 }
 
 // execute_at_pc()'s load delay slot after the instruction: the previous instruction's load
@@ -332,8 +364,7 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
   const Pipe& pipe = seg.pipe[k];
   L(seg.stall[k]);
   Label stall, wait;
-  mov(rax, now());
-  cmp(rax, cpu64(lay.load_done_at));
+  cmp(now, cpu64(lay.load_done_at));
   jb(stall);  // not yet done: maybe wait
   mov(cpu32(lay.shadow_reg), 0);
   jmp(seg.stall_back[k], T_NEAR);
@@ -357,8 +388,7 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
   jmp(seg.stall_back[k], T_NEAR);
   L(wait);
   if (any) {
-    mov(rax, cpu64(lay.load_done_at));
-    mov(now(), rax);
+    mov(now, cpu64(lay.load_done_at));
     mov(cpu32(lay.shadow_reg), 0);
     jmp(seg.stall_back[k], T_NEAR);
   }
@@ -367,14 +397,14 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
 // The block's end: RecompilerT::run()'s next loop pass. When it would call the block that
 // find()'s table holds for the pc (no stop, time before the deadline, no idle-loop head to hand
 // to IdleSkip, no written code pages whose blocks must be dropped first), the block jumps there
-// itself, a tail call in the same frame; otherwise it returns to the dispatcher, which makes the
-// same checks and does what they ask.
+// itself, past that block's prologue (kPrologueBytes), in the same frame and with the time and
+// count still in their registers; otherwise it writes them back and returns to the dispatcher,
+// which makes the same checks and does what they ask.
 void Impl::chain() {
   Label back, no_loop_head;
   cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
-  mov(rax, now());
-  cmp(rax, qword[r12 + lay.deadline]);
+  cmp(now, deadline);
   jae(back, T_NEAR);
   mov(eax, cpu32(lay.pc));
   cmp(eax, cpu32(lay.loop_head));
@@ -393,15 +423,33 @@ void Impl::chain() {
   cmp(dword[rdx + rcx], eax);
   jne(back, T_NEAR);
   mov(rax, qword[rdx + rcx + 8]);
-  pop(r13);
-  pop(r12);
-  pop(rbx);
+  add(rax, kPrologueBytes);
   jmp(rax);
   L(back);
-  pop(r13);
-  pop(r12);
-  pop(rbx);
+  flush();
+  epilogue();
   ret();
+}
+
+// Six callee-saved pushes and 8 bytes more leave the stack 16-byte aligned at each call, as the
+// ABI wants (the return address made it 8 off). Padded to kPrologueBytes, where a block linked
+// from another (chain()) enters with the frame made and the registers loaded: every block of
+// an emitter runs the same CPU on the same scheduler.
+void Impl::prologue(const Layout& layout) {
+  const size_t start = getSize();
+  for (const Xbyak::Reg64& r : {rbx, r12, r13, r14, r15, rbp}) push(r);
+  sub(rsp, 8);
+  mov(rbx, reinterpret_cast<u64>(layout.context));
+  mov(r12, reinterpret_cast<u64>(layout.sched));
+  reload();
+  const size_t used = getSize() - start;  // at most 57 bytes (the longest encodings)
+  if (used > kPrologueBytes) throw std::logic_error("recompiler: block prologue longer than kPrologueBytes");
+  nop(kPrologueBytes - used);
+}
+
+void Impl::epilogue() {
+  add(rsp, 8);
+  for (const Xbyak::Reg64& r : {rbp, r15, r14, r13, r12, rbx}) pop(r);
 }
 
 BlockEmitter::BlockEmitter(size_t buffer_bytes) : impl_(std::make_unique<Impl>(buffer_bytes)) {}
@@ -419,12 +467,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.exit = &done;
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
-  // Three callee-saved pushes leave the stack 16-byte aligned at each call, as the ABI wants.
-  g.push(g.rbx);
-  g.push(g.r12);
-  g.push(g.r13);
-  g.mov(g.rbx, reinterpret_cast<u64>(layout.context));
-  g.mov(g.r12, reinterpret_cast<u64>(layout.sched));
+  g.prologue(layout);
   std::vector<Segment> segments;
   segments.reserve(steps.size());  // labels must not move once used
   for (size_t i = 0; i < steps.size();) {
@@ -441,6 +484,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.resume = std::vector<Label>(seg.count);
     seg.stall = std::vector<Label>(seg.count);
     seg.stall_back = std::vector<Label>(seg.count);
+    seg.late = std::vector<Label>(seg.count);
     seg.pipe.resize(seg.count);
     for (size_t k = 1; k < seg.count; ++k) {
       const Step& prev = steps[seg.first + k - 1];
@@ -453,6 +497,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       g.L(seg.resume[k]);
       g.native(run.subspan(k), k, seg.first + k + 1 == steps.size(), after_branch, seg);
     }
+    g.sync_pc(run, seg.count - 1);
     g.L(seg.end);
   }
   g.L(done);
@@ -479,6 +524,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     };
     for (size_t k = 0; k < seg.count; ++k) {
       g.L(seg.slow[k]);
+      if (k > 0) g.sync_pc(run, k - 1);  // from native code (or the call before: the same values)
       if (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count) {
         call_and_resume(k);
       } else {
@@ -488,7 +534,13 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     for (size_t k = 0; k < seg.count; ++k) {
       if (!Impl::is_memory(run[k].native)) continue;
       g.L(seg.fallback[k]);
+      if (k > 0) g.sync_pc(run, k - 1);
       call_and_resume(k);
+    }
+    for (size_t k = 1; k < seg.count; ++k) {
+      g.L(seg.late[k]);
+      g.sync_pc(run, k - 1);
+      g.jmp(*g.exit, Xbyak::CodeGenerator::T_NEAR);
     }
     for (size_t k = 0; k < seg.count; ++k) g.stall_stub(run[k], k, seg);
   }

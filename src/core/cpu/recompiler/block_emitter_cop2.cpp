@@ -13,11 +13,9 @@ using Impl = BlockEmitter::Impl;
 
 // CpuT::wait_gte(): time goes on to when the GTE's command in progress ends.
 void Impl::wait_gte() {
-  mov(rax, now());
   mov(rcx, cpu64(lay.gte_ready_at));
-  cmp(rax, rcx);
-  cmovb(rax, rcx);
-  mov(now(), rax);
+  cmp(now, rcx);
+  cmovb(now, rcx);
 }
 
 // MFC2/CFC2 leave the value in eax (native() makes it the pending load).
@@ -29,22 +27,19 @@ void Impl::cop2(NativeOp op, u32 i) {
     case NativeOp::Mfc2:
     case NativeOp::Cfc2:
       mov(esi, rd(i));
-      mov(rax, reinterpret_cast<u64>(op == NativeOp::Mfc2 ? lay.gte_read_data : lay.gte_read_control));
-      call(rax);
+      call_out(reinterpret_cast<const void*>(op == NativeOp::Mfc2 ? lay.gte_read_data : lay.gte_read_control));
       break;
     case NativeOp::Mtc2:
     case NativeOp::Ctc2:
       mov(esi, rd(i));
       mov(edx, reg(rt(i)));
-      mov(rax, reinterpret_cast<u64>(op == NativeOp::Mtc2 ? lay.gte_write_data : lay.gte_write_control));
-      call(rax);
+      call_out(reinterpret_cast<const void*>(op == NativeOp::Mtc2 ? lay.gte_write_data : lay.gte_write_control));
       break;
     default:  // a command: the GTE is busy for the cycles it returns
       mov(esi, i & 0x1FFFFFF);
-      mov(rax, reinterpret_cast<u64>(lay.gte_execute));
-      call(rax);
+      call_out(reinterpret_cast<const void*>(lay.gte_execute));
       mov(eax, eax);
-      add(rax, now());
+      add(rax, now);
       mov(cpu64(lay.gte_ready_at), rax);
       break;
   }

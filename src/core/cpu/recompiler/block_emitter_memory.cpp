@@ -98,8 +98,7 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   Label scratchpad, done;
   test(r13d, kNotRam);
   jnz(scratchpad, T_NEAR);
-  mov(rcx, now());
-  add(rcx, lay.load_issue);  // issue_end + 1
+  lea(rcx, ptr[now + lay.load_issue]);  // issue_end + 1
   mov(rdx, cpu64(lay.load_done_at));
   if (t != 0 && pipe.dynamic) {
     xor_(eax, eax);
@@ -111,8 +110,7 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   }
   cmp(rcx, rdx);
   cmovb(rcx, rdx);  // the access's start
-  lea(rax, ptr[rcx - 1]);
-  mov(now(), rax);
+  lea(now, ptr[rcx - 1]);
   add(rcx, lay.load_bus);
   mov(cpu64(lay.load_done_at), rcx);
   mov(cpu32(lay.shadow_reg), t);
@@ -123,11 +121,9 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   read_width(*this, op);
   jmp(done, T_NEAR);
   L(scratchpad);
-  mov(rax, now());
   mov(rcx, cpu64(lay.load_done_at));
-  cmp(rax, rcx);
-  cmovb(rax, rcx);
-  mov(now(), rax);
+  cmp(now, rcx);
+  cmovb(now, rcx);
   mov(ecx, r13d);
   and_(ecx, kScratchMask & word_mask);
   mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
@@ -203,8 +199,7 @@ void Impl::store(NativeOp op, u32 i) {
     wait_gte();
     mov(rdi, reinterpret_cast<u64>(lay.gte));
     mov(esi, cpu_detail::rt(i));
-    mov(rax, reinterpret_cast<u64>(lay.gte_read_data));
-    call(rax);
+    call_out(reinterpret_cast<const void*>(lay.gte_read_data));
   } else {
     mov(eax, reg(cpu_detail::rt(i)));
   }
@@ -231,8 +226,7 @@ void Impl::store(NativeOp op, u32 i) {
   jnc(done, T_NEAR);
   mov(rdi, reinterpret_cast<u64>(lay.code_pages));
   mov(esi, ecx);
-  mov(rax, reinterpret_cast<u64>(lay.code_write));
-  call(rax);
+  call_out(reinterpret_cast<const void*>(lay.code_write));
   jmp(done, T_NEAR);
   L(scratchpad);
   and_(ecx, kScratchMask & word_mask);
@@ -245,14 +239,13 @@ void Impl::store(NativeOp op, u32 i) {
 // (RAM: kRamRead cycles; the scratchpad: none), wait_gte(), and the GTE register write.
 void Impl::lwc2(u32 i) {
   Label scratchpad, read;
-  mov(rax, now());
   mov(rcx, cpu64(lay.load_done_at));
-  cmp(rax, rcx);
-  cmovb(rax, rcx);
+  cmp(now, rcx);
+  cmovb(now, rcx);
   mov(ecx, r13d);
   test(r13d, kNotRam);
   jnz(scratchpad);
-  add(rax, lay.ram_read);
+  add(now, lay.ram_read);
   and_(ecx, kRamMask);
   mov(rdx, reinterpret_cast<u64>(lay.ram));
   jmp(read);
@@ -260,14 +253,12 @@ void Impl::lwc2(u32 i) {
   and_(ecx, kScratchMask);
   mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
   L(read);
-  mov(now(), rax);
   mov(r8d, dword[rdx + rcx]);
   wait_gte();
   mov(rdi, reinterpret_cast<u64>(lay.gte));
   mov(esi, cpu_detail::rt(i));
   mov(edx, r8d);
-  mov(rax, reinterpret_cast<u64>(lay.gte_write_data));
-  call(rax);
+  call_out(reinterpret_cast<const void*>(lay.gte_write_data));
 }
 
 // MFHI/MFLO (eax, after wait_muldiv: time goes on to when a multiply or divide is done) and
@@ -279,11 +270,9 @@ void Impl::hilo(NativeOp op, u32 i) {
     mov(cpu32(field), eax);
     return;
   }
-  mov(rax, now());
   mov(rcx, cpu64(lay.muldiv_ready_at));
-  cmp(rax, rcx);
-  cmovb(rax, rcx);
-  mov(now(), rax);
+  cmp(now, rcx);
+  cmovb(now, rcx);
   mov(eax, cpu32(field));
 }
 

@@ -41,8 +41,7 @@ void Impl::muldiv(NativeOp op, u32 i) {
     else mul(ecx);
     mov(cpu32(lay.hi), edx);
     mov(cpu32(lay.lo), eax);
-    mov(rax, now());
-    add(rax, r8);
+    lea(rax, ptr[now + r8]);
     mov(cpu64(lay.muldiv_ready_at), rax);
     return;
   }
@@ -79,8 +78,7 @@ void Impl::muldiv(NativeOp op, u32 i) {
   }
   mov(cpu32(lay.lo), eax);
   L(done);
-  mov(rax, now());
-  add(rax, cpu_detail::kDivideCycles);
+  lea(rax, ptr[now + cpu_detail::kDivideCycles]);
   mov(cpu64(lay.muldiv_ready_at), rax);
 }
 

@@ -4,7 +4,10 @@
 // block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
 // commands). Only they
 // include this header (and with it xbyak). Registers while a block runs: rbx = the context (the
-// CPU), r12 = the scheduler, r13d = a load's or store's address.
+// CPU), r12 = the scheduler, r13d = a load's or store's address, r14 = the scheduler's time and
+// r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
+// native code runs: flush() writes the time and the count back before anything outside the
+// block can look, reload() reads all three after a call).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -27,12 +30,12 @@ struct Pipe {
 
 // One native segment's pieces emitted after the block's main path: its steps as calls (the slow
 // path; `slow[k]` enters it at instruction k), a load's or store's call when the native code
-// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), and the
-// shadow-stall stubs.
+// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), the
+// shadow-stall stubs, and the exits when the deadline comes before instruction k (`late[k]`).
 struct Segment {
   size_t first, count;
   Xbyak::Label end;
-  std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back;
+  std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back, late;
   std::vector<Pipe> pipe;  // per instruction
 };
 
@@ -45,7 +48,15 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Xbyak::Address reg(u32 r) { return dword[rbx + lay.regs + 4 * int(r)]; }
   Xbyak::Address cpu32(int off) { return dword[rbx + off]; }
   Xbyak::Address cpu64(int off) { return qword[rbx + off]; }
-  Xbyak::Address now() { return qword[r12 + lay.now]; }
+  // Time lives in registers inside a block: `now` counts native instructions' cycles without a
+  // memory read-modify-write per instruction and `deadline` is compared without loads.
+  const Xbyak::Reg64& now = r14;
+  const Xbyak::Reg64& deadline = r15;
+  const Xbyak::Reg64& instructions = rbp;
+  void flush();
+  void reload();
+  // A call out of native code to fn (arguments already in place): time flushed before, reloaded after.
+  void call_out(const void* fn);
 
   static bool is_branch(NativeOp op) { return op >= NativeOp::Beq; }
   static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lwr; }
@@ -73,8 +84,12 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
+  void sync_pc(std::span<const Step> run, size_t j);
   void stall_stub(const Step& s, size_t k, Segment& seg);
   void chain();
+  static constexpr size_t kPrologueBytes = 64;
+  void prologue(const Layout& layout);
+  void epilogue();
   // block_emitter_memory.cpp
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
   void load(NativeOp op, u32 i, const Pipe& pipe);

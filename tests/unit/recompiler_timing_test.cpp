@@ -1,0 +1,160 @@
+// The recompiler's time and position keeping, differentially: native code holds the scheduler's
+// time, its deadline and the instruction count in host registers and writes the pc, next_pc and
+// current_pc only where something outside the block can look (block_emitter.cpp). A probe event
+// booked every few cycles makes the CPU return to the dispatcher in the middle of native
+// segments, and at every return the CPU's whole saved state (registers, pc, next_pc, current_pc,
+// delay-slot flags, load delay and shadow, instruction count) and the time must be what they are
+// under the interpreter at the same return. The code reads a timer's counter (a call out that
+// reads the time), writes a timer's target and mode (a call out that books an interrupt event
+// a few cycles ahead, moving the deadline under the block's feet) and reads I_STAT (which shows
+// whether that event ran on time), among native ALU operations,
+// loads (the load shadow), multiplies and divides (their wait), GTE commands and transfers
+// (calls out of native code) and branches.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/state.h"
+#include "recompiler_test_util.h"
+
+namespace {
+
+using namespace recompiler_test;
+using psx::Cycles;
+using psx::Scheduler;
+using psx::u8;
+
+constexpr u32 kBase = 0x80010000;
+constexpr u32 kS5 = 21, kS6 = 22, kS7 = 23, kT3 = 11;
+constexpr u32 kTimers = 0x1F801100, kIStat = 0x1F801070, kScratchpad = 0x1F800000;
+
+// `length` instructions on t0-t3 and r0, with s5 = the timers, s6 = the scratchpad, s7 = RAM data.
+std::vector<u32> timing_stream(u32 seed, u32 length) {
+  std::mt19937 rng(seed);
+  auto pick = [&](u32 n) { return u32(rng() % n); };
+  auto reg = [&]() { return pick(6) == 0 ? 0u : kT0 + pick(4); };
+  std::vector<u32> code;
+  while (code.size() < length) {
+    const u32 s = reg(), t = reg(), d = reg(), imm = rng() & 0xFFFF, kind = pick(24);
+    if (kind < 6) {  // ADDIU SLTI SLTIU ANDI ORI XORI LUI
+      code.push_back(itype(0x09 + pick(7), s, d, imm));
+    } else if (kind < 10) {  // ADDU SUBU AND OR XOR NOR SLT SLTU, shifts
+      static constexpr u32 kFuncts[] = {0x21, 0x23, 0x24, 0x25, 0x26, 0x27, 0x2A, 0x2B, 0x00, 0x04};
+      code.push_back(rtype(kFuncts[pick(10)], s, t, d, pick(32)));
+    } else if (kind < 13) {  // LW LB LHU from RAM (the load shadow) or LW from the scratchpad
+      static constexpr u32 kLoads[] = {0x23, 0x20, 0x25};
+      code.push_back(pick(4) == 0 ? itype(0x23, kS6, d, imm & 0x3FC) : itype(kLoads[pick(3)], kS7, d, imm & 0x3FC));
+    } else if (kind < 14) {  // SW to RAM or the scratchpad
+      code.push_back(itype(0x2B, pick(2) ? kS7 : kS6, t, imm & 0x3FC));
+    } else if (kind < 15) {  // MULT MULTU DIV DIVU, MFHI MFLO (the wait for the result)
+      code.push_back(pick(2) ? rtype(0x18 + pick(4), s, t, 0) : rtype(pick(2) ? 0x10 : 0x12, 0, 0, d));
+    } else if (kind < 16) {  // a GTE command (RTPS, NCLIP, SQR, AVSZ3), MFC2/MTC2, LWC2 (waits, calls out)
+      static constexpr u32 kGte[] = {0x4A180001, 0x4A280030, 0x4AA00428, 0x4B68002D};
+      switch (pick(4)) {
+        case 0: code.push_back(kGte[pick(4)]); break;
+        case 1: code.push_back(itype(0x12, 0, d, 0) | pick(32) << 11); break;  // MFC2
+        case 2: code.push_back(itype(0x12, 4, t, 0) | pick(32) << 11); break;  // MTC2
+        default: code.push_back(itype(0x32, kS7, pick(32), imm & 0x3FC)); break;  // LWC2
+      }
+    } else if (kind < 17) {  // read timer 0's or timer 1's counter (the time, through a call)
+      code.push_back(itype(0x23, kS5, d, pick(2) ? 0x00 : 0x10));
+    } else if (kind < 18) {  // read I_STAT (has timer 0's IRQ come, exactly then?), or clear it
+      code.push_back(pick(3) ? itype(0x23, kS5, d, kIStat - kTimers) : itype(0x2B, kS5, 0, kIStat - kTimers));
+    } else if (kind < 19) {  // timer 0: a near target, then IRQ at target, repeat, reset there
+      code.push_back(itype(0x0D, 0, kT3, 2 + pick(60)));
+      code.push_back(itype(0x2B, kS5, kT3, 0x08));
+      code.push_back(itype(0x0D, 0, kT3, 0x58));
+      code.push_back(itype(0x2B, kS5, kT3, 0x04));
+    } else if (kind < 22) {  // a short forward BEQ, BNE, BLEZ, BGTZ
+      code.push_back(itype(0x04 + pick(4), s, t, 1 + pick(4)));
+    } else if (kind < 23) {  // BLTZ, BGEZ, BLTZAL, BGEZAL forward
+      code.push_back(itype(0x01, s, (pick(2) ? 0x10 : 0) | pick(2), 1 + pick(4)));
+    } else {  // JAL a little forward, at most to the jump back
+      const u32 to = std::min(u32(code.size()) + 2 + pick(4), length);
+      code.push_back(j(kBase + 4 * to) | 1u << 26);
+    }
+  }
+  code.resize(length);
+  // Back to the start, three times over: a branch near the end may reach 5 words past it.
+  for (int k = 0; k < 3; ++k) {
+    code.push_back(j(kBase));
+    code.push_back(kNop);
+  }
+  return code;
+}
+
+// The CPU's saved state and the time at every firing of a probe event that books itself again
+// 1 to `gap` cycles later (kProbes times at most), over `frames` frames; the whole console's
+// state_of() last.
+constexpr size_t kProbes = 20000;
+
+std::vector<std::vector<u8>> probe_trace(const std::vector<u32>& code, u32 seed, bool recompiled, u32 gap, int frames) {
+  Console c;
+  if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+  std::vector<u32> regs = random_regs(seed);
+  regs[kS5 - 1] = kTimers;
+  regs[kS6 - 1] = kScratchpad;
+  // CU2 (the GTE on), IEc and IM2: timer 0's IRQ interrupts the code where it comes, so that
+  // running past a deadline the block should have seen shows as a later EPC.
+  load_code(c, code, kBase, 0x40000401, regs);
+  c.irq().write(4, 0x10);  // I_MASK: timer 0
+  // The handler (the code raises no exceptions, so it only ever sees the interrupt): counts it
+  // in s1, acknowledges every IRQ and returns to EPC.
+  const std::vector<u32> handler = {itype(0x0F, 0, 27, 0x1F80), itype(0x2B, 27, 0, 0x1070),  // sw r0, I_STAT
+                                    itype(0x10, 0, 26, 0) | 14 << 11, kNop,                    // mfc0 k0, epc
+                                    itype(0x09, kS1, kS1, 1), rtype(0x08, 26, 0, 0), 0x42000010};
+  for (u32 i = 0; i < handler.size(); ++i) c.write32(0x80000080 + 4 * i, handler[i]);
+  std::mt19937 rng(seed * 31 + gap);
+  for (u32 a = 0; a < 0x400; a += 4) c.write32(0x80100000 + a, u32(rng()));
+  std::vector<std::vector<u8>> trace;
+  Scheduler& sched = c.scheduler();
+  Scheduler::Handle probe = -1;
+  probe = sched.add_event("test.probe", [&](Cycles late) {
+    psx::StateIO io;
+    c.cpu().do_state(io);
+    std::vector<u8> snap = io.buffer();
+    for (psx::u64 v : {psx::u64(sched.now()), psx::u64(late)})
+      for (int b = 0; b < 8; ++b) snap.push_back(u8(v >> (8 * b)));
+    trace.push_back(std::move(snap));
+    if (trace.size() < kProbes) sched.schedule(probe, 1 + rng() % gap);
+  });
+  sched.schedule(probe, 1 + rng() % gap);
+  c.run_frames(frames);
+  trace.push_back(state_of(c));
+  return trace;
+}
+
+void expect_same_trace(const std::vector<u32>& code, u32 seed, u32 gap, int frames) {
+  const auto ref = probe_trace(code, seed, false, gap, frames);
+  const auto rec = probe_trace(code, seed, true, gap, frames);
+  ASSERT_GT(ref.size(), 1000u);  // the probe keeps firing
+  ASSERT_EQ(ref.size(), rec.size()) << "the probe fired a different number of times";
+  for (size_t k = 0; k < ref.size(); ++k)
+    ASSERT_TRUE(ref[k] == rec[k]) << "state differs at return " << k << " of " << ref.size();
+}
+
+TEST(RecompilerTiming, ProbedRandomStreams) {
+  for (u32 seed = 1; seed <= 10; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_trace(timing_stream(seed, 600), seed, 2 + seed * 7, 1);
+  }
+}
+
+// Straight ALU runs a whole block long, probed every 1 to 3 cycles: a return to the dispatcher
+// after nearly every native instruction, at every position within a segment.
+TEST(RecompilerTiming, ProbedEveryFewCycles) {
+  std::vector<u32> code;
+  std::mt19937 rng(7);
+  for (u32 i = 0; i < 200; ++i) {
+    const u32 s = kT0 + rng() % 4, d = kT0 + rng() % 4;
+    code.push_back(i % 9 == 4 ? itype(0x23, kS7, d, (rng() % 256) * 4) : itype(0x09, s, d, rng() & 0xFFFF));
+  }
+  code.push_back(j(kBase));
+  code.push_back(kNop);
+  expect_same_trace(code, 3, 3, 1);
+}
+
+}  // namespace

@@ -53,9 +53,15 @@ class Reverb {
   void push_input(s32 in_left, s32 in_right);
   void end_tick();
   s16 process_side(u32 side, s32 input, u8* ram, bool write_enable, IrqWatch& irq);
-  u32 address(s32 rel_halfwords) const;
-  s16 read(u32 halfword, const u8* ram, IrqWatch& irq) const;
-  void write(u32 halfword, s32 value, u8* ram, bool write_enable, IrqWatch& irq) const;
+  // The work area as one tick sees it: ESA's start, its size and the buffer address's offset
+  // into it, all in halfwords; at() turns a register-relative offset into a halfword address.
+  struct Area {
+    Area(u16 base, u32 current);
+    u32 at(s32 rel_halfwords) const;
+    s32 start, size, offset;
+  };
+  static s16 read(u32 halfword, const u8* ram, IrqWatch& irq);
+  static void write(u32 halfword, s32 value, u8* ram, bool write_enable, IrqWatch& irq);
   s32 downsample(u32 side) const;
   s32 upsample(u32 side, bool fresh) const;
 

@@ -101,8 +101,12 @@ s16 Reverb::process_side(u32 side, s32 input, u8* ram, bool we, IrqWatch& irq) {
     if (iir == -0x8000) result = -result;
     write(area.at(m), result, ram, we, irq);
   };
-  reflect(mLSAME + side, dLSAME + side);
-  reflect(mLDIFF + side, dLDIFF + other);
+  // A reflection's only effects are its write and the IRQ checks of its accesses: with writes
+  // off (ATTR bit 7) and no IRQ watched it changes nothing, so it is left out.
+  if (we || irq.enabled) {
+    reflect(mLSAME + side, dLSAME + side);
+    reflect(mLDIFF + side, dLDIFF + other);
+  }
 
   s32 out = sat((vol(vCOMB1) * rd(reg(mLCOMB1 + side)) + vol(vCOMB2) * rd(reg(mLCOMB2 + side)) +
                  vol(vCOMB3) * rd(reg(mLCOMB3 + side)) + vol(vCOMB4) * rd(reg(mLCOMB4 + side))) >> 15);

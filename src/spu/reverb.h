@@ -25,7 +25,8 @@ class Reverb {
   void write_base(u16 value);
   u16 base() const { return base_; }
 
-  // Where a reverb access touched sound RAM this tick at the IRQ address (8-byte units).
+  // Where a reverb access touched sound RAM this tick at the IRQ address (8-byte units). Enabled
+  // only where a hit would matter (IRQ9 could fire); disabled, reads have no effect at all.
   struct IrqWatch {
     bool enabled = false;
     u32 unit = 0;

@@ -27,25 +27,6 @@ void Reverb::write_base(u16 value) {
 Reverb::Area::Area(u16 base, u32 current)
     : start(static_cast<s32>(base) * 4), size(0x40000 - start), offset(static_cast<s32>(current) - start) {}
 
-u32 Reverb::Area::at(s32 rel) const {
-  // psx-spx "SPU Reverb Formula": addresses wrap inside ESA..7FFFEh
-  // (halfwords start .. 3FFFFh). |offset + rel| stays below 2^20, so 32-bit arithmetic is exact.
-  // Within one wrap either way (every delay shorter than the area, as in every game's preset) a
-  // subtraction or addition gives the remainder; only larger distances need the division.
-  s32 off = offset + rel;
-  if (off >= size) {
-    off -= size;
-    if (off >= size) off %= size;
-  } else if (off < 0) {
-    off += size;
-    if (off < 0) {
-      off %= size;
-      if (off < 0) off += size;
-    }
-  }
-  return static_cast<u32>(start + off);
-}
-
 s16 Reverb::read(u32 hw, const u8* ram, IrqWatch& irq) {
   if (irq.enabled && (hw >> 2) == irq.unit) irq.hit = true;
   return static_cast<s16>(ram[hw * 2] | ram[hw * 2 + 1] << 8);

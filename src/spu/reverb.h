@@ -58,7 +58,7 @@ class Reverb {
   // into it, all in halfwords; at() turns a register-relative offset into a halfword address.
   struct Area {
     Area(u16 base, u32 current);
-    u32 at(s32 rel_halfwords) const;
+    u32 at(s32 rel_halfwords) const;  // inline below: 14 calls a tick
     s32 start, size, offset;
   };
   static s16 read(u32 halfword, const u8* ram, IrqWatch& irq);
@@ -77,5 +77,24 @@ class Reverb {
   // From 39 on, every tap downsample() reads is 0.
   u32 zero_inputs_ = 0;
 };
+
+inline u32 Reverb::Area::at(s32 rel) const {
+  // psx-spx "SPU Reverb Formula": addresses wrap inside ESA..7FFFEh
+  // (halfwords start .. 3FFFFh). |offset + rel| stays below 2^20, so 32-bit arithmetic is exact.
+  // Within one wrap either way (every delay shorter than the area, as in every game's preset) a
+  // subtraction or addition gives the remainder; only larger distances need the division.
+  s32 off = offset + rel;
+  if (off >= size) {
+    off -= size;
+    if (off >= size) off %= size;
+  } else if (off < 0) {
+    off += size;
+    if (off < 0) {
+      off %= size;
+      if (off < 0) off += size;
+    }
+  }
+  return static_cast<u32>(start + off);
+}
 
 }  // namespace psx::spu

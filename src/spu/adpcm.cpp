@@ -21,12 +21,6 @@ u32 effective_shift(u8 header) {
 }
 u32 effective_filter(u8 header) { return std::min<u32>((header >> 4) & 7, 4); }
 
-s32 nibble_at(const u8* block, u32 i) {
-  u8 byte = block[2 + i / 2];
-  u32 nibble = (i & 1) ? (byte >> 4) : (byte & 0xF);
-  return static_cast<s32>(nibble << 28) >> 28;  // signed 4-bit
-}
-
 // One decoder step: sample = (nibble << 12 >> shift) + (old*pos + older*neg + 32) >> 6.
 s16 predict(s32 nibble, u32 shift, u32 filter, const AdpcmHistory& h) {
   s32 s = (nibble * (1 << 12)) >> shift;
@@ -64,14 +58,33 @@ s64 try_encode(const s16* in, u32 shift, u32 filter, AdpcmHistory h, std::array<
 }  // namespace
 
 void decode_adpcm_block(const u8* block, AdpcmHistory& history, s16* out) {
-  const u32 shift = effective_shift(block[0]);
+  // The same steps as predict() (nibbles low first), with the weights and the history in
+  // registers. (nibble << 28) >> (16 + shift) is the signed nibble << 12 >> shift.
+  const u32 shift = 16 + effective_shift(block[0]);
   const u32 filter = effective_filter(block[0]);
-  for (u32 i = 0; i < kAdpcmBlockSamples; ++i) {
-    s16 s = predict(nibble_at(block, i), shift, filter, history);
-    out[i] = s;
-    history.older = history.old;
-    history.old = s;
+  const u8* data = block + 2;
+  if (filter == 0) {
+    // Filter 0 predicts (0 + 32) >> 6 = 0 and a shifted nibble always fits in 16 bits.
+    for (u32 i = 0; i < kAdpcmBlockSamples / 2; ++i) {
+      out[2 * i] = static_cast<s16>(static_cast<s32>(static_cast<u32>(data[i]) << 28) >> shift);
+      out[2 * i + 1] = static_cast<s16>(static_cast<s32>(static_cast<u32>(data[i] >> 4) << 28) >> shift);
+    }
+    history.old = out[kAdpcmBlockSamples - 1];
+    history.older = out[kAdpcmBlockSamples - 2];
+    return;
   }
+  const s32 pos = kFilterPos[filter], neg = kFilterNeg[filter];
+  s32 old = history.old, older = history.older;
+  for (u32 i = 0; i < kAdpcmBlockSamples; ++i) {
+    const u32 nibble = (data[i / 2] >> ((i & 1) * 4)) & 0xF;
+    s32 s = static_cast<s32>(nibble << 28) >> shift;
+    s = std::clamp(s + ((old * pos + older * neg + 32) >> 6), -0x8000, 0x7FFF);
+    out[i] = static_cast<s16>(s);
+    older = old;
+    old = s;
+  }
+  history.old = static_cast<s16>(old);
+  history.older = static_cast<s16>(older);
 }
 
 std::vector<u8> encode_adpcm(const s16* pcm, size_t count, const AdpcmEncodeOptions& options) {

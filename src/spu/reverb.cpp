@@ -24,22 +24,15 @@ void Reverb::write_base(u16 value) {
   current_ = value * 4u;
 }
 
-u32 Reverb::address(s32 rel) const {
-  // Addresses wrap inside ESA..7FFFEh (halfwords base*4 .. 3FFFFh).
-  // |current - start + rel| stays below 2^20: 32-bit arithmetic is exact.
-  const s32 start = static_cast<s32>(base_) * 4;
-  const s32 size = 0x40000 - start;
-  s32 off = (static_cast<s32>(current_) - start + rel) % size;
-  if (off < 0) off += size;
-  return static_cast<u32>(start + off);
-}
+Reverb::Area::Area(u16 base, u32 current)
+    : start(static_cast<s32>(base) * 4), size(0x40000 - start), offset(static_cast<s32>(current) - start) {}
 
-s16 Reverb::read(u32 hw, const u8* ram, IrqWatch& irq) const {
+s16 Reverb::read(u32 hw, const u8* ram, IrqWatch& irq) {
   if (irq.enabled && (hw >> 2) == irq.unit) irq.hit = true;
   return static_cast<s16>(ram[hw * 2] | ram[hw * 2 + 1] << 8);
 }
 
-void Reverb::write(u32 hw, s32 value, u8* ram, bool write_enable, IrqWatch& irq) const {
+void Reverb::write(u32 hw, s32 value, u8* ram, bool write_enable, IrqWatch& irq) {
   // With the master enable off the hardware turns the write into a read.
   if (irq.enabled && (hw >> 2) == irq.unit) irq.hit = true;
   if (!write_enable) return;
@@ -69,33 +62,43 @@ s32 Reverb::upsample(u32 side, bool fresh) const {
 }
 
 s16 Reverb::process_side(u32 side, s32 input, u8* ram, bool we, IrqWatch& irq) {
+  // The work area's bounds and position are the same for all 14 accesses of this tick.
+  const Area area(base_, current_);
   auto reg = [&](u32 r) { return static_cast<s32>(regs[r]) * 4; };  // 8-byte units -> halfwords
   auto vol = [&](u32 r) { return static_cast<s32>(static_cast<s16>(regs[r])); };
-  auto rd = [&](s32 rel) { return static_cast<s32>(read(address(rel), ram, irq)); };
+  auto rd = [&](s32 rel) { return static_cast<s32>(read(area.at(rel), ram, irq)); };
   const u32 other = side ^ 1;
 
   const s32 in = sat(mul(input, vol(vLIN + side)));
   const s32 iir = vol(vIIR);
+  const s32 wall = vol(vWALL);
   // Same-side and different-side reflections: [m] = (in + [d]*vWALL - [m-2])*vIIR + [m-2].
-  auto reflect = [&](u32 m_reg, u32 d_reg) {
-    const s32 prev = rd(reg(m_reg) - 1);
-    const s32 x = sat(in + mul(rd(reg(d_reg)), vol(vWALL)) - prev);
+  auto reflect = [&](u32 m_reg, u32 d_reg) __attribute__((always_inline)) {
+    const s32 m = reg(m_reg);
+    const s32 prev = rd(m - 1);
+    const s32 x = sat(in + mul(rd(reg(d_reg)), wall) - prev);
     s32 result = sat(mul(x, iir) + prev);
     // psx-spx "Bug": with vIIR = -8000h the value written is negated.
     if (iir == -0x8000) result = -result;
-    write(address(reg(m_reg)), result, ram, we, irq);
+    write(area.at(m), result, ram, we, irq);
   };
-  reflect(mLSAME + side, dLSAME + side);
-  reflect(mLDIFF + side, dLDIFF + other);
+  // A reflection's only effects are its write and the IRQ checks of its accesses: with writes
+  // off (ATTR bit 7) and no IRQ watched it changes nothing, so it is left out.
+  if (we || irq.enabled) {
+    reflect(mLSAME + side, dLSAME + side);
+    reflect(mLDIFF + side, dLDIFF + other);
+  }
 
   s32 out = sat((vol(vCOMB1) * rd(reg(mLCOMB1 + side)) + vol(vCOMB2) * rd(reg(mLCOMB2 + side)) +
                  vol(vCOMB3) * rd(reg(mLCOMB3 + side)) + vol(vCOMB4) * rd(reg(mLCOMB4 + side))) >> 15);
   // Two all-pass filters: out -= vAPF*[m-d]; [m] = out; out = out*vAPF + [m-d].
-  auto all_pass = [&](u32 m_reg, u32 d_reg, u32 v_reg) {
-    const s32 delayed = rd(reg(m_reg) - reg(d_reg));
-    out = sat(out - mul(vol(v_reg), delayed));
-    write(address(reg(m_reg)), out, ram, we, irq);
-    out = sat(mul(out, vol(v_reg)) + delayed);
+  auto all_pass = [&](u32 m_reg, u32 d_reg, u32 v_reg) __attribute__((always_inline)) {
+    const s32 m = reg(m_reg);
+    const s32 v = vol(v_reg);
+    const s32 delayed = rd(m - reg(d_reg));
+    out = sat(out - mul(v, delayed));
+    write(area.at(m), out, ram, we, irq);
+    out = sat(mul(out, v) + delayed);
   };
   all_pass(mLAPF1 + side, dAPF1, vAPF1);
   all_pass(mLAPF2 + side, dAPF2, vAPF2);

@@ -25,7 +25,8 @@ class Reverb {
   void write_base(u16 value);
   u16 base() const { return base_; }
 
-  // Where a reverb access touched sound RAM this tick at the IRQ address (8-byte units).
+  // Where a reverb access touched sound RAM this tick at the IRQ address (8-byte units). Enabled
+  // only where a hit would matter (IRQ9 could fire); disabled, reads have no effect at all.
   struct IrqWatch {
     bool enabled = false;
     u32 unit = 0;
@@ -53,9 +54,15 @@ class Reverb {
   void push_input(s32 in_left, s32 in_right);
   void end_tick();
   s16 process_side(u32 side, s32 input, u8* ram, bool write_enable, IrqWatch& irq);
-  u32 address(s32 rel_halfwords) const;
-  s16 read(u32 halfword, const u8* ram, IrqWatch& irq) const;
-  void write(u32 halfword, s32 value, u8* ram, bool write_enable, IrqWatch& irq) const;
+  // The work area as one tick sees it: ESA's start, its size and the buffer address's offset
+  // into it, all in halfwords; at() turns a register-relative offset into a halfword address.
+  struct Area {
+    Area(u16 base, u32 current);
+    u32 at(s32 rel_halfwords) const;  // inline below: 14 calls a tick
+    s32 start, size, offset;
+  };
+  static s16 read(u32 halfword, const u8* ram, IrqWatch& irq);
+  static void write(u32 halfword, s32 value, u8* ram, bool write_enable, IrqWatch& irq);
   s32 downsample(u32 side) const;
   s32 upsample(u32 side, bool fresh) const;
 
@@ -70,5 +77,24 @@ class Reverb {
   // From 39 on, every tap downsample() reads is 0.
   u32 zero_inputs_ = 0;
 };
+
+inline u32 Reverb::Area::at(s32 rel) const {
+  // psx-spx "SPU Reverb Formula": addresses wrap inside ESA..7FFFEh
+  // (halfwords start .. 3FFFFh). |offset + rel| stays below 2^20, so 32-bit arithmetic is exact.
+  // Within one wrap either way (every delay shorter than the area, as in every game's preset) a
+  // subtraction or addition gives the remainder; only larger distances need the division.
+  s32 off = offset + rel;
+  if (off >= size) {
+    off -= size;
+    if (off >= size) off %= size;
+  } else if (off < 0) {
+    off += size;
+    if (off < 0) {
+      off %= size;
+      if (off < 0) off += size;
+    }
+  }
+  return static_cast<u32>(start + off);
+}
 
 }  // namespace psx::spu

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 
+#include "core/endian.h"
 #include "spu/spu.h"
 
 namespace psx {
@@ -71,17 +72,17 @@ void Spu::sample_voice(u32 i, bool needed, Mix& mix) {
 
 void Spu::write_capture_buffers(StereoSample cd, s16 voice1, s16 voice3) {
   // psx-spx "SPU Memory layout": CD left/right before volume, voices 1 and 3 after the
-  // envelope, 200h samples each. Capture IRQs need RAM_CTRL bits 2-3.
+  // envelope, 200h samples each. Capture IRQs need RAM_CTRL bits 2-3; the four halfwords lie in
+  // four different 8-byte units, so the IRQ checks come before the writes in any order.
   const u32 off = capture_pos_ * 2;
-  const bool irq_ok = (ram_control_ & 0xC) != 0;
-  const u16 values[4] = {static_cast<u16>(cd.left), static_cast<u16>(cd.right), static_cast<u16>(voice1),
-                         static_cast<u16>(voice3)};
-  for (u32 b = 0; b < 4; ++b) {
-    const u32 addr = b * 0x400 + off;
-    if (irq_ok) check_irq(addr);
-    ram_[addr] = static_cast<u8>(values[b]);
-    ram_[addr + 1] = static_cast<u8>(values[b] >> 8);
+  if ((ram_control_ & 0xC) != 0 && irq_possible()) {
+    for (u32 b = 0; b < 4; ++b) check_irq(b * 0x400 + off);
   }
+  u8* ram = ram_.data();
+  store_le16(ram + off, static_cast<u16>(cd.left));
+  store_le16(ram + 0x400 + off, static_cast<u16>(cd.right));
+  store_le16(ram + 0x800 + off, static_cast<u16>(voice1));
+  store_le16(ram + 0xC00 + off, static_cast<u16>(voice3));
   capture_pos_ = (capture_pos_ + 1) & 0x1FF;
 }
 
@@ -135,8 +136,8 @@ void Spu::generate_sample(u32 skip, u32 later) {
   if (later >= spu::Reverb::kTicksToOverwrite && !wet_heard && !reverb_writes && !irq_possible()) {
     reverb_.skip_tick(mix.reverb_left, mix.reverb_right);
   } else {
-    spu::Reverb::IrqWatch watch{(attr_ & (kAttrIrqEnable | kAttrEnable)) == (kAttrIrqEnable | kAttrEnable),
-                                irq_address_, false};
+    // With the flag already up a hit changes nothing (raise_irq), so only a possible IRQ9 is watched.
+    spu::Reverb::IrqWatch watch{irq_possible(), irq_address_, false};
     wet = reverb_.tick(mix.reverb_left, mix.reverb_right, ram_.data(), reverb_writes, wet_heard, watch);
     if (watch.hit) raise_irq();
   }

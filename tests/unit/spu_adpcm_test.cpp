@@ -20,6 +20,35 @@ std::vector<u8> block(u8 header, std::vector<u8> data) {
 }
 }  // namespace
 
+TEST(SpuAdpcm, Filter0IsTheShiftedNibbleAndSetsTheHistory) {
+  // Filter 0 (pos 0, neg 0): (0 + 32) >> 6 = 0 is added, so each sample is nibble * 4096 >> shift,
+  // whatever the history. Shift 3: nibbles 7, -8, -1, 1 (low first) give 3584, -4096, -512, 512;
+  // the last two nibbles -1 (0xF) and -7 (0x9) become the history (old = the last sample).
+  auto b = block(0x03, {0x87, 0x1F, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x9F});
+  AdpcmHistory h{1000, -2000};
+  s16 out[28];
+  decode_adpcm_block(b.data(), h, out);
+  EXPECT_EQ(out[0], 3584);
+  EXPECT_EQ(out[1], -4096);
+  EXPECT_EQ(out[2], -512);
+  EXPECT_EQ(out[3], 512);
+  EXPECT_EQ(out[4], 0);
+  EXPECT_EQ(out[26], -512);
+  EXPECT_EQ(out[27], -3584);
+  EXPECT_EQ(h.old, -3584);
+  EXPECT_EQ(h.older, -512);
+  // Shift 12: -8 * 4096 >> 12 = -8 and -1 * 4096 >> 12 = -1 (the shift rounds down); reserved
+  // shift 13 acts as 9: -8 * 4096 >> 9 = -64, 7 * 4096 >> 9 = 56.
+  decode_adpcm_block(block(0x0C, {0xF8}).data(), h, out);
+  EXPECT_EQ(out[0], -8);
+  EXPECT_EQ(out[1], -1);
+  decode_adpcm_block(block(0x0D, {0x78}).data(), h, out);
+  EXPECT_EQ(out[0], -64);
+  EXPECT_EQ(out[1], 56);
+  EXPECT_EQ(h.old, 0);
+  EXPECT_EQ(h.older, 0);
+}
+
 TEST(SpuAdpcm, Filter1ByHand) {
   // Filter 1 (pos 60), shift 2: each nibble contributes nibble * 4096 >> 2 = nibble * 1024.
   // Nibbles, low first: 1, 2, -1 (0xF), then zeros.

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "spu/adpcm.h"
 #include "spu/capture.h"
 #include "spu/wav.h"
 #include "spu_test_util.h"
@@ -109,4 +110,41 @@ TEST(SpuWav, WriteReadRoundTripAndErrors) {
   EXPECT_THROW(read_wav((dir / "junk.wav").string()), WavError);
   EXPECT_THROW(read_wav((dir / "missing.wav").string()), WavError);
   std::filesystem::remove_all(dir);
+}
+
+TEST(SpuCapture, CaptureBuffersHoldCdInputAndVoices1And3) {
+  // psx-spx "SPU Memory layout": 000h CD left, 400h CD right (before the CD volume), 800h voice 1
+  // and C00h voice 3 (after the envelope, OUTX), 200h halfwords each, one halfword per sample at
+  // the same position in all four. Two different ADPCM blocks (filter 0, shift 0: nibble 7 is
+  // 7000h, nibble 8 is -8000h) make the voices' outputs distinguishable; CD frames are counted.
+  psx::test::SpuRig r;
+  std::vector<u8> blocks(32, 0);
+  for (u32 i = 2; i < 16; ++i) blocks[i] = 0x77, blocks[16 + i] = 0x88;
+  blocks[1] = blocks[17] = kAdpcmLoopEnd | kAdpcmLoopRepeat | kAdpcmLoopStart;  // each loops on itself
+  r.put_ram(0x2000, blocks);
+  for (u32 v : {1u, 3u}) {
+    r.voice_w(v, 0x0, 0x3FFF);
+    r.voice_w(v, 0x2, 0x3FFF);
+    r.voice_w(v, 0x4, 0x1000);
+    r.voice_w(v, 0x6, static_cast<u16>((0x2000 + (v == 3 ? 16 : 0)) / 8));
+    r.voice_w(v, 0x8, 0x00FF);  // attack shift 0: full level in a few samples
+    r.voice_w(v, 0xA, 0x1FC0);
+  }
+  r.w16(0x1F801DAA, 0xC000);  // SPU enable, unmute
+  r.w16(0x1F801D88, 0x000A);  // KON voices 1 and 3
+  s16 cd = 0;
+  for (u32 k = 0; k < 1200; ++k) {  // past two wraps of the 200h-halfword buffers
+    r.cd.push({cd, static_cast<s16>(~cd)});
+    r.run_samples(1);
+    const u8* ram = r.spu.ram();
+    const u32 pos = k & 0x1FF;  // the sample just made wrote here
+    auto at = [&](u32 buffer) { return static_cast<s16>(ram[buffer + 2 * pos] | ram[buffer + 2 * pos + 1] << 8); };
+    ASSERT_EQ(at(0x000), cd) << k;
+    ASSERT_EQ(at(0x400), static_cast<s16>(~cd)) << k;
+    ASSERT_EQ(at(0x800), r.spu.voice(1).output) << k;
+    ASSERT_EQ(at(0xC00), r.spu.voice(3).output) << k;
+    cd = static_cast<s16>(cd + 77);
+  }
+  EXPECT_GT(r.spu.voice(1).output, 0);
+  EXPECT_LT(r.spu.voice(3).output, 0);
 }

@@ -1,8 +1,10 @@
 // SPU reverb against psx-spx "SPU Reverb Formula" worked by hand: one same-side reflection
-// write, the all-pass read path with the FIR up-sampler, and the work-area wrap.
+// write, the all-pass read path with the FIR up-sampler, and the work-area wrap (every access's
+// address, seen through the IRQ watch, for work areas from 8 bytes to all of sound RAM).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 #include <vector>
 
 #include "spu/reverb.h"
@@ -99,4 +101,66 @@ TEST(SpuReverb, InputFilterReachesBack38Inputs) {
   }
   EXPECT_EQ(written[0], -1);
   EXPECT_EQ(written[1], 0);
+}
+
+namespace {
+
+// psx-spx "SPU Reverb Formula": each of a side's 14 accesses is at a register-relative offset
+// (registers in 8-byte units = 4 halfwords) from the buffer address, wrapped into the work area
+// ESA*4 .. 3FFFFh halfwords as a true modulo. Returns the 8-byte units touched by `side`.
+std::set<u32> expected_units(const Reverb& rv, u32 side, u32 current) {
+  auto reg = [&](u32 r) { return static_cast<s64>(rv.regs[r]) * 4; };
+  const u32 other = side ^ 1;
+  const s64 rels[14] = {
+      reg(Reverb::mLSAME + side) - 1, reg(Reverb::dLSAME + side), reg(Reverb::mLSAME + side),
+      reg(Reverb::mLDIFF + side) - 1, reg(Reverb::dLDIFF + other), reg(Reverb::mLDIFF + side),
+      reg(Reverb::mLCOMB1 + side), reg(Reverb::mLCOMB2 + side), reg(Reverb::mLCOMB3 + side),
+      reg(Reverb::mLCOMB4 + side), reg(Reverb::mLAPF1 + side) - reg(Reverb::dAPF1),
+      reg(Reverb::mLAPF1 + side), reg(Reverb::mLAPF2 + side) - reg(Reverb::dAPF2), reg(Reverb::mLAPF2 + side)};
+  const s64 start = static_cast<s64>(rv.base()) * 4, size = 0x40000 - start;
+  std::set<u32> units;
+  for (s64 rel : rels) {
+    const s64 off = ((static_cast<s64>(current) - start + rel) % size + size) % size;
+    units.insert(static_cast<u32>((start + off) >> 2));
+  }
+  return units;
+}
+
+}  // namespace
+
+TEST(SpuReverb, EveryAccessWrapsInsideTheWorkArea) {
+  // Random registers (delays up to the whole of RAM, m-d offsets negative or past the area) on
+  // work areas from one 8-byte unit (ESA FFFFh) to all of sound RAM (ESA 0). In each tick every
+  // expected unit, its neighbours and a few random units of the area are watched on a copy of
+  // the reverb: exactly the expected ones are hit. The buffer address moves one halfword after
+  // each right-side tick and wraps to ESA (psx-spx: MAX(mBASE, (addr+2) AND 7FFFEh) in bytes).
+  std::vector<u8> ram(512 * 1024, 0);
+  u32 x = 12345;
+  auto next = [&](u32 n) {
+    x = x * 1664525u + 1013904223u;
+    return (x >> 8) % n;
+  };
+  for (u16 esa : {0xFFFF, 0xFFFE, 0xFFF0, 0xFF00, 0xF000, 0x8000, 0x0000}) {
+    Reverb rv;
+    rv.write_base(esa);
+    for (u16& r : rv.regs) r = static_cast<u16>(next(4) == 0 ? next(0x10000) : next(0x10000 - esa + 1) * (next(2) + 1));
+    const u32 start = esa * 4u, units_in_area = 0x10000 - esa;
+    u32 current = start;
+    for (u32 t = 0; t < 400; ++t) {
+      const u32 side = t & 1;
+      const std::set<u32> expected = expected_units(rv, side, current);
+      std::set<u32> watched = expected;
+      for (u32 u : expected) watched.insert({u - 1, u + 1});
+      for (u32 k = 0; k < 4; ++k) watched.insert(esa + next(units_in_area));
+      for (u32 u : watched) {
+        Reverb copy = rv;
+        Reverb::IrqWatch irq{true, u, false};
+        copy.tick(static_cast<s32>(next(0x10000)) - 0x8000, 0, ram.data(), next(2) == 0, false, irq);
+        ASSERT_EQ(irq.hit, expected.count(u) == 1) << "ESA " << esa << " tick " << t << " unit " << u;
+      }
+      Reverb::IrqWatch off;
+      rv.tick(0, 0, ram.data(), true, true, off);
+      if (side == 1) current = std::max(start, (current + 1) & 0x3FFFF);
+    }
+  }
 }

@@ -27,14 +27,17 @@ void Impl::reload() {
   mov(instructions, cpu64(lay.instructions));
 }
 
-// Whatever is called may read the time (a timer's counter, a step's own bookkeeping) or move it
-// (a step, a DMA), a step may book an event before the deadline, and a step counts its
-// instruction (and hooks or idle skipping may read the count). The GTE's and the code
-// pages' functions do neither today, but going through here keeps that from mattering.
-void Impl::call_out(const void* fn) {
-  flush();
+void Impl::call_leaf(const void* fn) {
   mov(rax, reinterpret_cast<u64>(fn));
   call(rax);
+}
+
+// A step may read the time (a timer's counter, its own bookkeeping) or move it (a DMA), book an
+// event before the deadline, and it counts its instruction (hooks or idle skipping may read the
+// count), so the registers are written back before and read again after.
+void Impl::call_out(const void* fn) {
+  flush();
+  call_leaf(fn);
   reload();
 }
 

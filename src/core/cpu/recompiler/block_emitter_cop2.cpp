@@ -27,17 +27,17 @@ void Impl::cop2(NativeOp op, u32 i) {
     case NativeOp::Mfc2:
     case NativeOp::Cfc2:
       mov(esi, rd(i));
-      call_out(reinterpret_cast<const void*>(op == NativeOp::Mfc2 ? lay.gte_read_data : lay.gte_read_control));
+      call_leaf(reinterpret_cast<const void*>(op == NativeOp::Mfc2 ? lay.gte_read_data : lay.gte_read_control));
       break;
     case NativeOp::Mtc2:
     case NativeOp::Ctc2:
       mov(esi, rd(i));
       mov(edx, reg(rt(i)));
-      call_out(reinterpret_cast<const void*>(op == NativeOp::Mtc2 ? lay.gte_write_data : lay.gte_write_control));
+      call_leaf(reinterpret_cast<const void*>(op == NativeOp::Mtc2 ? lay.gte_write_data : lay.gte_write_control));
       break;
     default:  // a command: the GTE is busy for the cycles it returns
       mov(esi, i & 0x1FFFFFF);
-      call_out(reinterpret_cast<const void*>(lay.gte_execute));
+      call_leaf(reinterpret_cast<const void*>(lay.gte_execute));
       mov(eax, eax);
       add(rax, now);
       mov(cpu64(lay.gte_ready_at), rax);

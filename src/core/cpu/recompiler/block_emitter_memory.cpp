@@ -199,7 +199,7 @@ void Impl::store(NativeOp op, u32 i) {
     wait_gte();
     mov(rdi, reinterpret_cast<u64>(lay.gte));
     mov(esi, cpu_detail::rt(i));
-    call_out(reinterpret_cast<const void*>(lay.gte_read_data));
+    call_leaf(reinterpret_cast<const void*>(lay.gte_read_data));
   } else {
     mov(eax, reg(cpu_detail::rt(i)));
   }
@@ -226,7 +226,7 @@ void Impl::store(NativeOp op, u32 i) {
   jnc(done, T_NEAR);
   mov(rdi, reinterpret_cast<u64>(lay.code_pages));
   mov(esi, ecx);
-  call_out(reinterpret_cast<const void*>(lay.code_write));
+  call_leaf(reinterpret_cast<const void*>(lay.code_write));
   jmp(done, T_NEAR);
   L(scratchpad);
   and_(ecx, kScratchMask & word_mask);
@@ -258,7 +258,7 @@ void Impl::lwc2(u32 i) {
   mov(rdi, reinterpret_cast<u64>(lay.gte));
   mov(esi, cpu_detail::rt(i));
   mov(edx, r8d);
-  call_out(reinterpret_cast<const void*>(lay.gte_write_data));
+  call_leaf(reinterpret_cast<const void*>(lay.gte_write_data));
 }
 
 // MFHI/MFLO (eax, after wait_muldiv: time goes on to when a multiply or divide is done) and

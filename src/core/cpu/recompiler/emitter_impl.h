@@ -57,6 +57,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void reload();
   // A call out of native code to fn (arguments already in place): time flushed before, reloaded after.
   void call_out(const void* fn);
+  // A call to a function that is handed neither the CPU nor the scheduler (the GTE's, the code
+  // pages'), so it can neither see nor move the time and count held in registers.
+  void call_leaf(const void* fn);
 
   static bool is_branch(NativeOp op) { return op >= NativeOp::Beq; }
   static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lwr; }

@@ -84,15 +84,11 @@ inline u32 Reverb::Area::at(s32 rel) const {
   // Within one wrap either way (every delay shorter than the area, as in every game's preset) a
   // subtraction or addition gives the remainder; only larger distances need the division.
   s32 off = offset + rel;
-  if (off >= size) {
-    off -= size;
-    if (off >= size) off %= size;
-  } else if (off < 0) {
-    off += size;
-    if (off < 0) {
-      off %= size;
-      if (off < 0) off += size;
-    }
+  if (off >= size) off -= size;
+  else if (off < 0) off += size;
+  if (off < 0 || off >= size) {  // more than one wrap away
+    off %= size;
+    if (off < 0) off += size;
   }
   return static_cast<u32>(start + off);
 }

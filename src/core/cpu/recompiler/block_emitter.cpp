@@ -162,18 +162,19 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 
 // Whether the segment may run as native code (else to its slow path): checked once for the whole
 // run because its instructions change none of it. They write general registers, HI/LO, the GTE,
-// the pc, the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves to the
-// slow path), so stop_, hooks, interrupts (SR, Cause, I_STAT, I_MASK), the loop head, DCIC and
-// the i-cache stay as they are (a store to RAM leaves the i-cache alone: it is not coherent);
-// only the deadline, which time reaches, is checked again before each instruction. Every word
-// must be a fetch without time or fill, an i-cache hit (Bus::fetch_slow: cached code, the line's
-// tag matching and the word's valid bit set; a hit on a line held only in part is as free as on
-// a whole one) that is still the word compiled, checked once per line for the tag and valid bits
-// and once per word for the word: here for the run's first line, and for each further line
-// where the run reaches it (native(); nothing native changes the i-cache, so checking a line
-// when it is reached is the same as checking it here), so that a run whose later lines miss runs
-// natively up to them. Such a hit also means the code is cached (Bus::cached_code), as the load-shadow model
-// asks of a native load.
+// the pc, the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves
+// to the slow path), so stop_, hooks, interrupts (SR, Cause, I_STAT, I_MASK), the loop head,
+// DCIC, what loads and stores need (memory_guard()) and the i-cache stay as they are (a store to
+// RAM leaves the i-cache alone: it is not coherent); only the deadline, which time reaches, is
+// checked again before each instruction. Every word must be a fetch without time or fill, an
+// i-cache hit (Bus::fetch_slow: cached code, the line's tag matching and the word's valid bit
+// set; a hit on a line held only in part is as free as on a whole one) that is still the word
+// compiled, checked once per line for the tag and valid bits and once per word for the word:
+// here for the run's first line, and for each further line where the run reaches it (native();
+// nothing native changes the i-cache, so checking a line when it is reached is the same as
+// checking it here), so that a run whose later lines miss runs natively up to them. Such a hit
+// also means the code is cached (Bus::cached_code), as the load-shadow model asks of a native
+// load.
 void Impl::guard(std::span<const Step> run, Label& fail) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   cmp(byte[rbx + lay.stop], 0);
@@ -185,12 +186,17 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   mov(eax, cpu32(lay.new_load_reg));
   or_(eax, cpu32(lay.new_load_val));
   jnz(fail, T_NEAR);
-  test(cpu32(lay.dcic), Cop0::kDcicPCE);
+  const auto any = [&](bool (*pred)(NativeOp)) {
+    return std::any_of(run.begin(), run.end(), [&](const Step& s) { return pred(s.native); });
+  };
+  const bool memory = any(is_memory), stores = any(is_store_or_swc2);
+  test(cpu32(lay.dcic), memory ? Cop0::kDcicPCE | Cop0::kDcicDAE : Cop0::kDcicPCE);
   jnz(fail, T_NEAR);
-  if (std::any_of(run.begin(), run.end(), [](const Step& s) { return is_cop2(s.native); })) {
+  if (any(is_cop2)) {
     test(cpu32(lay.sr), Cop0::kCU2);  // else the GTE instructions raise Coprocessor Unusable
     jz(fail, T_NEAR);
   }
+  if (memory) memory_guard(stores, fail);
   if (is_branch(run[0].native)) {  // branch() assumes it is not in a delay slot
     cmp(byte[rbx + lay.next_in_delay], 0);
     jne(fail, T_NEAR);
@@ -306,7 +312,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   const u32 d = dest(op, s.word);
   if (is_branch(op)) branch(op, s.pc, s.word);
   else if (is_load(op)) load(op, s.word, pipe);
-  else if (is_store(op) || op == NativeOp::Swc2) store(op, s.word);
+  else if (is_store_or_swc2(op)) store(op, s.word);
   else if (op == NativeOp::Lwc2) lwc2(s.word);
   else if (op >= NativeOp::Mfhi && op <= NativeOp::Mtlo) hilo(op, s.word);
   else if (op >= NativeOp::Mult && op <= NativeOp::Divu) muldiv(op, s.word);

@@ -31,31 +31,34 @@ u32 width_of(NativeOp op) {
 
 }  // namespace
 
+// What guard() checks once for a segment with loads or stores, because no native instruction
+// changes it: the accesses the native code makes need kernel mode (user mode may raise an
+// address error), no D-cache mode (loads would fill the scratchpad), and for stores neither an
+// isolated cache nor memory watches (DCIC's data break is checked with its other bits).
+void Impl::memory_guard(bool stores, Label& fail) {
+  test(cpu32(lay.sr), stores ? Cop0::kKUc | Cop0::kIsC : Cop0::kKUc);
+  jnz(fail, T_NEAR);
+  mov(rax, reinterpret_cast<u64>(lay.dcache_mode));
+  cmp(byte[rax], 0);
+  jne(fail, T_NEAR);
+  if (stores) {
+    mov(rax, reinterpret_cast<u64>(lay.watches));
+    cmp(qword[rax], 0);
+    jne(fail, T_NEAR);
+  }
+}
+
 // r13d = the address (rs + offset). Before the instruction changes anything, whether its access
-// is one the native code makes: aligned (check_address; LWL/LWR/SWL/SWR need not be), in kernel
-// mode (user mode may raise an address error), no DCIC data break armed, a store not into an isolated cache, no D-cache mode
-// (loads would fill the scratchpad), no memory watches on a store, and RAM or the scratchpad.
+// is one the native code makes (past memory_guard()): aligned (LWL/LWR/SWL/SWR need not be), and
+// RAM or the scratchpad.
 void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   using namespace cpu_detail;
   const u32 width = width_of(op);
-  const bool store = is_store(op) || op == NativeOp::Swc2;
   mov(r13d, reg(rs(i)));
   if (simm(i) != 0) add(r13d, simm(i));
   if (width > 1) {
     test(r13d, width - 1);
     jnz(slow, T_NEAR);
-  }
-  test(cpu32(lay.sr), store ? Cop0::kKUc | Cop0::kIsC : Cop0::kKUc);
-  jnz(slow, T_NEAR);
-  test(cpu32(lay.dcic), Cop0::kDcicDAE);
-  jnz(slow, T_NEAR);
-  mov(rax, reinterpret_cast<u64>(lay.dcache_mode));
-  cmp(byte[rax], 0);
-  jne(slow, T_NEAR);
-  if (store) {
-    mov(rax, reinterpret_cast<u64>(lay.watches));
-    cmp(qword[rax], 0);
-    jne(slow, T_NEAR);
   }
   Label ram, ok;
   mov(ecx, r13d);

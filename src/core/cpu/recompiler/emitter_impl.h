@@ -64,13 +64,14 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   static bool is_branch(NativeOp op) { return op >= NativeOp::Beq; }
   static bool is_load(NativeOp op) { return op >= NativeOp::Lb && op <= NativeOp::Lwr; }
   static bool is_store(NativeOp op) { return op >= NativeOp::Sb && op <= NativeOp::Swr; }
+  static bool is_store_or_swc2(NativeOp op) { return is_store(op) || op == NativeOp::Swc2; }
   static bool is_unaligned(NativeOp op) {
     return op == NativeOp::Lwl || op == NativeOp::Lwr || op == NativeOp::Swl || op == NativeOp::Swr;
   }
   static bool is_cop2(NativeOp op) { return op >= NativeOp::Mfc2 && op <= NativeOp::Swc2; }
   // The instructions that access memory (address_checks()).
   static bool is_memory(NativeOp op) {
-    return is_load(op) || is_store(op) || op == NativeOp::Lwc2 || op == NativeOp::Swc2;
+    return is_load(op) || is_store_or_swc2(op) || op == NativeOp::Lwc2;
   }
   // Whether the instruction's result reaches rt after a load delay (delayed_load).
   static bool is_delayed(NativeOp op) { return is_load(op) || op == NativeOp::Mfc2 || op == NativeOp::Cfc2; }
@@ -94,6 +95,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void prologue(const Layout& layout);
   void epilogue();
   // block_emitter_memory.cpp
+  void memory_guard(bool stores, Xbyak::Label& fail);
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
   void load(NativeOp op, u32 i, const Pipe& pipe);
   void merge_unaligned(NativeOp op, u32 rt, const Pipe& pipe);

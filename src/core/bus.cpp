@@ -112,10 +112,12 @@ bool Bus::fetch_slow(u32 vaddr, u32& word, Cycles busy_until) {
     sched_.advance(word_cycles);
     return true;
   }
-  if (!icache_.hit(vaddr, p))
-    sched_.advance(word_cycles * icache_.fill(vaddr, p, (cache_control_ & kBccIblksz) == 0, mem - 4 * ICache::word(vaddr)));
+  if (!icache_.hit(vaddr, p)) {
+    sched_.advance(word_cycles * icache_miss(vaddr, p, mem));
+  } else {
+    hot_lines_[ICache::line(vaddr)] = icache_.line_valid(vaddr) ? vaddr & ~15u : kNoLine;
+  }
   word = icache_.code(vaddr);
-  hot_lines_[ICache::line(vaddr)] = icache_.line_valid(vaddr) ? vaddr & ~15u : kNoLine;
   return true;
 }
 

@@ -76,10 +76,20 @@ class Bus {
   const ICache& icache() const { return icache_; }
   // fetch_hit()'s table in place (kLines entries), for the recompiler's native code.
   const u32* hot_lines() const { return hot_lines_.data(); }
+  // fetch()'s i-cache miss on cached code in RAM at vaddr, without its time: the line filled as
+  // fetch_slow() fills it. Returns the words read (each kRamFetchUncached cycles), for the
+  // recompiler's native code, which waits for the bus and charges them itself.
+  u32 icache_miss_ram(u32 vaddr) {
+    const u32 p = physical(vaddr);
+    return icache_miss(vaddr, p, &ram_[p & (kRamSize - 1)]);
+  }
   // The cache control register in place and its i-cache enable bit (cached_code()), for the
   // recompiler's native code, which checks i-cache hits word by word (ICache::tags()).
   const u32* cache_control_cell() const { return &cache_control_; }
   static constexpr u32 icache_enable_bit() { return kBccIs1; }
+  // The i-cache block size bits (IBLKSZ): clear, a fill entered at a line's first word stops
+  // after two words.
+  static constexpr u32 icache_block_bits() { return kBccIblksz; }
   // BCC selects D-cache mode: loads from RAM also write the scratchpad (see dcache_fill()).
   bool dcache_mode() const { return dcache_mode_; }
   // dcache_mode() and the attached memory watches in place, for the recompiler's native loads
@@ -155,6 +165,13 @@ class Bus {
 
  private:
   bool fetch_slow(u32 vaddr, u32& word, Cycles busy_until);
+  // Fills vaddr's line from `mem`, which holds vaddr's word, and keeps hot_lines_ in step;
+  // returns the words read.
+  u32 icache_miss(u32 vaddr, u32 p, const u8* mem) {
+    const u32 n = icache_.fill(vaddr, p, (cache_control_ & kBccIblksz) == 0, mem - 4 * ICache::word(vaddr));
+    hot_lines_[ICache::line(vaddr)] = icache_.line_valid(vaddr) ? vaddr & ~15u : kNoLine;
+    return n;
+  }
   // The memory holding the code word at physical address p (RAM or BIOS ROM), or nullptr.
   const u8* code_memory(u32 p) const;
   void update_read_cycles();

@@ -9,6 +9,7 @@
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
 #include "core/cpu/icache.h"
+#include "core/cpu/recompiler/code_pages.h"
 #include "core/cpu/recompiler/emitter_impl.h"
 
 namespace psx {
@@ -175,7 +176,7 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 // checking it here), so that a run whose later lines miss runs natively up to them. Such a hit
 // also means the code is cached (Bus::cached_code), as the load-shadow model asks of a native
 // load.
-void Impl::guard(std::span<const Step> run, Label& fail) {
+void Impl::guard(std::span<const Step> run, Label& fail, Label* fill, Label* filled) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   cmp(byte[rbx + lay.stop], 0);
   jne(fail, T_NEAR);
@@ -234,13 +235,13 @@ void Impl::guard(std::span<const Step> run, Label& fail) {
   mov(rax, reinterpret_cast<u64>(lay.cache_control));
   test(dword[rax], lay.icache_enable);
   jz(fail, T_NEAR);
-  line_check(run, fail);
+  line_check(run, fail, fill, filled);
 }
 
 // The i-cache check for the words of `run` on its first word's line: the line's tag must be the
 // code's physical address (KUSEG as it is, KSEG0 less bit 31) with those words' valid bits set
 // (ICache::hit()), and each must be the word compiled.
-void Impl::line_check(std::span<const Step> run, Label& fail) {
+void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label* filled) {
   const u32 line = run[0].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
   size_t n = 0;
   u32 need = 0;
@@ -253,12 +254,47 @@ void Impl::line_check(std::span<const Step> run, Label& fail) {
     xor_(eax, (phys & ICache::kTagMask) | need);
     test(eax, ICache::kTagMask | need);
   }
-  jnz(fail, T_NEAR);
+  jnz(fill ? *fill : fail, T_NEAR);
   mov(rax, reinterpret_cast<u64>(&lay.icache_words[(line >> 2) & 1020]));
   for (size_t k = 0; k < n; ++k) {
     cmp(dword[rax + 4 * ((run[k].pc >> 2) & 3)], run[k].word);
     jne(fail, T_NEAR);
   }
+  if (filled) L(*filled);
+}
+
+// Whether a miss on pc's line can be filled by native code: cached code in RAM (the guard has
+// ruled out KSEG1).
+bool Impl::fills_natively(u32 pc) const { return lay.icache_miss_ram && (pc & 0x1FFFFFFF) < 0x00800000; }
+
+// The fetch of rest[0] (instruction k) missing the i-cache, as CpuT::execute_at_pc() and
+// Bus::fetch_slow() make it: the instruction's cycle, then the wait for a load's bus access
+// still under way, then the fill and a word's time for each word read. Only a fill of the words
+// the run needs from this line that brings exactly the words compiled (RAM still holds them) is
+// made here, and not under a two-word block size (a fill entered at word 0 would leave words 2
+// and 3 missing); otherwise instruction k takes its slow path, nothing changed. The time is
+// left one cycle short: instruction k counts its own cycle.
+void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
+  const u32 line = rest[0].pc & ~15u;
+  L(seg.fill[k]);
+  mov(rax, reinterpret_cast<u64>(lay.cache_control));
+  test(dword[rax], lay.icache_block_bits);
+  jz(seg.slow[k], T_NEAR);
+  mov(rax, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
+  for (size_t j = 0; j < rest.size() && (rest[j].pc & ~15u) == line; ++j) {
+    cmp(dword[rax + 4 * ((rest[j].pc >> 2) & 3)], rest[j].word);
+    jne(seg.slow[k], T_NEAR);
+  }
+  mov(rdi, reinterpret_cast<u64>(lay.bus));
+  mov(esi, rest[0].pc);
+  call_leaf(reinterpret_cast<const void*>(lay.icache_miss_ram));
+  lea(rcx, ptr[now + 1]);
+  mov(rdx, cpu64(lay.load_done_at));
+  cmp(rcx, rdx);
+  cmovb(rcx, rdx);
+  imul(eax, eax, lay.fetch_word_cycles);
+  lea(now, ptr[rcx + rax - 1]);
+  jmp(seg.filled[k], T_NEAR);
 }
 
 // Instruction k of a native segment: CpuT::run()'s loop pass and execute_at_pc(). The guard
@@ -282,7 +318,10 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     jae(seg.late[k], T_NEAR);
     // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
     // which fetches (and fills) it.
-    if ((s.pc & 15) == 0) line_check(rest, seg.slow[k]);
+    if ((s.pc & 15) == 0) {
+      if (fills_natively(s.pc)) line_check(rest, seg.slow[k], &seg.fill[k], &seg.filled[k]);
+      else line_check(rest, seg.slow[k]);
+    }
   }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   if (k == 0 || after_branch) mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
@@ -494,13 +533,16 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.stall = std::vector<Label>(seg.count);
     seg.stall_back = std::vector<Label>(seg.count);
     seg.late = std::vector<Label>(seg.count);
+    seg.fill = std::vector<Label>(seg.count);
+    seg.filled = std::vector<Label>(seg.count);
     seg.pipe.resize(seg.count);
     for (size_t k = 1; k < seg.count; ++k) {
       const Step& prev = steps[seg.first + k - 1];
       seg.pipe[k] = {false, Impl::is_delayed(prev.native), cpu_detail::rt(prev.word)};
     }
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
-    g.guard(run, seg.slow[0]);
+    if (g.fills_natively(run[0].pc)) g.guard(run, seg.slow[0], &seg.fill[0], &seg.filled[0]);
+    else g.guard(run, seg.slow[0]);
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);
@@ -551,7 +593,10 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       g.sync_pc(run, k - 1);
       g.jmp(*g.exit, Xbyak::CodeGenerator::T_NEAR);
     }
-    for (size_t k = 0; k < seg.count; ++k) g.stall_stub(run[k], k, seg);
+    for (size_t k = 0; k < seg.count; ++k) {
+      g.stall_stub(run[k], k, seg);
+      if ((k == 0 || (run[k].pc & 15) == 0) && g.fills_natively(run[k].pc)) g.fill_stub(run.subspan(k), k, seg);
+    }
   }
   return entry;
 }

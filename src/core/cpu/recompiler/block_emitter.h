@@ -61,6 +61,11 @@ class BlockEmitter {
     const u32* irq_mask;
     const u32* icache_tags;    // ICache::tags()
     const u32* icache_words;   // ICache::words()
+    // An i-cache miss in RAM filled natively: Bus::icache_miss_ram() and a word's fill time.
+    void* bus;
+    u32 (*icache_miss_ram)(void* bus, u32 vaddr);
+    u32 fetch_word_cycles;     // Bus::kRamFetchUncached
+    u32 icache_block_bits;     // Bus::icache_block_bits()
     const u32* cache_control;  // Bus::cache_control_cell()
     u32 icache_enable;         // Bus::icache_enable_bit()
     u8* ram;                  // Bus::ram(), 2 MiB

@@ -36,6 +36,9 @@ struct Segment {
   size_t first, count;
   Xbyak::Label end;
   std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back, late;
+  // An i-cache line the run reaches at instruction k missing: fill_stub() fills it natively at
+  // `fill[k]` and goes on at `filled[k]` (past the line check), or sends k to `slow[k]`.
+  std::vector<Xbyak::Label> fill, filled;
   std::vector<Pipe> pipe;  // per instruction
 };
 
@@ -83,8 +86,14 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void arm_hook_static(u32 target);
   void arm_hook_ecx();
   void branch(NativeOp op, u32 pc, u32 i);
-  void guard(std::span<const Step> run, Xbyak::Label& fail);
-  void line_check(std::span<const Step> run, Xbyak::Label& fail);
+  // guard() and line_check() send a missing line to `fill` where given (a fill_stub()'s entry),
+  // which comes back to `filled`.
+  void guard(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
+             Xbyak::Label* filled = nullptr);
+  void line_check(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
+                  Xbyak::Label* filled = nullptr);
+  bool fills_natively(u32 pc) const;
+  void fill_stub(std::span<const Step> rest, size_t k, Segment& seg);
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);

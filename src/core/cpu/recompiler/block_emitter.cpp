@@ -337,9 +337,13 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   }
   inc(instructions);
   inc(now);
-  cmp(cpu32(lay.shadow_reg), 0);
-  jne(seg.stall[k], T_NEAR);
-  L(seg.stall_back[k]);
+  if (seg.shadow[k] == Shadow::check) {
+    cmp(cpu32(lay.shadow_reg), 0);
+    jne(seg.stall[k], T_NEAR);
+    L(seg.stall_back[k]);
+  } else if (seg.shadow[k] == Shadow::clear) {
+    mov(cpu32(lay.shadow_reg), 0);
+  }
   if (k == 0 || after_branch) {
     mov(eax, cpu32(lay.next_pc));
     mov(cpu32(lay.pc), eax);
@@ -536,6 +540,13 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.fill = std::vector<Label>(seg.count);
     seg.filled = std::vector<Label>(seg.count);
     seg.pipe.resize(seg.count);
+    seg.shadow.resize(seg.count);
+    // Instructions since the last that may have left a load shadowed, this one included.
+    const size_t reach = size_t(layout.load_issue + layout.load_bus - 1);
+    for (size_t k = 0, since = 1; k < seg.count; ++k) {
+      seg.shadow[k] = since < reach ? Shadow::check : since == reach ? Shadow::clear : Shadow::none;
+      since = Impl::is_load(steps[seg.first + k].native) ? 1 : since + 1;
+    }
     for (size_t k = 1; k < seg.count; ++k) {
       const Step& prev = steps[seg.first + k - 1];
       seg.pipe[k] = {false, Impl::is_delayed(prev.native), cpu_detail::rt(prev.word)};
@@ -594,7 +605,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       g.jmp(*g.exit, Xbyak::CodeGenerator::T_NEAR);
     }
     for (size_t k = 0; k < seg.count; ++k) {
-      g.stall_stub(run[k], k, seg);
+      if (seg.shadow[k] == Shadow::check) g.stall_stub(run[k], k, seg);
       if ((k == 0 || (run[k].pc & 15) == 0) && g.fills_natively(run[k].pc)) g.fill_stub(run.subspan(k), k, seg);
     }
   }

@@ -32,8 +32,16 @@ struct Pipe {
 // path; `slow[k]` enters it at instruction k), a load's or store's call when the native code
 // does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), the
 // shadow-stall stubs, and the exits when the deadline comes before instruction k (`late[k]`).
+// What instruction k of a segment does about the load shadow (CpuT::shadow_stall). A load
+// leaves its access ending at most kLoadIssue + kLoadBus - 1 cycles after it (7), and each
+// instruction takes at least one: by the 7th instruction after the last load (or after the
+// segment's start, which may follow one) time has reached the access's end, so the check there
+// always clears the shadow (`clear`), and after it the shadow is known to be clear (`none`).
+enum class Shadow : u8 { check, clear, none };
+
 struct Segment {
   size_t first, count;
+  std::vector<Shadow> shadow;  // per instruction
   Xbyak::Label end;
   std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back, late;
   // An i-cache line the run reaches at instruction k missing: fill_stub() fills it natively at

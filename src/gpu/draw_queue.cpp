@@ -198,14 +198,15 @@ void DrawQueue::compact() {
   for (size_t i = 0; i < queue_.size(); ++i) {
     if (!keep_[i]) continue;
     if (i < frame_position_) ++position;
-    DrawCommand c = queue_[i];
+    DrawCommand& c = queue_[i];  // changed in place, then copied once, only if it moves
     if (c.cover_with_next && !keep_[i + 1]) c.cover = {}, c.cover_with_next = false;
     if (c.kind == DrawCommand::Kind::Row) {
       std::copy(pixels_.begin() + c.pixels, pixels_.begin() + c.pixels + c.width, pixels_.begin() + pixels_out);
       c.pixels = pixels_out;
       pixels_out += c.width;
     }
-    queue_[out++] = c;
+    if (out != i) queue_[out] = c;
+    ++out;
   }
   queue_.resize(out);
   pixels_.resize(pixels_out);

@@ -609,7 +609,14 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       if ((k == 0 || (run[k].pc & 15) == 0) && g.fills_natively(run[k].pc)) g.fill_stub(run.subspan(k), k, seg);
     }
   }
+  g.emit_cold();
   return entry;
+}
+
+void Impl::emit_cold() {
+  for (const auto& f : cold) f();
+  cold.clear();
+  cold_labels.clear();
 }
 
 void BlockEmitter::clear() { impl_->reset(); }

@@ -60,23 +60,25 @@ void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
     test(r13d, width - 1);
     jnz(slow, T_NEAR);
   }
-  Label ram, ok;
+  Label &not_ram = cold_label(), &ok = cold_label();
   mov(ecx, r13d);
   shr(ecx, 29);  // the segment: 0-3 KUSEG, 4 KSEG0, 5 KSEG1, 6-7 KSEG2
   test(r13d, kNotRam);
-  jz(ram);
-  test(cl, 3);  // the scratchpad: KUSEG or KSEG0 (segment 0 or 4) ...
-  jnz(slow, T_NEAR);
-  mov(edx, r13d);
-  and_(edx, 0x1FFFFFFF & ~kScratchMask);  // ... at physical 1F800000h-1F8003FFh
-  cmp(edx, kScratchBase);
-  jne(slow, T_NEAR);
-  jmp(ok);
-  L(ram);
+  jnz(not_ram, T_NEAR);
   mov(edx, 0x31);  // RAM: segment 0 (the first 512 MiB), 4 or 5
   bt(edx, ecx);
   jnc(slow, T_NEAR);
   L(ok);
+  cold.push_back([this, &not_ram, &ok, &slow] {
+    L(not_ram);
+    test(cl, 3);  // the scratchpad: KUSEG or KSEG0 (segment 0 or 4) ...
+    jnz(slow, T_NEAR);
+    mov(edx, r13d);
+    and_(edx, 0x1FFFFFFF & ~kScratchMask);  // ... at physical 1F800000h-1F8003FFh
+    cmp(edx, kScratchBase);
+    jne(slow, T_NEAR);
+    jmp(ok, T_NEAR);
+  });
 }
 
 // eax = the value a load of `op`'s width and signedness reads at [rdx + rcx].
@@ -98,7 +100,7 @@ static void read_width(Impl& g, NativeOp op) {
 // ends. From the scratchpad: wait_load(), then a read without time.
 void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   const u32 t = cpu_detail::rt(i);
-  Label scratchpad, done;
+  Label &scratchpad = cold_label(), &done = cold_label();
   test(r13d, kNotRam);
   jnz(scratchpad, T_NEAR);
   lea(rcx, ptr[now + lay.load_issue]);  // issue_end + 1
@@ -122,16 +124,18 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   and_(ecx, kRamMask & word_mask);
   mov(rdx, reinterpret_cast<u64>(lay.ram));
   read_width(*this, op);
-  jmp(done, T_NEAR);
-  L(scratchpad);
-  mov(rcx, cpu64(lay.load_done_at));
-  cmp(now, rcx);
-  cmovb(now, rcx);
-  mov(ecx, r13d);
-  and_(ecx, kScratchMask & word_mask);
-  mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
-  read_width(*this, op);
   L(done);
+  cold.push_back([this, &scratchpad, &done, op, word_mask] {
+    L(scratchpad);
+    mov(rcx, cpu64(lay.load_done_at));
+    cmp(now, rcx);
+    cmovb(now, rcx);
+    mov(ecx, r13d);
+    and_(ecx, kScratchMask & word_mask);
+    mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
+    read_width(*this, op);
+    jmp(done, T_NEAR);
+  });
   if (is_unaligned(op)) merge_unaligned(op, t, pipe);
 }
 
@@ -196,7 +200,7 @@ static void store_unaligned(Impl& g, NativeOp op) {
 // when the word holds compiled code, or to the scratchpad. Stores take no time (the write queue).
 void Impl::store(NativeOp op, u32 i) {
   const u32 width = width_of(op);
-  Label scratchpad, done;
+  Label &scratchpad = cold_label(), &code = cold_label(), &done = cold_label();
   const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // SWL/SWR write into the word holding the address
   if (op == NativeOp::Swc2) {  // SWC2: the GTE register, once the GTE is done
     wait_gte();
@@ -210,7 +214,7 @@ void Impl::store(NativeOp op, u32 i) {
   test(r13d, kNotRam);
   jnz(scratchpad, T_NEAR);
   and_(ecx, kRamMask & word_mask);
-  const auto write = [&] {
+  const auto write = [this, op, width] {
     const Xbyak::RegExp at = rdx + rcx;
     if (is_unaligned(op)) store_unaligned(*this, op);
     else if (width == 4) mov(dword[at], eax);
@@ -226,16 +230,20 @@ void Impl::store(NativeOp op, u32 i) {
   mov(edx, ecx);
   shr(edx, 2);
   bt(rsi, rdx);  // the word's bit (the offset counts modulo 64)
-  jnc(done, T_NEAR);
-  mov(rdi, reinterpret_cast<u64>(lay.code_pages));
-  mov(esi, ecx);
-  call_leaf(reinterpret_cast<const void*>(lay.code_write));
-  jmp(done, T_NEAR);
-  L(scratchpad);
-  and_(ecx, kScratchMask & word_mask);
-  mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
-  write();
+  jc(code, T_NEAR);
   L(done);
+  cold.push_back([this, &scratchpad, &code, &done, word_mask, write] {
+    L(code);  // a word holding compiled code: its page's blocks are dropped
+    mov(rdi, reinterpret_cast<u64>(lay.code_pages));
+    mov(esi, ecx);
+    call_leaf(reinterpret_cast<const void*>(lay.code_write));
+    jmp(done, T_NEAR);
+    L(scratchpad);
+    and_(ecx, kScratchMask & word_mask);
+    mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
+    write();
+    jmp(done, T_NEAR);
+  });
 }
 
 // LWC2 past its checks: wait_load() (the GTE load is not shadowed but waits its turn), Bus::read32

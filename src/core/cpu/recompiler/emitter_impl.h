@@ -11,6 +11,8 @@
 #pragma once
 #include <xbyak/xbyak.h>
 
+#include <deque>
+#include <functional>
 #include <vector>
 
 #include "core/cpu/recompiler/block_emitter.h"
@@ -55,6 +57,13 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   const size_t capacity;
   Layout lay{};
   Xbyak::Label* exit = nullptr;  // the block's epilogue
+  // Rarely taken code of the block's instructions (a scratchpad access, a store into compiled
+  // code), emitted after the whole block so that the main path stays short; labels it jumps to
+  // or from live in cold_labels until then.
+  std::vector<std::function<void()>> cold;
+  std::deque<Xbyak::Label> cold_labels;
+  Xbyak::Label& cold_label() { return cold_labels.emplace_back(); }
+  void emit_cold();
 
   Xbyak::Address reg(u32 r) { return dword[rbx + lay.regs + 4 * int(r)]; }
   Xbyak::Address cpu32(int off) { return dword[rbx + off]; }

@@ -159,6 +159,17 @@ void memory(Json& json) {
   const double mib = double(bench::resident_kib() - before) / 1024 / 8;
   std::printf("\n## Costs\n\n| what | figure |\n| --- | --- |\n| host memory per console (Tumble, recompiler) | %.1f MiB |\n", mib);
   json.add("memory_per_console_mib", mib);
+  // The code buffer grows with the code a game runs: the title compiles little, play much more.
+  psxrl::rl::Env env{psxrl::rl::EnvConfig{}};
+  env.reset(1, 1, nullptr);
+  std::uint32_t lcg = 7;
+  for (int i = 0; i < 300; ++i) {
+    const auto r = env.step(bench::action_at(lcg));
+    if (r.terminated || r.truncated) env.reset(1, 2 + i, nullptr);
+  }
+  const double code = double(env.console().recompiler_code_bytes()) / (1 << 20);
+  std::printf("| compiled code held by a console after 300 moves of Tumble level 1 (the row above compiles only the title) | %.1f MiB |\n", code);
+  json.add("compiled_code_after_300_moves_mib", code);
 }
 
 double mean_ms(int n, const std::function<void()>& f) {

@@ -91,6 +91,7 @@ class Console : private CpuHooks {
   void set_cpu_mode(CpuMode mode);
   CpuMode cpu_mode() const { return cpu_.recompiler_enabled() ? CpuMode::Recompiler : CpuMode::Interpreter; }
   const Recompiler::Stats& recompiler_stats() const { return recompiler_.stats(); }
+  size_t recompiler_code_bytes() const { return recompiler_.code_bytes(); }
 
   Cycles cycles() const { return sched_.now(); }
   u64 frames() const { return frames_; }

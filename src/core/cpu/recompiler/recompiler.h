@@ -36,7 +36,7 @@ class RecompilerT {
  public:
   using Cpu = CpuT<BusT>;
   static constexpr u32 kMaxBlock = 32;
-  // Tumble in play compiles to about 1500 blocks of 4.4 KB on average (slow paths included): a
+  // Tumble in play compiles to about 1500 blocks of 4.7 KB on average (slow paths included): a
   // 4 MiB buffer filled and was dropped every ~120 moves. Pages become resident only once
   // written, so a console holds what it compiled, not the whole buffer.
   static constexpr size_t kCodeBytes = 16 << 20;
@@ -56,6 +56,8 @@ class RecompilerT {
   CodePages& code_pages() { return pages_; }
   const Stats& stats() const { return stats_; }
   size_t blocks() const { return cache_.size(); }
+  // Bytes of the code buffer in use (what a console holds of it).
+  size_t code_bytes() const { return emitter_ ? emitter_->bytes_used() : 0; }
 
  private:
   BlockEmitter::BlockFn compile(Cpu& cpu, u32 pc);

@@ -278,12 +278,13 @@ void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
   const u32 line = rest[0].pc & ~15u;
   L(seg.fill[k]);
   mov(rax, reinterpret_cast<u64>(lay.cache_control));
+  Label& slow = k == 0 ? seg.slow[0] : seg.slow_native[k];
   test(dword[rax], lay.icache_block_bits);
-  jz(seg.slow[k], T_NEAR);
+  jz(slow, T_NEAR);
   mov(rax, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
   for (size_t j = 0; j < rest.size() && (rest[j].pc & ~15u) == line; ++j) {
     cmp(dword[rax + 4 * ((rest[j].pc >> 2) & 3)], rest[j].word);
-    jne(seg.slow[k], T_NEAR);
+    jne(slow, T_NEAR);
   }
   mov(rdi, reinterpret_cast<u64>(lay.bus));
   mov(esi, rest[0].pc);
@@ -319,8 +320,8 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
     // which fetches (and fills) it.
     if ((s.pc & 15) == 0) {
-      if (fills_natively(s.pc)) line_check(rest, seg.slow[k], &seg.fill[k], &seg.filled[k]);
-      else line_check(rest, seg.slow[k]);
+      if (fills_natively(s.pc)) line_check(rest, seg.slow_native[k], &seg.fill[k], &seg.filled[k]);
+      else line_check(rest, seg.slow_native[k]);
     }
   }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
@@ -335,7 +336,6 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   } else if (k == 1) {
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
-  inc(instructions);
   inc(now);
   if (seg.shadow[k] == Shadow::check) {
     cmp(cpu32(lay.shadow_reg), 0);
@@ -365,7 +365,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word));
   if (k == 0 && !last_in_block) {  // the first instruction may be a delay slot
     cmp(cpu32(lay.pc), s.pc + 4);
-    jne(*exit, T_NEAR);
+    jne(*exit_after_first, T_NEAR);
   }
 }
 
@@ -515,8 +515,9 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;
-  Label done;
+  Label done, exit_after_first;
   g.exit = &done;
+  g.exit_after_first = &exit_after_first;
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   g.prologue(layout);
@@ -538,6 +539,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.stall_back = std::vector<Label>(seg.count);
     seg.late = std::vector<Label>(seg.count);
     seg.fill = std::vector<Label>(seg.count);
+    seg.slow_native = std::vector<Label>(seg.count);
     seg.filled = std::vector<Label>(seg.count);
     seg.pipe.resize(seg.count);
     seg.shadow.resize(seg.count);
@@ -559,6 +561,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       g.L(seg.resume[k]);
       g.native(run.subspan(k), k, seg.first + k + 1 == steps.size(), after_branch, seg);
     }
+    g.add(g.instructions, int(seg.count));
     g.sync_pc(run, seg.count - 1);
     g.L(seg.end);
   }
@@ -582,6 +585,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
         return;
       }
       g.guard(run.subspan(k + 1), seg.slow[k + 1]);
+      g.sub(g.instructions, int(k + 1));  // native code counts from where it resumes
       g.jmp(seg.resume[k + 1], Xbyak::CodeGenerator::T_NEAR);
     };
     for (size_t k = 0; k < seg.count; ++k) {
@@ -596,19 +600,28 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     for (size_t k = 0; k < seg.count; ++k) {
       if (!Impl::is_memory(run[k].native)) continue;
       g.L(seg.fallback[k]);
+      if (k > 0) g.add(g.instructions, int(k));
       if (k > 0) g.sync_pc(run, k - 1);
       call_and_resume(k);
     }
     for (size_t k = 1; k < seg.count; ++k) {
       g.L(seg.late[k]);
+      g.add(g.instructions, int(k));
       g.sync_pc(run, k - 1);
       g.jmp(*g.exit, Xbyak::CodeGenerator::T_NEAR);
+      if ((run[k].pc & 15) != 0) continue;  // a line check's or a fill's refusal
+      g.L(seg.slow_native[k]);
+      g.add(g.instructions, int(k));
+      g.jmp(seg.slow[k], Xbyak::CodeGenerator::T_NEAR);
     }
     for (size_t k = 0; k < seg.count; ++k) {
       if (seg.shadow[k] == Shadow::check) g.stall_stub(run[k], k, seg);
       if ((k == 0 || (run[k].pc & 15) == 0) && g.fills_natively(run[k].pc)) g.fill_stub(run.subspan(k), k, seg);
     }
   }
+  g.L(exit_after_first);
+  g.inc(g.instructions);
+  g.jmp(done, Xbyak::CodeGenerator::T_NEAR);
   g.emit_cold();
   return entry;
 }

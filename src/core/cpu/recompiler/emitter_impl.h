@@ -7,7 +7,9 @@
 // CPU), r12 = the scheduler, r13d = a load's or store's address, r14 = the scheduler's time and
 // r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
 // native code runs: flush() writes the time and the count back before anything outside the
-// block can look, reload() reads all three after a call).
+// block can look, reload() reads all three after a call). Within a native segment rbp stays the
+// count at the segment's start: instruction k adds nothing, and every way out of the segment
+// adds the k instructions run (its end, a deadline exit, a slow or fallback call).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -49,6 +51,9 @@ struct Segment {
   // An i-cache line the run reaches at instruction k missing: fill_stub() fills it natively at
   // `fill[k]` and goes on at `filled[k]` (past the line check), or sends k to `slow[k]`.
   std::vector<Xbyak::Label> fill, filled;
+  // slow[k] entered from native code, which counts its instructions only where it leaves: the
+  // count of instructions 0..k-1 is added first (native()).
+  std::vector<Xbyak::Label> slow_native;
   std::vector<Pipe> pipe;  // per instruction
 };
 
@@ -57,6 +62,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   const size_t capacity;
   Layout lay{};
   Xbyak::Label* exit = nullptr;  // the block's epilogue
+  Xbyak::Label* exit_after_first = nullptr;  // the same after a segment's first instruction
   // Rarely taken code of the block's instructions (a scratchpad access, a store into compiled
   // code), emitted after the whole block so that the main path stays short; labels it jumps to
   // or from live in cold_labels until then.

@@ -504,6 +504,80 @@ void Impl::epilogue() {
   for (const Xbyak::Reg64& r : {rbp, r15, r14, r13, r12, rbx}) pop(r);
 }
 
+// A segment's labels and what each instruction knows when it starts: the load delay slot
+// (Pipe) and the load shadow (Shadow).
+void Impl::plan(std::span<const Step> run, Segment& seg) {
+  for (auto* v : {&seg.slow, &seg.fallback, &seg.resume, &seg.stall, &seg.stall_back, &seg.late, &seg.fill,
+                  &seg.filled, &seg.slow_native})
+    *v = std::vector<Label>(seg.count);
+  seg.pipe.assign(seg.count, Pipe{});
+  for (size_t k = 1; k < seg.count; ++k)
+    seg.pipe[k] = {false, is_delayed(run[k - 1].native), cpu_detail::rt(run[k - 1].word)};
+  // Instructions since the last that may have left a load shadowed, this one included.
+  const size_t reach = size_t(lay.load_issue + lay.load_bus - 1);
+  seg.shadow.resize(seg.count);
+  for (size_t k = 0, since = 1; k < seg.count; ++k) {
+    seg.shadow[k] = since < reach ? Shadow::check : since == reach ? Shadow::clear : Shadow::none;
+    since = is_load(run[k].native) ? 1 : since + 1;
+  }
+}
+
+// Off a segment's main path: an instruction the native code could not run (slow[k]: the guard
+// or a line check refused; fallback[k]: a load or store the native code does not make) runs as
+// its call, and the segment goes on natively from the next one if the guard allows it then (a
+// refusal is often over after one instruction: a cold i-cache line filled by its first fetch, a
+// load landing), else by the next instruction's slow path. Only the slow path's entries from
+// native code (the segment's start, a line's start) re-guard: a refusal that outlasts one
+// instruction mostly outlasts the line, and each re-guard is code to emit. The call leaves the
+// pipeline as the native code would have (a load pending in rt, or none), so seg.pipe holds
+// after it too. Then the deadline exits, the shadow stalls and the i-cache fills.
+void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
+  for (size_t k = 0; k < seg.count; ++k) {
+    L(seg.slow[k]);
+    if (k > 0) sync_pc(run, k - 1);  // from native code (or the call before: the same values)
+    if (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count) {
+      call_and_resume(run, k, seg);
+    } else {
+      call_step(run[k]);  // on into slow[k + 1]
+    }
+  }
+  for (size_t k = 0; k < seg.count; ++k) {
+    if (!is_memory(run[k].native)) continue;
+    L(seg.fallback[k]);
+    if (k > 0) {
+      add(instructions, int(k));
+      sync_pc(run, k - 1);
+    }
+    call_and_resume(run, k, seg);
+  }
+  for (size_t k = 1; k < seg.count; ++k) {
+    L(seg.late[k]);
+    add(instructions, int(k));
+    sync_pc(run, k - 1);
+    jmp(*exit, T_NEAR);
+    if ((run[k].pc & 15) != 0) continue;  // a line check's or a fill's refusal
+    L(seg.slow_native[k]);
+    add(instructions, int(k));
+    jmp(seg.slow[k], T_NEAR);
+  }
+  for (size_t k = 0; k < seg.count; ++k) {
+    if (seg.shadow[k] == Shadow::check) stall_stub(run[k], k, seg);
+    if ((k == 0 || (run[k].pc & 15) == 0) && fills_natively(run[k].pc)) fill_stub(run.subspan(k), k, seg);
+  }
+}
+
+// Instruction k as its call, then back to native code at k + 1 if the guard holds for the rest.
+void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
+  call_step(run[k]);
+  if (k + 1 == seg.count) {
+    jmp(seg.end, T_NEAR);
+    return;
+  }
+  guard(run.subspan(k + 1), seg.slow[k + 1]);
+  sub(instructions, int(k + 1));  // native code counts from where it resumes
+  jmp(seg.resume[k + 1], T_NEAR);
+}
+
 BlockEmitter::BlockEmitter(size_t buffer_bytes) : impl_(std::make_unique<Impl>(buffer_bytes)) {}
 BlockEmitter::~BlockEmitter() = default;
 
@@ -532,28 +606,8 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.first = i;
     while (i < steps.size() && steps[i].native != NativeOp::None) ++i;
     seg.count = i - seg.first;
-    seg.slow = std::vector<Label>(seg.count);
-    seg.fallback = std::vector<Label>(seg.count);
-    seg.resume = std::vector<Label>(seg.count);
-    seg.stall = std::vector<Label>(seg.count);
-    seg.stall_back = std::vector<Label>(seg.count);
-    seg.late = std::vector<Label>(seg.count);
-    seg.fill = std::vector<Label>(seg.count);
-    seg.slow_native = std::vector<Label>(seg.count);
-    seg.filled = std::vector<Label>(seg.count);
-    seg.pipe.resize(seg.count);
-    seg.shadow.resize(seg.count);
-    // Instructions since the last that may have left a load shadowed, this one included.
-    const size_t reach = size_t(layout.load_issue + layout.load_bus - 1);
-    for (size_t k = 0, since = 1; k < seg.count; ++k) {
-      seg.shadow[k] = since < reach ? Shadow::check : since == reach ? Shadow::clear : Shadow::none;
-      since = Impl::is_load(steps[seg.first + k].native) ? 1 : since + 1;
-    }
-    for (size_t k = 1; k < seg.count; ++k) {
-      const Step& prev = steps[seg.first + k - 1];
-      seg.pipe[k] = {false, Impl::is_delayed(prev.native), cpu_detail::rt(prev.word)};
-    }
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
+    g.plan(run, seg);
     if (g.fills_natively(run[0].pc)) g.guard(run, seg.slow[0], &seg.fill[0], &seg.filled[0]);
     else g.guard(run, seg.slow[0]);
     for (size_t k = 0; k < seg.count; ++k) {
@@ -567,58 +621,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   }
   g.L(done);
   g.chain();
-  // Off the main path: an instruction the native code could not run (slow[k]: the guard or a
-  // line check refused; fallback[k]: a load or store the native code does not make) runs as
-  // its call, and the segment goes on natively from the next one if the guard allows it then
-  // (a refusal is often over after one instruction: a cold i-cache line filled by its first
-  // fetch, a load landing), else by the next instruction's slow path. Only the slow path's
-  // entries from native code (the segment's start, a line's start) re-guard: a refusal that
-  // outlasts one instruction mostly outlasts the line, and each re-guard is code to emit. The
-  // call leaves the pipeline as the native code would have (a load pending in rt, or none), so
-  // seg.pipe holds after it too.
-  for (Segment& seg : segments) {
-    const std::span<const Step> run = steps.subspan(seg.first, seg.count);
-    auto call_and_resume = [&](size_t k) {
-      g.call_step(run[k]);
-      if (k + 1 == seg.count) {
-        g.jmp(seg.end, Xbyak::CodeGenerator::T_NEAR);
-        return;
-      }
-      g.guard(run.subspan(k + 1), seg.slow[k + 1]);
-      g.sub(g.instructions, int(k + 1));  // native code counts from where it resumes
-      g.jmp(seg.resume[k + 1], Xbyak::CodeGenerator::T_NEAR);
-    };
-    for (size_t k = 0; k < seg.count; ++k) {
-      g.L(seg.slow[k]);
-      if (k > 0) g.sync_pc(run, k - 1);  // from native code (or the call before: the same values)
-      if (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count) {
-        call_and_resume(k);
-      } else {
-        g.call_step(run[k]);  // on into slow[k + 1]
-      }
-    }
-    for (size_t k = 0; k < seg.count; ++k) {
-      if (!Impl::is_memory(run[k].native)) continue;
-      g.L(seg.fallback[k]);
-      if (k > 0) g.add(g.instructions, int(k));
-      if (k > 0) g.sync_pc(run, k - 1);
-      call_and_resume(k);
-    }
-    for (size_t k = 1; k < seg.count; ++k) {
-      g.L(seg.late[k]);
-      g.add(g.instructions, int(k));
-      g.sync_pc(run, k - 1);
-      g.jmp(*g.exit, Xbyak::CodeGenerator::T_NEAR);
-      if ((run[k].pc & 15) != 0) continue;  // a line check's or a fill's refusal
-      g.L(seg.slow_native[k]);
-      g.add(g.instructions, int(k));
-      g.jmp(seg.slow[k], Xbyak::CodeGenerator::T_NEAR);
-    }
-    for (size_t k = 0; k < seg.count; ++k) {
-      if (seg.shadow[k] == Shadow::check) g.stall_stub(run[k], k, seg);
-      if ((k == 0 || (run[k].pc & 15) == 0) && g.fills_natively(run[k].pc)) g.fill_stub(run.subspan(k), k, seg);
-    }
-  }
+  for (Segment& seg : segments) g.segment_stubs(steps.subspan(seg.first, seg.count), seg);
   g.L(exit_after_first);
   g.inc(g.instructions);
   g.jmp(done, Xbyak::CodeGenerator::T_NEAR);

@@ -122,6 +122,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void sync_pc(std::span<const Step> run, size_t j);
   void stall_stub(const Step& s, size_t k, Segment& seg);
+  void plan(std::span<const Step> run, Segment& seg);
+  void segment_stubs(std::span<const Step> run, Segment& seg);
+  void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
   void chain();
   static constexpr size_t kPrologueBytes = 64;
   void prologue(const Layout& layout);

@@ -176,8 +176,43 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 // checking it here), so that a run whose later lines miss runs natively up to them. Such a hit
 // also means the code is cached (Bus::cached_code), as the load-shadow model asks of a native
 // load.
-void Impl::guard(std::span<const Step> run, Label& fail, Label* fill, Label* filled) {
+void Impl::guard(std::span<const Step> run, Label& fail, Label* fill, Label* filled, bool shared) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
+  const auto any = [&](bool (*pred)(NativeOp)) {
+    return std::any_of(run.begin(), run.end(), [&](const Step& s) { return pred(s.native); });
+  };
+  const u32 needs = (any(is_memory) ? kNeedsMemory : 0) | (any(is_store_or_swc2) ? kNeedsStores : 0) |
+                    (any(is_cop2) ? kNeedsCop2 : 0);
+  if (shared) {
+    call(machine_routine(needs));
+    jnz(fail, T_NEAR);
+  } else {
+    machine_checks(needs, fail);
+  }
+  if (is_branch(run[0].native)) {  // branch() assumes it is not in a delay slot
+    cmp(byte[rbx + lay.next_in_delay], 0);
+    jne(fail, T_NEAR);
+    cmp(cpu32(lay.next_pc), first + 4);
+    jne(fail, T_NEAR);
+  }
+  Label no_loop_head;
+  mov(eax, cpu32(lay.loop_head));  // run() would hand a loop head in the segment to IdleSkip
+  sub(eax, first);
+  cmp(eax, bytes);
+  jae(no_loop_head);
+  cmp(qword[rbx + lay.idle_skip], 0);
+  jne(fail, T_NEAR);
+  L(no_loop_head);
+  if (run.back().pc >= 0xA0000000) {  // KSEG1 (uncached) or beyond: every fetch takes time
+    jmp(fail, T_NEAR);
+    return;
+  }
+  line_check(run, fail, fill, filled);
+}
+
+// guard()'s checks that depend on the run only through `needs` (kNeeds*): stop, hooks, the
+// deadline, the pipeline, DCIC, SR.CU2, memory_guard(), pending interrupts, the i-cache enabled.
+void Impl::machine_checks(u32 needs, Label& fail) {
   cmp(byte[rbx + lay.stop], 0);
   jne(fail, T_NEAR);
   cmp(byte[rbx + lay.hook_armed], 0);
@@ -187,31 +222,14 @@ void Impl::guard(std::span<const Step> run, Label& fail, Label* fill, Label* fil
   mov(eax, cpu32(lay.new_load_reg));
   or_(eax, cpu32(lay.new_load_val));
   jnz(fail, T_NEAR);
-  const auto any = [&](bool (*pred)(NativeOp)) {
-    return std::any_of(run.begin(), run.end(), [&](const Step& s) { return pred(s.native); });
-  };
-  const bool memory = any(is_memory), stores = any(is_store_or_swc2);
-  test(cpu32(lay.dcic), memory ? Cop0::kDcicPCE | Cop0::kDcicDAE : Cop0::kDcicPCE);
+  test(cpu32(lay.dcic), (needs & kNeedsMemory) ? Cop0::kDcicPCE | Cop0::kDcicDAE : Cop0::kDcicPCE);
   jnz(fail, T_NEAR);
-  if (any(is_cop2)) {
+  if (needs & kNeedsCop2) {
     test(cpu32(lay.sr), Cop0::kCU2);  // else the GTE instructions raise Coprocessor Unusable
     jz(fail, T_NEAR);
   }
-  if (memory) memory_guard(stores, fail);
-  if (is_branch(run[0].native)) {  // branch() assumes it is not in a delay slot
-    cmp(byte[rbx + lay.next_in_delay], 0);
-    jne(fail, T_NEAR);
-    cmp(cpu32(lay.next_pc), first + 4);
-    jne(fail, T_NEAR);
-  }
-  Label no_loop_head, interrupts_off, no_irq;
-  mov(eax, cpu32(lay.loop_head));  // run() would hand a loop head in the segment to IdleSkip
-  sub(eax, first);
-  cmp(eax, bytes);
-  jae(no_loop_head);
-  cmp(qword[rbx + lay.idle_skip], 0);
-  jne(fail, T_NEAR);
-  L(no_loop_head);
+  if (needs & kNeedsMemory) memory_guard((needs & kNeedsStores) != 0, fail);
+  Label interrupts_off, no_irq;
   mov(eax, cpu32(lay.sr));  // CpuT::interrupt_pending()
   test(eax, Cop0::kIEc);
   jz(interrupts_off);
@@ -228,14 +246,30 @@ void Impl::guard(std::span<const Step> run, Label& fail, Label* fill, Label* fil
   test(ecx, 0xFF00);
   jnz(fail, T_NEAR);
   L(interrupts_off);
-  if (run.back().pc >= 0xA0000000) {  // KSEG1 (uncached) or beyond: every fetch takes time
-    jmp(fail, T_NEAR);
-    return;
-  }
   mov(rax, reinterpret_cast<u64>(lay.cache_control));
   test(dword[rax], lay.icache_enable);
   jz(fail, T_NEAR);
-  line_check(run, fail, fill, filled);
+}
+
+// machine_checks() as a routine of the block (emitted once per `needs` with the cold code),
+// for the re-guards after slow calls: called, it answers with ZF set when every check holds.
+// Nothing in it calls out, so the stack needs no alignment.
+Label& Impl::machine_routine(u32 needs) {
+  Label*& r = routines[needs];
+  if (!r) {
+    r = &cold_label();
+    cold.push_back([this, needs, &entry = *r] {
+      Label fail;
+      L(entry);
+      machine_checks(needs, fail);
+      xor_(eax, eax);  // ZF set: the checks hold
+      ret();
+      L(fail);
+      or_(eax, 1);  // ZF clear
+      ret();
+    });
+  }
+  return *r;
 }
 
 // The i-cache check for the words of `run` on its first word's line: the line's tag must be the
@@ -573,7 +607,7 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
     jmp(seg.end, T_NEAR);
     return;
   }
-  guard(run.subspan(k + 1), seg.slow[k + 1]);
+  guard(run.subspan(k + 1), seg.slow[k + 1], nullptr, nullptr, true);
   sub(instructions, int(k + 1));  // native code counts from where it resumes
   jmp(seg.resume[k + 1], T_NEAR);
 }
@@ -592,6 +626,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   Label done, exit_after_first;
   g.exit = &done;
   g.exit_after_first = &exit_after_first;
+  g.routines.fill(nullptr);
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   g.prologue(layout);

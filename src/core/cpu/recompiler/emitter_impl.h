@@ -13,6 +13,7 @@
 #pragma once
 #include <xbyak/xbyak.h>
 
+#include <array>
 #include <deque>
 #include <functional>
 #include <vector>
@@ -110,9 +111,14 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void arm_hook_ecx();
   void branch(NativeOp op, u32 pc, u32 i);
   // guard() and line_check() send a missing line to `fill` where given (a fill_stub()'s entry),
-  // which comes back to `filled`.
+  // which comes back to `filled`. A `shared` guard calls machine_routine() instead of emitting
+  // machine_checks() inline (re-guards after slow calls: shorter code, compiled faster).
   void guard(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
-             Xbyak::Label* filled = nullptr);
+             Xbyak::Label* filled = nullptr, bool shared = false);
+  static constexpr u32 kNeedsMemory = 1, kNeedsStores = 2, kNeedsCop2 = 4;
+  void machine_checks(u32 needs, Xbyak::Label& fail);
+  Xbyak::Label& machine_routine(u32 needs);
+  std::array<Xbyak::Label*, 8> routines{};  // this block's machine_routine() entries, by needs
   void line_check(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
                   Xbyak::Label* filled = nullptr);
   bool fills_natively(u32 pc) const;

@@ -36,7 +36,7 @@ class RecompilerT {
  public:
   using Cpu = CpuT<BusT>;
   static constexpr u32 kMaxBlock = 32;
-  // Tumble in play compiles to about 1500 blocks of 4.7 KB on average (slow paths included): a
+  // Tumble in play compiles to about 1500 blocks of 4.3 KB on average (slow paths included): a
   // 4 MiB buffer filled and was dropped every ~120 moves. Pages become resident only once
   // written, so a console holds what it compiled, not the whole buffer.
   static constexpr size_t kCodeBytes = 16 << 20;

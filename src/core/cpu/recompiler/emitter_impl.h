@@ -33,10 +33,6 @@ struct Pipe {
   u32 load_reg = 0;
 };
 
-// One native segment's pieces emitted after the block's main path: its steps as calls (the slow
-// path; `slow[k]` enters it at instruction k), a load's or store's call when the native code
-// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), the
-// shadow-stall stubs, and the exits when the deadline comes before instruction k (`late[k]`).
 // What instruction k of a segment does about the load shadow (CpuT::shadow_stall). A load
 // leaves its access ending at most kLoadIssue + kLoadBus - 1 cycles after it (7), and each
 // instruction takes at least one: by the 7th instruction after the last load (or after the
@@ -44,13 +40,17 @@ struct Pipe {
 // always clears the shadow (`clear`), and after it the shadow is known to be clear (`none`).
 enum class Shadow : u8 { check, clear, none };
 
+// One native segment's pieces emitted after the block's main path: its steps as calls (the slow
+// path; `slow[k]` enters it at instruction k), a load's or store's call when the native code
+// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), the
+// shadow-stall stubs, and the exits when the deadline comes before instruction k (`late[k]`).
 struct Segment {
   size_t first, count;
   std::vector<Shadow> shadow;  // per instruction
   Xbyak::Label end;
   std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back, late;
   // An i-cache line the run reaches at instruction k missing: fill_stub() fills it natively at
-  // `fill[k]` and goes on at `filled[k]` (past the line check), or sends k to `slow[k]`.
+  // `fill[k]` and goes on at `filled[k]` (past the line check), or sends k to its slow path.
   std::vector<Xbyak::Label> fill, filled;
   // slow[k] entered from native code, which counts its instructions only where it leaves: the
   // count of instructions 0..k-1 is added first (native()).
@@ -64,9 +64,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Layout lay{};
   Xbyak::Label* exit = nullptr;  // the block's epilogue
   Xbyak::Label* exit_after_first = nullptr;  // the same after a segment's first instruction
-  // Rarely taken code of the block's instructions (a scratchpad access, a store into compiled
-  // code), emitted after the whole block so that the main path stays short; labels it jumps to
-  // or from live in cold_labels until then.
+  // Rarely taken code of the block (a scratchpad access, a store into compiled code, the
+  // machine_routine()s), emitted after the whole block so that the main path stays short;
+  // labels it jumps to or from live in cold_labels until then.
   std::vector<std::function<void()>> cold;
   std::deque<Xbyak::Label> cold_labels;
   Xbyak::Label& cold_label() { return cold_labels.emplace_back(); }

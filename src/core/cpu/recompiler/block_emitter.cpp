@@ -277,9 +277,8 @@ Label& Impl::machine_routine(u32 needs) {
 // (ICache::hit()), and each must be the word compiled.
 void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label* filled) {
   const u32 line = run[0].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
-  size_t n = 0;
   u32 need = 0;
-  for (; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ((run[n].pc >> 2) & 3);
+  for (size_t n = 0; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ((run[n].pc >> 2) & 3);
   mov(rax, reinterpret_cast<u64>(&lay.icache_tags[(line >> 4) & 255]));
   if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
     cmp(dword[rax], (phys & ICache::kTagMask) | 0xF);
@@ -290,16 +289,27 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
   }
   jnz(fill ? *fill : fail, T_NEAR);
   mov(rax, reinterpret_cast<u64>(&lay.icache_words[(line >> 2) & 1020]));
-  for (size_t k = 0; k < n; ++k) {
+  line_words(run, fail);
+  if (filled) L(*filled);
+}
+
+// Each word of `run` on its first word's line, in the four words at rax, must be the word
+// compiled.
+void Impl::line_words(std::span<const Step> run, Label& fail) {
+  const u32 line = run[0].pc & ~15u;
+  for (size_t k = 0; k < run.size() && (run[k].pc & ~15u) == line; ++k) {
     cmp(dword[rax + 4 * ((run[k].pc >> 2) & 3)], run[k].word);
     jne(fail, T_NEAR);
   }
-  if (filled) L(*filled);
 }
 
 // Whether a miss on pc's line can be filled by native code: cached code in RAM (the guard has
 // ruled out KSEG1).
 bool Impl::fills_natively(u32 pc) const { return lay.icache_miss_ram && (pc & 0x1FFFFFFF) < 0x00800000; }
+
+// Where a line check at instruction k (at pc) sends a miss: its fill stub, or nowhere (null: the
+// slow path) when the line cannot be filled natively.
+Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const { return fills_natively(pc) ? &seg.fill[k] : nullptr; }
 
 // The fetch of rest[0] (instruction k) missing the i-cache, as CpuT::execute_at_pc() and
 // Bus::fetch_slow() make it: the instruction's cycle, then the wait for a load's bus access
@@ -316,10 +326,7 @@ void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
   test(dword[rax], lay.icache_block_bits);
   jz(slow, T_NEAR);
   mov(rax, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
-  for (size_t j = 0; j < rest.size() && (rest[j].pc & ~15u) == line; ++j) {
-    cmp(dword[rax + 4 * ((rest[j].pc >> 2) & 3)], rest[j].word);
-    jne(slow, T_NEAR);
-  }
+  line_words(rest, slow);
   mov(rdi, reinterpret_cast<u64>(lay.bus));
   mov(esi, rest[0].pc);
   call_leaf(reinterpret_cast<const void*>(lay.icache_miss_ram));
@@ -353,10 +360,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     jae(seg.late[k], T_NEAR);
     // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
     // which fetches (and fills) it.
-    if ((s.pc & 15) == 0) {
-      if (fills_natively(s.pc)) line_check(rest, seg.slow_native[k], &seg.fill[k], &seg.filled[k]);
-      else line_check(rest, seg.slow_native[k]);
-    }
+    if ((s.pc & 15) == 0) line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
   }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   if (k == 0 || after_branch) mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
@@ -643,8 +647,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.count = i - seg.first;
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
     g.plan(run, seg);
-    if (g.fills_natively(run[0].pc)) g.guard(run, seg.slow[0], &seg.fill[0], &seg.filled[0]);
-    else g.guard(run, seg.slow[0]);
+    g.guard(run, seg.slow[0], g.fill_entry(run[0].pc, seg, 0), &seg.filled[0]);
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);

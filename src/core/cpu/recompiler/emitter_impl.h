@@ -121,7 +121,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   std::array<Xbyak::Label*, 8> routines{};  // this block's machine_routine() entries, by needs
   void line_check(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
                   Xbyak::Label* filled = nullptr);
+  void line_words(std::span<const Step> run, Xbyak::Label& fail);
   bool fills_natively(u32 pc) const;
+  Xbyak::Label* fill_entry(u32 pc, Segment& seg, size_t k) const;
   void fill_stub(std::span<const Step> rest, size_t k, Segment& seg);
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg);

@@ -309,7 +309,9 @@ bool Impl::fills_natively(u32 pc) const { return lay.icache_miss_ram && (pc & 0x
 
 // Where a line check at instruction k (at pc) sends a miss: its fill stub, or nowhere (null: the
 // slow path) when the line cannot be filled natively.
-Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const { return fills_natively(pc) ? &seg.fill[k] : nullptr; }
+Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
+  return fills_natively(pc) ? &seg.fill[k] : nullptr;
+}
 
 // The fetch of rest[0] (instruction k) missing the i-cache, as CpuT::execute_at_pc() and
 // Bus::fetch_slow() make it: the instruction's cycle, then the wait for a load's bus access

@@ -12,6 +12,7 @@
 #include "core/irq.h"
 #include "core/scheduler.h"
 #include "gpu/gpu.h"
+#include "sanitizer_scale.h"
 #include "tumble_console_util.h"
 
 namespace {
@@ -188,7 +189,7 @@ class Stream {
 };
 
 TEST(GpuDeferred, RandomStreamsEqualEagerDrawing) {
-  for (u32 seed = 1; seed <= 24; ++seed) {
+  for (int seed = 1; seed <= test_scale::sized(24, 6); ++seed) {
     SCOPED_TRACE(seed);
     Twins t;
     t.gp1(0x03000000);

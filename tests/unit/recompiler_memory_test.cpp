@@ -16,6 +16,7 @@
 
 #include "core/cpu/cop0.h"
 #include "recompiler_test_util.h"
+#include "sanitizer_scale.h"
 
 namespace {
 
@@ -131,7 +132,7 @@ std::vector<u32> memory_stream(u32 seed, u32 length) {
 
 TEST(RecompilerMemory, RandomMemoryStreams) {
   // 600 instructions fit the i-cache with the handler, so the blocks run their native code.
-  for (u32 seed = 1; seed <= 24; ++seed) {
+  for (int seed = 1; seed <= test_scale::sized(24, 6); ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     expect_same_code(memory_stream(seed, 600), kBase, 0, memory_regs(seed), 2, random_data(seed));
   }
@@ -142,7 +143,7 @@ TEST(RecompilerMemory, RandomMemoryStreams) {
 // debug vector 0x80000040, whose nops run into the handler at 0x80000080).
 TEST(RecompilerMemory, StreamsWithDataBreaks) {
   for (u32 trap : {0u, 1u}) {
-    for (u32 seed = 31; seed <= 34; ++seed) {
+    for (int seed = 31; seed < 31 + test_scale::sized(4, 2); ++seed) {
       SCOPED_TRACE("seed " + std::to_string(seed) + (trap ? " trap" : ""));
       const u32 dcic = Cop0::kDcicDE | Cop0::kDcicDAE | Cop0::kDcicDR | Cop0::kDcicDW | Cop0::kDcicKD |
                        (trap ? Cop0::kDcicTR : 0);

@@ -18,6 +18,7 @@
 
 #include "core/console.h"
 #include "recompiler_test_util.h"
+#include "sanitizer_scale.h"
 #include "tumble_console_util.h"
 
 namespace {
@@ -139,7 +140,7 @@ std::vector<u32> random_stream(u32 seed, u32 length) {
 TEST(RecompilerCode, RandomInstructionStreams) {
   // 700 instructions (2.8 KiB) fit the 4 KiB i-cache, so cached runs take the fast steps
   // (recompiler_ops.h) once the lines are filled.
-  for (u32 seed = 1; seed <= 16; ++seed) {
+  for (int seed = 1; seed <= test_scale::sized(16, 4); ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     for (u32 base : {0x80010000u, 0xA0010000u}) {
       std::vector<u32> code = random_stream(seed, 700);

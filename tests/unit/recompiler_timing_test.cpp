@@ -19,6 +19,7 @@
 
 #include "core/state.h"
 #include "recompiler_test_util.h"
+#include "sanitizer_scale.h"
 
 namespace {
 
@@ -137,7 +138,7 @@ void expect_same_trace(const std::vector<u32>& code, u32 seed, u32 gap, int fram
 }
 
 TEST(RecompilerTiming, ProbedRandomStreams) {
-  for (u32 seed = 1; seed <= 10; ++seed) {
+  for (int seed = 1; seed <= test_scale::sized(10, 3); ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     expect_same_trace(timing_stream(seed, 600), seed, 2 + seed * 7, 1);
   }

@@ -11,6 +11,7 @@
 
 #include "rl/async_vec_env.h"
 #include "rl/vec_env.h"
+#include "sanitizer_scale.h"
 
 using namespace psxrl::rl;
 
@@ -33,11 +34,7 @@ TEST(EpisodeSeed, DistinctInputsGiveDistinctSeeds) {
 
 // Sanitizer builds run the emulator several times slower; fewer steps still cover automatic
 // resets there (random play on level 1 ends an episode every few moves).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kSteps = 15;
-#else
-constexpr int kSteps = 60;
-#endif
+constexpr int kSteps = test_scale::sized(60, 15);
 constexpr int kEnvs = 4, kLevel = 1;
 constexpr std::uint64_t kSeed = 2024;
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
@@ -176,18 +177,26 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 // checking it here), so that a run whose later lines miss runs natively up to them. Such a hit
 // also means the code is cached (Bus::cached_code), as the load-shadow model asks of a native
 // load.
-void Impl::guard(std::span<const Step> run, Label& fail, Label* fill, Label* filled, bool shared) {
+void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, Label* fill, Label* filled) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   const auto any = [&](bool (*pred)(NativeOp)) {
     return std::any_of(run.begin(), run.end(), [&](const Step& s) { return pred(s.native); });
   };
   const u32 needs = (any(is_memory) ? kNeedsMemory : 0) | (any(is_store_or_swc2) ? kNeedsStores : 0) |
                     (any(is_cop2) ? kNeedsCop2 : 0);
-  if (shared) {
-    call(machine_routine(needs));
-    jnz(fail, T_NEAR);
-  } else {
-    machine_checks(needs, fail);
+  switch (checks) {
+    case Checks::all: machine_checks(needs, fail); break;
+    case Checks::routine:
+      call(machine_routine(needs));
+      jnz(fail, T_NEAR);
+      break;
+    case Checks::entry: {
+      const size_t start = getSize();
+      state_checks(fail);
+      pad_to(start, kStateCheckBytes, "state checks");
+      needs_checks(needs, fail);
+      break;
+    }
   }
   if (is_branch(run[0].native)) {  // branch() assumes it is not in a delay slot
     cmp(byte[rbx + lay.next_in_delay], 0);
@@ -210,9 +219,19 @@ void Impl::guard(std::span<const Step> run, Label& fail, Label* fill, Label* fil
   line_check(run, fail, fill, filled);
 }
 
-// guard()'s checks that depend on the run only through `needs` (kNeeds*): stop, hooks, the
-// deadline, the pipeline, DCIC, SR.CU2, memory_guard(), pending interrupts, the i-cache enabled.
+// guard()'s checks that depend on the run only through `needs` (kNeeds*).
 void Impl::machine_checks(u32 needs, Label& fail) {
+  state_checks(fail);
+  needs_checks(needs, fail);
+}
+
+// The checks that hold for every run alike: no stop, no hook armed, time before the deadline, no
+// load entering the pipeline, no DCIC code break, no pending interrupt, the i-cache enabled. Only
+// a stop, the deadline and a hook armed by a branch change while native code runs, so a block
+// whose native run reaches its end vouches for the rest to the block it chains to (chain(true)).
+// Always the same code (fixed-size encodings and near jumps), padded to kStateCheckBytes at a
+// block's entry.
+void Impl::state_checks(Label& fail) {
   cmp(byte[rbx + lay.stop], 0);
   jne(fail, T_NEAR);
   cmp(byte[rbx + lay.hook_armed], 0);
@@ -222,13 +241,8 @@ void Impl::machine_checks(u32 needs, Label& fail) {
   mov(eax, cpu32(lay.new_load_reg));
   or_(eax, cpu32(lay.new_load_val));
   jnz(fail, T_NEAR);
-  test(cpu32(lay.dcic), (needs & kNeedsMemory) ? Cop0::kDcicPCE | Cop0::kDcicDAE : Cop0::kDcicPCE);
+  test(cpu32(lay.dcic), Cop0::kDcicPCE);
   jnz(fail, T_NEAR);
-  if (needs & kNeedsCop2) {
-    test(cpu32(lay.sr), Cop0::kCU2);  // else the GTE instructions raise Coprocessor Unusable
-    jz(fail, T_NEAR);
-  }
-  if (needs & kNeedsMemory) memory_guard((needs & kNeedsStores) != 0, fail);
   Label interrupts_off, no_irq;
   mov(eax, cpu32(lay.sr));  // CpuT::interrupt_pending()
   test(eax, Cop0::kIEc);
@@ -249,6 +263,26 @@ void Impl::machine_checks(u32 needs, Label& fail) {
   mov(rax, reinterpret_cast<u64>(lay.cache_control));
   test(dword[rax], lay.icache_enable);
   jz(fail, T_NEAR);
+}
+
+// The checks a run's instructions ask for: no DCIC data break for memory accesses, SR.CU2 for
+// the GTE's, and memory_guard().
+void Impl::needs_checks(u32 needs, Label& fail) {
+  if (needs & kNeedsMemory) {
+    test(cpu32(lay.dcic), Cop0::kDcicDAE);
+    jnz(fail, T_NEAR);
+  }
+  if (needs & kNeedsCop2) {
+    test(cpu32(lay.sr), Cop0::kCU2);  // else the GTE instructions raise Coprocessor Unusable
+    jz(fail, T_NEAR);
+  }
+  if (needs & kNeedsMemory) memory_guard((needs & kNeedsStores) != 0, fail);
+}
+
+void Impl::pad_to(size_t start, size_t bytes, const char* what) {
+  const size_t used = getSize() - start;
+  if (used > bytes) throw std::logic_error(std::string("recompiler: ") + what + " longer than reserved (" + std::to_string(used) + " bytes)");
+  nop(bytes - used);
 }
 
 // machine_checks() as a routine of the block (emitted once per `needs` with the cold code),
@@ -491,13 +525,19 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
 // to IdleSkip, no written code pages whose blocks must be dropped first), the block jumps there
 // itself, past that block's prologue (kPrologueBytes), in the same frame and with the time and
 // count still in their registers; otherwise it writes them back and returns to the dispatcher,
-// which makes the same checks and does what they ask.
-void Impl::chain() {
+// which makes the same checks and does what they ask. A `clean` chain, from a native run that
+// reached the block's end, also skips the next block's state_checks() (kCleanEntry): they held
+// when that run started, and of what they check only a hook could have changed since.
+void Impl::chain(bool clean) {
   Label back, no_loop_head;
   cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
   cmp(now, deadline);
   jae(back, T_NEAR);
+  if (clean) {
+    cmp(byte[rbx + lay.hook_armed], 0);
+    jne(back, T_NEAR);
+  }
   mov(eax, cpu32(lay.pc));
   cmp(eax, cpu32(lay.loop_head));
   jne(no_loop_head);
@@ -515,7 +555,7 @@ void Impl::chain() {
   cmp(dword[rdx + rcx], eax);
   jne(back, T_NEAR);
   mov(rax, qword[rdx + rcx + 8]);
-  add(rax, kPrologueBytes);
+  add(rax, clean ? kCleanEntry : kPrologueBytes);
   jmp(rax);
   L(back);
   flush();
@@ -534,9 +574,7 @@ void Impl::prologue(const Layout& layout) {
   mov(rbx, reinterpret_cast<u64>(layout.context));
   mov(r12, reinterpret_cast<u64>(layout.sched));
   reload();
-  const size_t used = getSize() - start;  // at most 57 bytes (the longest encodings)
-  if (used > kPrologueBytes) throw std::logic_error("recompiler: block prologue longer than kPrologueBytes");
-  nop(kPrologueBytes - used);
+  pad_to(start, kPrologueBytes, "block prologue");  // at most 57 bytes (the longest encodings)
 }
 
 void Impl::epilogue() {
@@ -613,7 +651,7 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
     jmp(seg.end, T_NEAR);
     return;
   }
-  guard(run.subspan(k + 1), seg.slow[k + 1], nullptr, nullptr, true);
+  guard(run.subspan(k + 1), seg.slow[k + 1], Checks::routine);
   sub(instructions, int(k + 1));  // native code counts from where it resumes
   jmp(seg.resume[k + 1], T_NEAR);
 }
@@ -635,7 +673,14 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.routines.fill(nullptr);
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
+  const size_t start = g.getSize();
   g.prologue(layout);
+  if (steps[0].native == NativeOp::None) {  // no guard: both chained entries go to the first call
+    Label first;
+    g.jmp(first, Xbyak::CodeGenerator::T_NEAR);
+    g.pad_to(start, Impl::kCleanEntry, "block entry");
+    g.L(first);
+  }
   std::vector<Segment> segments;
   segments.reserve(steps.size());  // labels must not move once used
   for (size_t i = 0; i < steps.size();) {
@@ -649,7 +694,8 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.count = i - seg.first;
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
     g.plan(run, seg);
-    g.guard(run, seg.slow[0], g.fill_entry(run[0].pc, seg, 0), &seg.filled[0]);
+    g.guard(run, seg.slow[0], seg.first == 0 ? Impl::Checks::entry : Impl::Checks::all,
+            g.fill_entry(run[0].pc, seg, 0), &seg.filled[0]);
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);
@@ -657,10 +703,11 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     }
     g.add(g.instructions, int(seg.count));
     g.sync_pc(run, seg.count - 1);
+    if (i == steps.size()) g.chain(true);  // the block's native end
     g.L(seg.end);
   }
   g.L(done);
-  g.chain();
+  g.chain(false);
   for (Segment& seg : segments) g.segment_stubs(steps.subspan(seg.first, seg.count), seg);
   g.L(exit_after_first);
   g.inc(g.instructions);

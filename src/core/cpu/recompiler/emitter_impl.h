@@ -110,13 +110,20 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void arm_hook_static(u32 target);
   void arm_hook_ecx();
   void branch(NativeOp op, u32 pc, u32 i);
+  // How a guard makes machine_checks(): inline (`all`), by calling machine_routine() (`routine`:
+  // re-guards after slow calls, shorter code, compiled faster), or as the block's entry (`entry`:
+  // its state_checks() padded to kStateCheckBytes, where a clean chain() enters past them).
+  enum class Checks { all, routine, entry };
   // guard() and line_check() send a missing line to `fill` where given (a fill_stub()'s entry),
-  // which comes back to `filled`. A `shared` guard calls machine_routine() instead of emitting
-  // machine_checks() inline (re-guards after slow calls: shorter code, compiled faster).
-  void guard(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
-             Xbyak::Label* filled = nullptr, bool shared = false);
+  // which comes back to `filled`.
+  void guard(std::span<const Step> run, Xbyak::Label& fail, Checks checks, Xbyak::Label* fill = nullptr,
+             Xbyak::Label* filled = nullptr);
   static constexpr u32 kNeedsMemory = 1, kNeedsStores = 2, kNeedsCop2 = 4;
   void machine_checks(u32 needs, Xbyak::Label& fail);
+  void state_checks(Xbyak::Label& fail);
+  void needs_checks(u32 needs, Xbyak::Label& fail);
+  // Nops from getSize() up to `start` + `bytes`; throws where the code since `start` is longer.
+  void pad_to(size_t start, size_t bytes, const char* what);
   Xbyak::Label& machine_routine(u32 needs);
   std::array<Xbyak::Label*, 8> routines{};  // this block's machine_routine() entries, by needs
   void line_check(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
@@ -133,8 +140,11 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
-  void chain();
-  static constexpr size_t kPrologueBytes = 64;
+  void chain(bool clean);
+  // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
+  // block that cannot vouch for state_checks()), fn + kCleanEntry (a clean chain()).
+  static constexpr size_t kPrologueBytes = 64, kStateCheckBytes = 168;  // state checks: 162 bytes
+  static constexpr size_t kCleanEntry = kPrologueBytes + kStateCheckBytes;
   void prologue(const Layout& layout);
   void epilogue();
   // block_emitter_memory.cpp

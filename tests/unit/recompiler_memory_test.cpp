@@ -331,4 +331,49 @@ TEST(RecompilerMemory, StoreThatStopsTheCpu) {
   expect_same_code(code, kBase, 0, regs, 1);
 }
 
+// A block compiled from a stale i-cache line: the code at P is run (cached), rewritten in RAM
+// (the store drops P's block), run again from the cache's old words (compiled anew from them),
+// then evicted by code 4 KiB away. From then on the loop calls P: the first call misses and
+// fills the new word from RAM, and every later one hits a line whose tag matches P but whose
+// words are not the ones compiled, so the guard must refuse the block (the interpreter runs the
+// new word, adding 2 to s1 where the old one added 1). P sits at each word of its line, so the
+// line check compares three, three, two or one of its words (P and the jr and nop after it).
+TEST(RecompilerMemory, BlockCompiledFromAStaleLineRefusedAfterARefill) {
+  for (u32 at = 0; at < 4; ++at) {
+    SCOPED_TRACE("P at word " + std::to_string(at) + " of its line");
+    const u32 p = kBase + 0x40 + 4 * at, evict = p + 0x1000;
+    const u32 jal_p = 0x03u << 26 | ((p >> 2) & 0x03FFFFFF);
+    std::vector<u32> code = {
+        jal_p,                                          // 0: P cached with the old word
+        kNop,
+        itype(0x23, kCode, kT0, 0x40 + 4 * at),        // 2: lw t0, P
+        kNop,
+        itype(0x09, kT0, kT0, 1),                      // 4: addiu s1, s1, 1 -> addiu s1, s1, 2
+        itype(0x2B, kCode, kT0, 0x40 + 4 * at),        // 5: sw t0, P (RAM only)
+        jal_p,                                          // 6: the cache's old word
+        kNop,
+        0x03u << 26 | ((evict >> 2) & 0x03FFFFFF),    // 8: jal evict
+        kNop,
+        jal_p,                                          // 10: the loop
+        kNop,
+        j(kBase + 10 * 4), kNop};
+    code.resize(16 + at, kNop);
+    for (u32 w : {itype(0x09, kS1, kS1, 1), rtype(0x08, kRa, 0, 0), kNop}) code.push_back(w);  // P
+    const std::vector<u32> evictor = {rtype(0x08, kRa, 0, 0), kNop};  // jr ra
+    std::vector<u32> regs = memory_regs(5);
+    regs[kS1 - 1] = 0;
+    std::vector<psx::u8> states[2];
+    for (int rec = 0; rec < 2; ++rec) {
+      Console c;
+      if (rec) c.set_cpu_mode(Console::CpuMode::Recompiler);
+      load_code(c, code, kBase, 0, regs);
+      for (u32 i = 0; i < evictor.size(); ++i) c.write32(evict + 4 * i, evictor[i]);
+      c.run_frames(2);
+      states[rec] = state_of(c);
+      EXPECT_GT(c.cpu().reg(kS1), 2000u);  // the loop ran
+    }
+    EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+  }
+}
+
 }  // namespace

@@ -281,7 +281,9 @@ void Impl::needs_checks(u32 needs, Label& fail) {
 
 void Impl::pad_to(size_t start, size_t bytes, const char* what) {
   const size_t used = getSize() - start;
-  if (used > bytes) throw std::logic_error(std::string("recompiler: ") + what + " longer than reserved (" + std::to_string(used) + " bytes)");
+  if (used > bytes)
+    throw std::logic_error(std::string("recompiler: ") + what + " longer than reserved (" + std::to_string(used) +
+                           " bytes)");
   nop(bytes - used);
 }
 

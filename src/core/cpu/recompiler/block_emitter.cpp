@@ -690,8 +690,10 @@ BlockEmitter::~BlockEmitter() = default;
 BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const Step> steps) {
   // Upper bounds on one step's code (inline code with a line check, stall stub, and the slow
   // call and the load's or store's call, each with the guard for the rest: at most about 180
-  // bytes and a line check of at most 90) and on the frame's.
-  const size_t step_bytes = 1536, frame_bytes = 256;
+  // bytes and a line check of at most 90) and on the frame's (prologue and padded state checks,
+  // kCleanEntry bytes, then two chain()s of about 150 bytes each and the first
+  // instruction's exit).
+  const size_t step_bytes = 1536, frame_bytes = 768;
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;

@@ -30,16 +30,20 @@ IdleProof::Kind IdleProof::classify(u32 instr) {
     case 0x02: case 0x03: case 0x04: case 0x05: case 0x06: case 0x07: return Kind::Branch;
     case 0x09: case 0x0A: case 0x0B: case 0x0C: case 0x0D: case 0x0E: case 0x0F: return Kind::Alu;
     case 0x20: case 0x21: case 0x23: case 0x24: case 0x25: return Kind::Load;  // not LWL/LWR
-    default: return Kind::Other;  // stores, coprocessors, ADDI (it traps)
+    case 0x2B: return Kind::Store;  // SW
+    default: return Kind::Other;  // narrower and unaligned stores, coprocessors, ADDI (it traps)
   }
 }
 
-IdleProof::IdleProof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg, u32 load_val)
-    : after_(after), load_reg_(load_reg), load_val_(constant(load_val)), start_load_reg_(load_reg), start_load_val_(load_val) {
+IdleProof::IdleProof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg, u32 load_val,
+                     const IdleCells& cells)
+    : after_(after), cell_line_(cells), load_reg_(load_reg), load_val_(constant(load_val)), start_load_reg_(load_reg),
+      start_load_val_(load_val) {
   for (u32 r = 0; r < 32; ++r) {
     steps_[r] = after[r] - before[r];
     regs_[r] = {after[r], steps_[r], true};
   }
+  for (u32 c = 0; c < cells.count; ++c) cells_[c] = {cells.after[c], cells.after[c] - cells.before[c], true};
 }
 
 void IdleProof::no_wrap(const Val& v, bool sign) {
@@ -193,6 +197,23 @@ bool IdleProof::control(const IdleStep* path, u32 n, u32 i) {
   return path[(i + 2) % n].pc == (taken ? target : pc + 8);
 }
 
+// A load or store at the address recorded, which must not depend on k. A load of a stored word
+// delivers the word's value as the loop left it (base + k*step, like a register); any other load
+// what it delivered (memory cannot change before an event but by the loop's stores). A store
+// reads rt before the load in flight lands, as the CPU does.
+bool IdleProof::memory(const IdleStep& step, bool store) {
+  const u32 instr = step.instr;
+  const Val addr = add(regs_[rs(instr)], constant(simm(instr)));
+  if (!addr.constant() || addr.base != step.addr) return false;
+  if (store) {
+    if (step.cell == 0) return false;
+    cells_[step.cell - 1] = regs_[rt(instr)];
+    return true;
+  }
+  delayed_load(rt(instr), step.cell ? cells_[step.cell - 1] : partial(step.load_value, step.load_bits));
+  return true;
+}
+
 bool IdleProof::run(const IdleStep* path, u32 n) {
   for (u32 i = 0; i < n; ++i) {
     const u32 instr = path[i].instr;
@@ -201,12 +222,8 @@ bool IdleProof::run(const IdleStep* path, u32 n) {
     bool ok = false;
     switch (classify(instr)) {
       case Kind::Alu: ok = alu(instr); break;
-      case Kind::Load: {
-        const Val addr = add(regs_[rs(instr)], constant(simm(instr)));
-        ok = addr.constant() && addr.base == path[i].load_addr;
-        if (ok) delayed_load(rt(instr), partial(path[i].load_value, path[i].load_bits));
-        break;
-      }
+      case Kind::Load: ok = memory(path[i], false); break;
+      case Kind::Store: ok = memory(path[i], true); break;
       case Kind::Branch: ok = control(path, n, i); break;
       case Kind::Other: break;
     }
@@ -222,6 +239,11 @@ bool IdleProof::run(const IdleStep* path, u32 n) {
   for (u32 r = 1; r < 32; ++r) {
     const Val& v = regs_[r];
     if (!v.affine() || v.step != steps_[r] || v.base != after_[r] + steps_[r]) return false;
+  }
+  for (u32 c = 0; c < cell_line_.count; ++c) {
+    const Val& v = cells_[c];
+    const u32 step = cell_line_.after[c] - cell_line_.before[c];
+    if (!v.affine() || v.step != step || v.base != cell_line_.after[c] + step) return false;
   }
   return true;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "core/bus.h"
+#include "core/endian.h"
 #include "core/cpu/cpu.h"
 #include "core/cpu/idle_proof.h"
 
@@ -58,8 +59,23 @@ u32 pure_load_bits(u32 sr, u32 vaddr, u32 width, bool sign) {
 // nothing can wait for it any more.
 Cycles shadow_left(Cycles done, Cycles now) { return done > now ? done - now : 0; }
 
+// What names a word of RAM or the scratchpad whichever mirror or segment addresses it: RAM's
+// offset, or the scratchpad's with bit 31 set; kNoWord elsewhere (I/O, the BIOS ROM).
+constexpr u32 kNoWord = ~0u, kScratchTag = 0x80000000;
+u32 location(u32 vaddr) {
+  const u32 p = Bus::physical(vaddr);
+  if (p < 0x00800000) return p & (Bus::kRamSize - 1);
+  if (p >= 0x1F800000 && p < 0x1F800000 + Bus::kScratchSize && vaddr < 0xA0000000)
+    return kScratchTag | (p & (Bus::kScratchSize - 1));
+  return kNoWord;
+}
+
+u32 word_at(Bus& bus, u32 loc) {
+  return load_le32(loc & kScratchTag ? bus.scratchpad() + (loc & ~kScratchTag) : bus.ram() + loc);
+}
+
 bool same_step(const IdleStep& a, const IdleStep& b) {
-  return a.pc == b.pc && a.instr == b.instr && a.load_addr == b.load_addr && a.load_value == b.load_value &&
+  return a.pc == b.pc && a.instr == b.instr && a.addr == b.addr && a.load_value == b.load_value &&
          a.load_bits == b.load_bits;
 }
 
@@ -112,6 +128,7 @@ bool IdleSkip::examine(Cpu& cpu) {
   const u32 shadow_reg0 = cpu.shadow_reg_;
   const ICache& icache = bus.icache();
   path_len_ = 0;
+  cells_.count = 0;
   do {
     if (cpu.stop_ || sched.now() >= deadline) return false;
     if (path_len_ == kMaxPath) return false;
@@ -124,12 +141,14 @@ bool IdleSkip::examine(Cpu& cpu) {
     if (kind == IdleProof::Kind::Other) return false;
     if (kind == IdleProof::Kind::Branch && cpu.next_in_delay_) return false;
     const u32 width = load_width(instr);
+    if (width || kind == IdleProof::Kind::Store)
+      st.addr = cpu.regs_[(instr >> 21) & 31] + static_cast<u32>(static_cast<s16>(instr & 0xFFFF));
     if (width) {
-      st.load_addr = cpu.regs_[(instr >> 21) & 31] + static_cast<u32>(static_cast<s16>(instr & 0xFFFF));
       const bool sign = (instr >> 26) == 0x20 || (instr >> 26) == 0x21;  // LB, LH
-      st.load_bits = pure_load_bits(cpu.cop0_.sr, st.load_addr, width, sign);
+      st.load_bits = pure_load_bits(cpu.cop0_.sr, st.addr, width, sign);
       if (st.load_bits == 0) return false;
     }
+    if (kind == IdleProof::Kind::Store && !note_store(cpu, st)) return false;
     cpu.step();
     st.load_value = cpu.load_val_;
     if (cpu.hook_armed_) return false;
@@ -149,11 +168,13 @@ bool IdleSkip::examine(Cpu& cpu) {
   // for as long, into the same register, at the end as at the start.
   const Cycles shadow0 = shadow_left(done0, t0), shadow1 = shadow_left(cpu.load_done_at_, t1);
   if (shadow0 != shadow1 || (shadow0 && shadow_reg0 != cpu.shadow_reg_)) return false;
+  if (!name_cells(bus)) return false;
 
-  // 2. Prove the following iterations repeat it, each adding the same step to the registers.
+  // 2. Prove the following iterations repeat it, each adding the same step to the registers (and
+  // to the words it stores to).
   u64 max_k;
-  if (!reuse_proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_, max_k)) {
-    IdleProof proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_);
+  if (cells_.count > 0 || !reuse_proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_, max_k)) {
+    IdleProof proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_, cells_);
     if (!proof.run(path_.data(), path_len_)) return false;
     max_k = proof.max_k();
     ++stats_.proofs;
@@ -176,12 +197,56 @@ bool IdleSkip::examine(Cpu& cpu) {
   last_cost_ = cost;
   if (n == 0) return false;
   for (u32 i = 1; i < 32; ++i) cpu.regs_[i] += static_cast<u32>(n) * (cpu.regs_[i] - regs0[i]);
+  // As the last skipped iteration's store leaves it (through the bus: a word of compiled code
+  // drops its blocks).
+  for (u32 c = 0; c < cells_.count; ++c)
+    bus.write32(cells_.vaddr[c], cells_.after[c] + static_cast<u32>(n) * (cells_.after[c] - cells_.before[c]));
   if (cpu.load_done_at_ != done0) cpu.load_done_at_ += n * cost;  // each iteration's load, as the last
   sched.advance(n * cost);
   cpu.instructions_ += n * steps;
   ++stats_.skips;
   stats_.iterations += n;
   stats_.cycles += n * cost;
+  return true;
+}
+
+// A store the loop may make (before it runs): a word to RAM or the scratchpad that reaches memory
+// and nothing else (kernel mode or a KUSEG address, no isolated cache, no memory watch to see it),
+// into at most IdleCells::kMax words. The word's value before the iteration is noted.
+bool IdleSkip::note_store(Cpu& cpu, IdleStep& st) {
+  Bus& bus = cpu.bus_;
+  const u32 loc = location(st.addr);
+  if (loc == kNoWord || pure_load_bits(cpu.cop0_.sr, st.addr, 4, false) == 0 || (cpu.cop0_.sr & Cop0::kIsC) ||
+      *bus.watches_cell() != nullptr)
+    return false;
+  int c = cells_.find(loc);
+  if (c < 0) {
+    if (cells_.count == IdleCells::kMax) return false;
+    c = static_cast<int>(cells_.count++);
+    cells_.location[c] = loc;
+    cells_.vaddr[c] = st.addr;
+    cells_.before[c] = word_at(bus, loc);
+  }
+  st.cell = static_cast<u32>(c) + 1;
+  return true;
+}
+
+// After the iteration: each load of a stored word names its cell, and the cells their values
+// now. A load of part of a stored word, or code fetched from one, is not followed.
+bool IdleSkip::name_cells(Bus& bus) {
+  if (cells_.count == 0) return true;
+  const auto cell_of = [this](u32 vaddr) { return location(vaddr) == kNoWord ? -1 : cells_.find(location(vaddr) & ~3u); };
+  for (u32 i = 0; i < path_len_; ++i) {
+    IdleStep& st = path_[i];
+    if (cell_of(st.pc) >= 0) return false;
+    const u32 width = load_width(st.instr);
+    if (width == 0) continue;
+    const int c = cell_of(st.addr);
+    if (c < 0) continue;
+    if (width != 4) return false;
+    st.cell = static_cast<u32>(c) + 1;
+  }
+  for (u32 c = 0; c < cells_.count; ++c) cells_.after[c] = word_at(bus, cells_.location[c]);
   return true;
 }
 

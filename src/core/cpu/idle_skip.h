@@ -9,22 +9,27 @@
 //
 // How a loop qualifies, at its head (the target of a short backward branch):
 //  1. One iteration is executed normally, instruction by instruction, and recorded. Before each
-//     instruction it is vetted: stores, multiply/divide, coprocessor, trapping and system
-//     instructions disqualify the loop, as does a load from anything but RAM, the scratchpad, the
-//     BIOS ROM or an I/O register whose read has no side effect and whose value changes only at
-//     events or CPU writes (no timer counters, FIFOs, GPUREAD, SIO). No event may fall due, no
-//     i-cache line may be filled (so every iteration costs the same cycles), no hook may fire.
-//  2. The recorded path is re-evaluated symbolically with every register as base + k*step (the
-//     step is what the recorded iteration added), proving that iteration k+1 starts from the
-//     registers of iteration k plus one step, and bounding k so that every branch decision and
-//     load address along the path stays the same (loads return what they returned, as memory and
-//     the allowed registers cannot change before the next event).
+//     instruction it is vetted: multiply/divide, coprocessor, trapping and system instructions
+//     disqualify the loop, as do stores other than whole words to RAM or the scratchpad (at most
+//     four words, none of them code the loop runs or read in part), and loads from anything but
+//     RAM, the scratchpad, the BIOS ROM or an I/O register whose read has no side effect and whose
+//     value changes only at events or CPU writes (no timer counters, FIFOs, GPUREAD, SIO). No event
+//     may fall due, no i-cache line may be filled (so every iteration costs the same cycles), no
+//     hook may fire.
+//  2. The recorded path is re-evaluated symbolically with every register and every stored word as
+//     base + k*step (the step is what the recorded iteration added), proving that iteration k+1
+//     starts from the registers and words of iteration k plus one step, and bounding k so that
+//     every branch decision and load and store address along the path stays the same (other
+//     loads return what they returned, as memory the loop does not store to and the allowed
+//     registers cannot change before the next event). A C delay loop over a `volatile` counter
+//     keeps its counter in such a word.
 //  3. The largest whole number of iterations that ends before the next event and within that bound
-//     is skipped.
+//     is skipped; the stored words get the values the last of them would have stored.
 // A loop usually reaches its head again right after the event that ended a skip (the SPU's
 // sample event alone falls due every 768 cycles). Its next recorded iteration then mostly repeats
 // the last one proven, only started further along the same line (a spin counter a few iterations
 // on), and the proof is reused instead of redone: step 2 is most of the cost of an examination.
+// (Not for loops that store: a counter in memory shows in the loads' values, which then differ.)
 #pragma once
 #include <array>
 
@@ -58,6 +63,8 @@ class IdleSkip {
  private:
   // Records and proves one iteration from the loop head; skips and returns true when it can.
   bool examine(CpuT<Bus>& cpu);
+  bool note_store(CpuT<Bus>& cpu, IdleStep& st);
+  bool name_cells(Bus& bus);
 
   // A loop that could not be skipped (it stores, reads a timer, exits, or an event is due within
   // its iteration) is examined again only after 2^failures - 1 more visits to its head, so loops
@@ -90,6 +97,7 @@ class IdleSkip {
   Cycles last_cost_ = 0;
   std::array<IdleStep, kMaxPath> path_{};
   std::array<u32, kMaxPath> tags_{};  // i-cache tag of each step's line before its fetch
+  IdleCells cells_;                   // the words the recorded iteration stores to
   u32 path_len_ = 0;
   Stats stats_;
 };

@@ -3,6 +3,7 @@
 #include "spu/reverb.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace psx::spu {
 namespace {
@@ -61,9 +62,9 @@ s32 Reverb::upsample(u32 side, bool fresh) const {
   return sat(sum >> 14);
 }
 
-s16 Reverb::process_side(u32 side, s32 input, u8* ram, bool we, IrqWatch& irq) {
+s16 Reverb::process_side(u32 side, s32 input, u32 current, u8* ram, bool we, IrqWatch& irq) {
   // The work area's bounds and position are the same for all 14 accesses of this tick.
-  const Area area(base_, current_);
+  const Area area(base_, current);
   auto reg = [&](u32 r) { return static_cast<s32>(regs[r]) * 4; };  // 8-byte units -> halfwords
   auto vol = [&](u32 r) { return static_cast<s32>(static_cast<s16>(regs[r])); };
   auto rd = [&](s32 rel) { return static_cast<s32>(read(area.at(rel), ram, irq)); };
@@ -105,6 +106,19 @@ s16 Reverb::process_side(u32 side, s32 input, u8* ram, bool we, IrqWatch& irq) {
   return static_cast<s16>(out);
 }
 
+bool Reverb::reads_capture_buffers(u32 side, u32 current) const {
+  // process_side() without writes or an IRQ watch reads the four comb taps and the two all-pass
+  // delays.
+  if (base_ * 4u >= kCaptureHalfwords) return false;
+  const Area area(base_, current);
+  auto reg = [&](u32 r) { return static_cast<s32>(regs[r]) * 4; };
+  const s32 reads[6] = {reg(mLCOMB1 + side), reg(mLCOMB2 + side), reg(mLCOMB3 + side), reg(mLCOMB4 + side),
+                        reg(mLAPF1 + side) - reg(dAPF1), reg(mLAPF2 + side) - reg(dAPF2)};
+  for (s32 rel : reads)
+    if (area.at(rel) < kCaptureHalfwords) return true;
+  return false;
+}
+
 void Reverb::push_input(s32 in_left, s32 in_right) {
   in_pos_ = (in_pos_ + 1) & (kRing - 1);
   in_history_[0][in_pos_] = static_cast<s16>(sat(in_left));
@@ -123,11 +137,43 @@ void Reverb::skip_tick(s32 in_left, s32 in_right) {
   end_tick();
 }
 
+void Reverb::owe_tick(s32 in_left, s32 in_right, u8* ram) {
+  push_input(in_left, in_right);
+  const u32 side = phase_;
+  const u32 pos = out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
+  const s32 input = downsample(side);
+  if (reads_capture_buffers(side, current_)) {
+    IrqWatch none;
+    out_history_[side][pos] = process_side(side, input, current_, ram, false, none);
+    owed_[side] &= ~(u64{1} << pos);
+  } else {
+    owed_from_[side][pos] = {current_, input};
+    owed_[side] |= u64{1} << pos;
+  }
+  end_tick();
+}
+
+void Reverb::settle(u8* ram) {
+  // Nothing the owed values read has changed since their ticks, and each slot holds its latest
+  // tick's, so the order does not matter.
+  IrqWatch none;
+  for (u32 side = 0; side < 2; ++side) {
+    for (u64 left = owed_[side]; left != 0; left &= left - 1) {
+      const u32 pos = static_cast<u32>(std::countr_zero(left));
+      const Owed& o = owed_from_[side][pos];
+      out_history_[side][pos] = process_side(side, o.input, o.current, ram, false, none);
+    }
+    owed_[side] = 0;
+  }
+}
+
 StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq) {
+  // The owed values first: this tick may read them (want_output) or write what they read.
+  if (owes()) settle(ram);
   push_input(in_left, in_right);
   const u32 side = phase_;
   out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
-  out_history_[side][out_pos_[side]] = process_side(side, downsample(side), ram, write_enable, irq);
+  out_history_[side][out_pos_[side]] = process_side(side, downsample(side), current_, ram, write_enable, irq);
 
   StereoSample out;
   if (want_output) {
@@ -138,7 +184,9 @@ StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable,
   return out;
 }
 
-void Reverb::do_state(StateIO& s) {
+void Reverb::do_state(StateIO& s, u8* ram) {
+  if (!s.loading() && owes()) settle(ram);
+  if (s.loading()) owed_ = {};
   s.pod(regs);
   s.pod(base_);
   s.pod(current_);

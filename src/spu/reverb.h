@@ -45,15 +45,30 @@ class Reverb {
   // the positions move.
   static constexpr u32 kTicksToOverwrite = 128;
   void skip_tick(s32 in_left, s32 in_right);
+  // A tick under the same conditions whose value could be read later (by an output wanted
+  // again): the value is owed, computed only when something could see it (settle()). Until
+  // then nothing may write the sound RAM it reads, change the registers or ESA: the SPU settles
+  // first. The capture buffers (sound RAM 0..FFFh) are written every sample, so a tick reading
+  // them is computed at once.
+  void owe_tick(s32 in_left, s32 in_right, u8* ram);
+  // Computes the owed values (tick() does it first; so must a save). Without writes (as owed)
+  // process_side() only reads `ram`.
+  void settle(u8* ram);
+  bool owes() const { return (owed_[0] | owed_[1]) != 0; }
 
-  void do_state(StateIO& s);
+  // Saving settles first (the owed values are state); loading forgets them.
+  void do_state(StateIO& s, u8* ram);
 
  private:
   static constexpr u32 kRing = 64;
+  static constexpr u32 kCaptureHalfwords = 0x800;  // the capture buffers, sound RAM 0..FFFh
   static_assert(kTicksToOverwrite == 2 * kRing);
   void push_input(s32 in_left, s32 in_right);
   void end_tick();
-  s16 process_side(u32 side, s32 input, u8* ram, bool write_enable, IrqWatch& irq);
+  // The side's 22.05 kHz value, with the buffer address `current` (in halfwords).
+  s16 process_side(u32 side, s32 input, u32 current, u8* ram, bool write_enable, IrqWatch& irq);
+  // Whether an unheard tick of `side` at `current` reads the capture buffers.
+  bool reads_capture_buffers(u32 side, u32 current) const;
   // The work area as one tick sees it: ESA's start, its size and the buffer address's offset
   // into it, all in halfwords; at() turns a register-relative offset into a halfword address.
   struct Area {
@@ -76,6 +91,13 @@ class Reverb {
   // Consecutive ticks whose inputs were both 0 (up to kRing; not state: a load restarts it at 0).
   // From 39 on, every tap downsample() reads is 0.
   u32 zero_inputs_ = 0;
+  // The owed values (owe_tick): a bit per output history slot, and what each is computed from.
+  struct Owed {
+    u32 current;
+    s32 input;
+  };
+  std::array<u64, 2> owed_{};
+  std::array<std::array<Owed, kRing>, 2> owed_from_{};
 };
 
 inline u32 Reverb::Area::at(s32 rel) const {

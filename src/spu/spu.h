@@ -79,9 +79,10 @@ class Spu final : public IoDevice, public DmaPort {
   }
   // Whether anything takes the output samples (on at power-on). Off, the SPU still advances
   // voices, envelopes, sweeps, noise, reverb, the capture buffers, ENDX and the IRQ address
-  // checks exactly, but skips the final mix, the reverb output filter and the interpolation of
-  // voices whose output reaches nothing else, and produces no output samples. A running
-  // capture keeps the output mixed.
+  // checks exactly, but skips the final mix, the reverb output filter, the interpolation of
+  // voices whose output reaches nothing else and, while the reverb neither writes its work area
+  // nor could raise IRQ9, its values until its output could be heard (Reverb::owe_tick), and
+  // produces no output samples. A running capture keeps the output mixed.
   void set_observed(bool observed) {
     sync();
     observed_ = observed;
@@ -103,9 +104,10 @@ class Spu final : public IoDevice, public DmaPort {
     return capture_;
   }
 
-  // Sound RAM, for tests and tools.
+  // Sound RAM, for tests and tools (who may write it: owed reverb values are made first).
   u8* ram() {
     sync();
+    reverb_.settle(ram_.data());
     return ram_.data();
   }
   const spu::Voice& voice(u32 i) {

@@ -130,11 +130,12 @@ void Spu::generate_sample(u32 skip, u32 later) {
   const bool wet_heard = mixing && (reverb_volume_left_ != 0 || reverb_volume_right_ != 0);
   const bool reverb_writes = (attr_ & kAttrReverbEnable) != 0;
   StereoSample wet{};
-  // Within this catch-up (nothing observes the SPU before its end) the value this tick computes
-  // is overwritten unread if nothing hears the output meanwhile: then only its writes and IRQ
-  // checks could matter.
-  if (later >= spu::Reverb::kTicksToOverwrite && !wet_heard && !reverb_writes && !irq_possible()) {
-    reverb_.skip_tick(mix.reverb_left, mix.reverb_right);
+  // Unheard, without writes or a possible IRQ9, the value this tick computes matters only if the
+  // output is heard before it is overwritten: within this catch-up (nothing observes the SPU
+  // before its end) that cannot happen, and otherwise it is owed until it could.
+  if (!wet_heard && !reverb_writes && !irq_possible()) {
+    if (later >= spu::Reverb::kTicksToOverwrite) reverb_.skip_tick(mix.reverb_left, mix.reverb_right);
+    else reverb_.owe_tick(mix.reverb_left, mix.reverb_right, ram_.data());
   } else {
     // With the flag already up a hit changes nothing (raise_irq), so only a possible IRQ9 is watched.
     spu::Reverb::IrqWatch watch{irq_possible(), irq_address_, false};
@@ -168,7 +169,7 @@ void Spu::do_state(StateIO& s) {
     s.pod(voices_[1].output);
     s.pod(voices_[3].output);
   }
-  reverb_.do_state(s);
+  reverb_.do_state(s, ram_.data());
   noise_.do_state(s);
   main_left_.do_state(s);
   main_right_.do_state(s);

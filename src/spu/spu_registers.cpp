@@ -131,6 +131,7 @@ void Spu::write16(u32 offset, u16 value) {
   raw_[offset / 2] = value;
   if (offset < kMVOLL) return write_voice(offset >> 4, offset & 0xF, value);
   if (offset >= kReverbRegs && offset < kVoiceVolumes) {
+    reverb_.settle(ram_.data());  // owed reverb values use the registers as they were
     reverb_.regs[(offset - kReverbRegs) / 2] = value;
     return;
   }
@@ -150,7 +151,7 @@ void Spu::write16(u32 offset, u16 value) {
     case kPMON: case kPMON + 2: set_half(pitch_mod_, offset, value), pitch_mod_ &= ~1u; break;  // voice 0 has no predecessor
     case kNON: case kNON + 2: set_half(noise_on_, offset, value); break;
     case kEON: case kEON + 2: set_half(reverb_on_, offset, value); break;
-    case kESA: reverb_.write_base(value); break;
+    case kESA: reverb_.settle(ram_.data()), reverb_.write_base(value); break;
     case kIRQA: irq_address_ = value; break;
     case kTSA: transfer_start_ = value, transfer_addr_ = value * 8u; break;
     case kFIFO: fifo_push(value); break;

@@ -13,6 +13,7 @@ void Spu::raise_irq() {
 
 void Spu::ram_write16(u32 byte_addr, u16 value) {
   check_irq(byte_addr);
+  if (reverb_.owes()) reverb_.settle(ram_.data());  // they read sound RAM as it was
   byte_addr &= kRamSize - 2;
   ram_[byte_addr] = static_cast<u8>(value);
   ram_[byte_addr + 1] = static_cast<u8>(value >> 8);

@@ -16,6 +16,7 @@
 #include "tumble_console_util.h"
 
 using namespace psx;
+using psx::test::Lcg;
 using psx::test::SpuRig;
 using psx::test::write_test_volumes_and_reverb;
 
@@ -180,6 +181,88 @@ TEST(SpuOnDemand, SavedStateOfAnUnheardSpuResumesHeardExactly) {
   std::vector<StereoSample> a = p->heard.take(), b = resumed.take();
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) ASSERT_TRUE(a[i].left == b[i].left && a[i].right == b[i].right) << i;
+}
+
+// Unheard, with reverb writes (ATTR bit 7) and IRQ9 off, the reverb's values are owed until the
+// output could be heard (Reverb::owe_tick). The work area starts at ESA*4 halfwords; its buffer
+// address starts there when ESA is written and advances a halfword every two samples, and the
+// reads lie 80h..380h halfwords past it (kTestReverbRegs), wrapping inside the area. ESA goes
+// 0 (the reads pass the capture buffers, halfwords 0..7FFh, which change every sample: not
+// owed), 400h (owed), FFC0h (owed; a 100h-halfword area at the end of sound RAM, so every read
+// wraps and depends on ESA), and again, over sound RAM filled with noise from 2000h on. Owed values are computed when the
+// output is heard again (the last 40 ticks reach it) or the state is saved (the last 128), so
+// just before those moments the workload changes what they read: a transfer over 400h
+// halfwords from the buffer address, a comb tap's register, ESA.
+void owing_set_up(SpuRig& r) {
+  set_up(r);
+  Lcg noise{9};
+  std::vector<u8> bytes(0x6000);
+  for (u8& b : bytes) b = static_cast<u8>(noise.next(256));
+  r.put_ram(0x2000, bytes);
+  r.put_ram(0x7A000, bytes);
+  r.w16(0x1F801DA2, 0);
+  r.w16(0x1F801DAA, 0xC000 | 0x3C00 | 0x0100 | 0x0005);
+}
+
+struct OwingWorkload {
+  Lcg data{5};
+  u32 esa = 0, esa_sample = 0;
+  void events(SpuRig& r, u32 sample) {
+    const u32 attr = 0xC000 | 0x3C00 | 0x0100 | 0x0005;
+    if (sample % 1500 == 1480) {
+      const u32 start = esa * 4, size = 0x40000 - start;
+      const u32 current = start + (sample - esa_sample) / 2 % size;
+      r.w16(0x1F801DA6, static_cast<u16>(current / 4));  // TSA, in 8-byte units
+      for (u32 chunk = 0; chunk < 0x20; ++chunk) {
+        for (u32 i = 0; i < 0x20; ++i) r.w16(0x1F801DA8, static_cast<u16>(data.next(0x10000)));
+        r.w16(0x1F801DAA, attr | 0x0010);  // manual write
+        r.w16(0x1F801DAA, attr);
+      }
+    }
+    if (sample % 1250 == 1230) r.w16(0x1F801DC0 + 2 * 12, sample % 2500 == 1230 ? 0x0020 : 0x00E0);  // mLCOMB1
+    if (sample % 3000 == 1490) {
+      esa = esa == 0 ? 0x400 : esa == 0x400 ? 0xFFC0 : 0;
+      esa_sample = sample;
+      r.w16(0x1F801DA2, static_cast<u16>(esa));
+    }
+  }
+};
+
+TEST(SpuOnDemand, OwedReverbValuesAreExactWhenHeard) {
+  // Unheard in blocks 0-5, 12-17, ..., heard in 6-11, ...: the output is heard again at samples
+  // 1500, 4500 and 7500, and the states are compared at 1250, 2500, ... A third SPU, heard, without the
+  // reverb in its mix (EVOL 0), shows that the reverb's values reach the output compared.
+  auto p = std::make_unique<Pair>();
+  auto dry = std::make_unique<SpuRig>();
+  u32 index_dry = 0;
+  owing_set_up(p->heard);
+  owing_set_up(p->unheard);
+  owing_set_up(*dry);
+  dry->w16(0x1F801D84, 0);
+  dry->w16(0x1F801D86, 0);
+  OwingWorkload heard, unheard, dry_work;
+  bool wet = false;
+  for (u32 block = 0; block < 40; ++block) {
+    const bool listening = (block / 6) % 2 == 1;
+    p->unheard.spu.set_observed(listening);
+    for (u32 i = 0; i < 250; ++i) {
+      heard.events(p->heard, p->index_heard);
+      unheard.events(p->unheard, p->index_unheard);
+      dry_work.events(*dry, index_dry);
+      run(p->heard, 1, p->index_heard);
+      run(p->unheard, 1, p->index_unheard);
+      run(*dry, 1, index_dry);
+    }
+    std::vector<StereoSample> a = p->heard.take(), b = p->unheard.take(), d = dry->take();
+    ASSERT_EQ(b.size(), listening ? a.size() : 0u) << "block " << block;
+    for (size_t i = 0; i < b.size(); ++i)
+      ASSERT_TRUE(a[i].left == b[i].left && a[i].right == b[i].right) << "block " << block << " sample " << i;
+    for (size_t i = 0; i < a.size(); ++i) wet |= a[i].left != d[i].left || a[i].right != d[i].right;
+    if (block % 5 == 4) {
+      ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << "block " << block;
+    }
+  }
+  EXPECT_TRUE(wet);
 }
 
 TEST(SpuOnDemand, RunningCaptureKeepsTheMix) {

@@ -149,7 +149,7 @@ void Dma::service() {
     u32 moved;
     if (c == Otc) moved = run_otc(c);
     else if (channels_[c].sync_mode() == 1) moved = run_block(c);
-    else if (channels_[c].sync_mode() == 2) moved = run_list(c);
+    else if (channels_[c].sync_mode() == 2) moved = run_list(c, budget, candidates == 1u << c);
     else moved = run_burst(c);  // mode 0, and reserved mode 3 treated alike
     budget -= std::min(moved, budget);
   }
@@ -209,19 +209,24 @@ u32 Dma::run_block(u32 ch) {
   return size;
 }
 
-u32 Dma::run_list(u32 ch) {
+u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
   Channel& c = channels_[ch];
   c.chcr &= ~kChcrTrigger;
-  // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the device.
-  u32 addr = c.madr & kAddressMask;
-  u32 header = 0;
-  bus_.dma_read_ram(addr, &header, 1);
-  u32 count = header >> 24;
-  if (count) to_device(ch, addr + 4, count, false);
-  charge(ch, count + 1);
-  c.madr = header & 0x00FFFFFF;
-  if (c.madr & 0x00800000) finish(ch);  // end marker 0x00FFFFFF (hardware tests bit 23)
-  return count + 1;
+  u32 moved = 0;
+  do {
+    // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the
+    // device.
+    const u32 addr = c.madr & kAddressMask;
+    u32 header = 0;
+    bus_.dma_read_ram(addr, &header, 1);
+    const u32 count = header >> 24;
+    if (count) to_device(ch, addr + 4, count, false);
+    charge(ch, count + 1);
+    moved += count + 1;
+    c.madr = header & 0x00FFFFFF;
+    if (c.madr & 0x00800000) finish(ch);  // end marker 0x00FFFFFF (hardware tests bit 23)
+  } while (alone && moved < budget && may_run(ch));
+  return moved;
 }
 
 u32 Dma::run_otc(u32 ch) {

@@ -80,7 +80,9 @@ class Dma : public IoDevice {
   // One unit of work on a channel; returns the words moved.
   u32 run_burst(u32 ch);
   u32 run_block(u32 ch);
-  u32 run_list(u32 ch);
+  // One node of a linked list; more, up to `budget` words, while the channel is the only
+  // candidate (`alone`) and may still run: service() would pick it again.
+  u32 run_list(u32 ch, u32 budget, bool alone);
   u32 run_otc(u32 ch);
   void finish(u32 ch);
 

@@ -1,6 +1,7 @@
 // DMA controller tests: register rules and transfer results from psx-spx "DMA Channels".
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "core/bus.h"
@@ -17,10 +18,12 @@ struct FakePort : DmaPort {
   std::vector<u32> received;
   u32 next_out = 0x100;
   bool request = true;
+  u32 busy_word = 0;  // a word after which the device stops requesting (as the GPU after GP0(C0))
   std::vector<int>* order = nullptr;  // shared log of which port moved words, in order
   int id = 0;
   void dma_write(const u32* w, u32 n) override {
     received.insert(received.end(), w, w + n);
+    if (busy_word != 0 && std::find(w, w + n, busy_word) != w + n) request = false;
     if (order) order->push_back(id);
   }
   void dma_read(u32* w, u32 n) override {
@@ -320,6 +323,32 @@ TEST_F(DmaTest, LinkedListEndsAtAnyNextAddressWithBit23) {
     EXPECT_EQ(r(reg(2, kBcr)), 0x00123456u) << std::hex << marker;
     EXPECT_EQ(r(reg(2, kChcr)), 0x00000401u) << std::hex << marker;
   }
+}
+
+TEST_F(DmaTest, LinkedListWaitsWhileTheDeviceStopsRequesting) {
+  // A node whose payload makes the device drop its request (the GPU's DMA request follows
+  // GPUSTAT: GP0(C0) starts a VRAM-to-CPU copy, psx-spx "GPU Status Register"): the next node
+  // waits, MADR pointing at it, until the request returns (polled every 64 cycles).
+  w(kDpcr, 0x00000800);
+  gpu.busy_word = 0xC0000000;
+  set_ram32(0x100, 0x01000200);
+  set_ram32(0x104, 0xC0000000);
+  set_ram32(0x200, 0x01000300);
+  set_ram32(0x204, 0x22222222);
+  set_ram32(0x300, 0x01FFFFFF);
+  set_ram32(0x304, 0x33333333);
+  w(reg(2, kMadr), 0x100);
+  w(reg(2, kChcr), 0x01000401);
+  EXPECT_EQ(gpu.received, std::vector<u32>{0xC0000000});
+  EXPECT_EQ(r(reg(2, kMadr)), 0x200u);
+  EXPECT_NE(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
+  run_for(200);
+  EXPECT_EQ(gpu.received.size(), 1u);
+  gpu.request = true;
+  run_for(65);
+  EXPECT_EQ(gpu.received, (std::vector<u32>{0xC0000000, 0x22222222, 0x33333333}));
+  EXPECT_EQ(r(reg(2, kMadr)), 0x00FFFFFFu);
+  EXPECT_EQ(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
 }
 
 TEST_F(DmaTest, EndlessLinkedListDoesNotHangHost) {

@@ -1,6 +1,8 @@
 // GPU video timing: scanline/frame counting and the blanking edges on the scheduler.
 #include "gpu/video_timing.h"
 
+#include <algorithm>
+
 namespace psx::gpu {
 
 VideoTiming::VideoTiming(Scheduler& sched, std::function<void()> vblank_started)
@@ -71,7 +73,25 @@ void VideoTiming::sync() const {
   if (hblank_wanted()) return;
   // Inside another event's callback, only the edges an event per edge would have run by then.
   const Cycles now = sched_.horizon(event_);
+  if (pos_.edge_at <= now) pass_lines(pos_, now);
   while (pos_.edge_at <= now && !next_edge_changes_vblank(pos_)) pass_edge(pos_);
+}
+
+// Two edges (an HBlank start and a line start, in either order) take one line's video cycles,
+// and advance() carries the remainder exactly, so n lines at once land where 2n edges one by one
+// would. Whole lines are passed while the edge after them is due by `now` and none of them
+// reaches the line whose start changes VBlank; the last edges are left to pass_edge().
+void VideoTiming::pass_lines(Position& p, Cycles now) const {
+  const u64 hz = video_hz(), line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
+  // edge_at after n lines = edge_at + (remainder + n * line_cycles * kCpuClockHz) / hz <= now.
+  const u64 by_time = ((now - p.edge_at + 1) * hz - p.remainder - 1) / (line_cycles * kCpuClockHz);
+  const u32 lines = lines_per_frame();
+  const u32 boundary = vblank_ ? (pal_ ? kPalFirstVisible : kNtscFirstVisible) : (pal_ ? kPalVblankStart : kNtscVblankStart);
+  const u32 before_boundary = (boundary + lines - p.line - 1) % lines;  // lines line+1.. that are not it
+  const u64 n = std::min<u64>(by_time, before_boundary);
+  if (n == 0) return;
+  p.line = static_cast<u32>((p.line + n) % lines);
+  advance(p, n * line_cycles);
 }
 
 bool VideoTiming::hblank_now() {

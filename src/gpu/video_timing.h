@@ -69,6 +69,7 @@ class VideoTiming : public VideoClock {
   void sync() const;
   bool next_edge_changes_vblank(const Position& p) const;
   void pass_edge(Position& p) const;
+  void pass_lines(Position& p, Cycles now) const;
   void advance(Position& p, u64 video_cycles) const;
   void deliver_edge();
   void book();

@@ -43,6 +43,25 @@ TEST_F(GpuTest, NtscVblankTimesAndInterrupt) {
   EXPECT_NE(irq.stat() & (1u << static_cast<u32>(Irq::VBlank)), 0u);
 }
 
+// With nothing wanting HBlank edges the line is computed when asked. Line n (counted from
+// power-on, 263 a frame) starts at n * 3413 video cycles, converted to CPU cycles and rounded
+// down. Asked at uneven times, some a frame apart (many lines passed at once), some a few cycles
+// apart.
+TEST_F(GpuTest, LineAtAnyTimeFollowsTheVideoClock) {
+  const u64 hz = 53693175;
+  auto cpu_time = [&](u64 video_cycles) { return video_cycles * kCpuClockHz / hz; };
+  u32 x = 12345;
+  for (int probe = 0; probe < 3000; ++probe) {
+    x = x * 1664525u + 1013904223u;
+    run(probe % 500 == 0 ? 600000 + (x >> 12) % 10000 : 1 + (x >> 8) % 3000);
+    const Cycles t = sched.now();
+    u64 n = t * hz / (3413ull * kCpuClockHz);  // near the line, then exactly by the rounding
+    while (cpu_time((n + 1) * 3413) <= t) ++n;
+    while (cpu_time(n * 3413) > t) --n;
+    ASSERT_EQ(gpu.timing().line(), n % 263) << "at cycle " << t;
+  }
+}
+
 TEST_F(GpuTest, PalFrameLength) {
   gp1(0x08000008);
   std::vector<Cycles> times;

@@ -23,6 +23,7 @@ s32 mul(s32 a, s32 b) { return (a * b) >> 15; }
 void Reverb::write_base(u16 value) {
   base_ = value;
   current_ = value * 4u;
+  clear_ticks_ = 0;
 }
 
 Reverb::Area::Area(u16 base, u32 current)
@@ -106,17 +107,25 @@ s16 Reverb::process_side(u32 side, s32 input, u32 current, u8* ram, bool we, Irq
   return static_cast<s16>(out);
 }
 
-bool Reverb::reads_capture_buffers(u32 side, u32 current) const {
+u32 Reverb::ticks_clear_of_capture() const {
+  if (base_ * 4u >= kCaptureHalfwords) return UINT32_MAX;  // the area lies above them
   // process_side() without writes or an IRQ watch reads the four comb taps and the two all-pass
-  // delays.
-  if (base_ * 4u >= kCaptureHalfwords) return false;
-  const Area area(base_, current);
+  // delays of its side. A read's address rises by one with the buffer address (once every two
+  // ticks) until it passes 3FFFFh and wraps to the area's start: from a, t more ticks read at
+  // most a + t/2.
+  const Area area(base_, current_);
   auto reg = [&](u32 r) { return static_cast<s32>(regs[r]) * 4; };
-  const s32 reads[6] = {reg(mLCOMB1 + side), reg(mLCOMB2 + side), reg(mLCOMB3 + side), reg(mLCOMB4 + side),
-                        reg(mLAPF1 + side) - reg(dAPF1), reg(mLAPF2 + side) - reg(dAPF2)};
-  for (s32 rel : reads)
-    if (area.at(rel) < kCaptureHalfwords) return true;
-  return false;
+  u32 ticks = UINT32_MAX;
+  for (u32 side = 0; side < 2; ++side) {
+    const s32 reads[6] = {reg(mLCOMB1 + side), reg(mLCOMB2 + side), reg(mLCOMB3 + side), reg(mLCOMB4 + side),
+                          reg(mLAPF1 + side) - reg(dAPF1), reg(mLAPF2 + side) - reg(dAPF2)};
+    for (s32 rel : reads) {
+      const u32 a = area.at(rel);
+      if (a < kCaptureHalfwords) return 0;
+      ticks = std::min(ticks, 2 * (0x3FFFFu - a));
+    }
+  }
+  return ticks;
 }
 
 void Reverb::push_input(s32 in_left, s32 in_right) {
@@ -129,6 +138,7 @@ void Reverb::push_input(s32 in_left, s32 in_right) {
 void Reverb::end_tick() {
   if (phase_ == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
   phase_ ^= 1;
+  if (clear_ticks_ > 0) --clear_ticks_;
 }
 
 void Reverb::skip_tick(s32 in_left, s32 in_right) {
@@ -142,7 +152,8 @@ void Reverb::owe_tick(s32 in_left, s32 in_right, u8* ram) {
   const u32 side = phase_;
   const u32 pos = out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
   const s32 input = downsample(side);
-  if (reads_capture_buffers(side, current_)) {
+  if (clear_ticks_ == 0) clear_ticks_ = ticks_clear_of_capture();
+  if (clear_ticks_ == 0) {
     IrqWatch none;
     out_history_[side][pos] = process_side(side, input, current_, ram, false, none);
     owed_[side] &= ~(u64{1} << pos);
@@ -165,6 +176,7 @@ void Reverb::settle(u8* ram) {
     }
     owed_[side] = 0;
   }
+  clear_ticks_ = 0;  // the registers or ESA may change next
 }
 
 StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable, bool want_output, IrqWatch& irq) {
@@ -186,7 +198,7 @@ StereoSample Reverb::tick(s32 in_left, s32 in_right, u8* ram, bool write_enable,
 
 void Reverb::do_state(StateIO& s, u8* ram) {
   if (!s.loading() && owes()) settle(ram);
-  if (s.loading()) owed_ = {};
+  if (s.loading()) owed_ = {}, clear_ticks_ = 0;
   s.pod(regs);
   s.pod(base_);
   s.pod(current_);

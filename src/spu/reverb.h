@@ -19,6 +19,7 @@ class Reverb {
     mLSAME, mRSAME, mLCOMB1, mRCOMB1, mLCOMB2, mRCOMB2, dLSAME, dRSAME, mLDIFF, mRDIFF,
     mLCOMB3, mRCOMB3, mLCOMB4, mRCOMB4, dLDIFF, dRDIFF, mLAPF1, mRAPF1, mLAPF2, mRAPF2, vLIN, vRIN,
   };
+  // Written by the SPU, which settles owed values first (settle()).
   std::array<u16, 32> regs{};
 
   // ESA (1F801DA2h): the work area start; writing it also resets the buffer address.
@@ -67,8 +68,9 @@ class Reverb {
   void end_tick();
   // The side's 22.05 kHz value, with the buffer address `current` (in halfwords).
   s16 process_side(u32 side, s32 input, u32 current, u8* ram, bool write_enable, IrqWatch& irq);
-  // Whether an unheard tick of `side` at `current` reads the capture buffers.
-  bool reads_capture_buffers(u32 side, u32 current) const;
+  // How many ticks from this one on (either side) surely read no capture buffer word, without
+  // writes: 0 if this one may.
+  u32 ticks_clear_of_capture() const;
   // The work area as one tick sees it: ESA's start, its size and the buffer address's offset
   // into it, all in halfwords; at() turns a register-relative offset into a halfword address.
   struct Area {
@@ -98,6 +100,9 @@ class Reverb {
   };
   std::array<u64, 2> owed_{};
   std::array<std::array<Owed, kRing>, 2> owed_from_{};
+  // Ticks left of the last ticks_clear_of_capture() (counted down by every tick; reset where the
+  // registers or ESA may change: settle(), write_base(), a load).
+  u32 clear_ticks_ = 0;
 };
 
 inline u32 Reverb::Area::at(s32 rel) const {

@@ -265,6 +265,42 @@ TEST(SpuOnDemand, OwedReverbValuesAreExactWhenHeard) {
   EXPECT_TRUE(wet);
 }
 
+// Owed values whose reads reach the capture buffers later: ESA 0 and every read 3F000h halfwords
+// past the buffer address, so at the top of sound RAM until the address reaches 1000h (8192
+// ticks), then wrapped into the capture buffers. Before that, a comb tap moved to the buffer
+// address itself (in the capture buffers at once) and back. Both times the values read must be
+// those of their ticks.
+TEST(SpuOnDemand, OwedReverbValuesReadingTheCaptureBuffersAreExact) {
+  auto p = std::make_unique<Pair>();
+  for (SpuRig* r : {&p->heard, &p->unheard}) {
+    owing_set_up(*r);
+    for (u32 reg : {0u, 1u}) r->w16(0x1F801DC0 + 2 * reg, 0);  // dAPF1, dAPF2
+    for (u32 reg : {12u, 13u, 14u, 15u, 20u, 21u, 22u, 23u, 26u, 27u, 28u, 29u}) r->w16(0x1F801DC0 + 2 * reg, 0xFC00);
+  }
+  p->unheard.spu.set_observed(false);
+  auto both = [&](u32 samples) {
+    run(p->heard, samples, p->index_heard);
+    run(p->unheard, samples, p->index_unheard);
+  };
+  both(2000);
+  for (SpuRig* r : {&p->heard, &p->unheard}) r->w16(0x1F801DC0 + 2 * 12, 0);  // mLCOMB1 at the address
+  both(100);
+  ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << "comb tap moved";
+  for (SpuRig* r : {&p->heard, &p->unheard}) r->w16(0x1F801DC0 + 2 * 12, 0xFC00);
+  // At 9100 the buffer address is 1000h + 1C6h: the reads of the last 128 ticks lie at capture
+  // buffer halfwords 186h..1C6h, the older of which the capture writes (one a sample, at the
+  // sample number modulo 200h) have passed since.
+  both(7000);
+  ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << "wrapped into the capture buffers";
+  p->heard.take();
+  p->unheard.spu.set_observed(true);
+  both(300);
+  std::vector<StereoSample> a = p->heard.take(), b = p->unheard.take();
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) ASSERT_TRUE(a[i].left == b[i].left && a[i].right == b[i].right) << i;
+  ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << "after the wrap";
+}
+
 TEST(SpuOnDemand, RunningCaptureKeepsTheMix) {
   // A recording takes the output, so an unheard SPU with a capture running still mixes it.
   auto p = std::make_unique<Pair>();

@@ -4,9 +4,9 @@
 #include <algorithm>
 
 #include "core/bus.h"
-#include "core/endian.h"
 #include "core/cpu/cpu.h"
 #include "core/cpu/idle_proof.h"
+#include "core/endian.h"
 
 namespace psx {
 

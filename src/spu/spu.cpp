@@ -23,6 +23,11 @@ void Spu::catch_up(Cycles horizon) {
   const bool reference = max_batch_ <= 1;
   u32 skip = 0;
   for (u32 k = 0; k < due; ++k) {
+    if (k > 0 && !reference && quiet_from_here(skip)) {
+      quiet_samples(due - k);
+      next_sample_ += (due - k) * kCyclesPerSample;
+      return;
+    }
     generate_sample(skip, reference ? 0 : due - 1 - k);
     next_sample_ += kCyclesPerSample;
     if (k == 0 && due > 1 && !reference) skip = step_silent_voices(due - 1);

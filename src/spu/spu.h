@@ -177,6 +177,10 @@ class Spu final : public IoDevice, public DmaPort {
   // sample (step_silent_voices); `later` samples follow in the same catch-up (0 where nothing
   // may be left out).
   void generate_sample(u32 skip, u32 later);
+  // Whether the rest of a catch-up, after a sample that left the voices in `skip`, is silence
+  // that changes only counters, and n such samples at once.
+  bool quiet_from_here(u32 skip) const;
+  void quiet_samples(u32 n);
   void apply_key_events();
   struct Mix {
     s32 left = 0, right = 0, reverb_left = 0, reverb_right = 0;

@@ -156,6 +156,52 @@ void Spu::generate_sample(u32 skip, u32 later) {
   main_right_.tick();
 }
 
+bool Spu::quiet_from_here(u32 skip) const {
+  // Every voice silent and stepped through the catch-up (step_silent_voices), no CD input, no
+  // IRQ9 possible (capture and reverb checks) and no reverb output heard: each remaining sample's
+  // mix is 0 before and after the main volume.
+  constexpr u32 kAllVoices = (1u << kNumVoices) - 1;
+  const bool wet_heard = mixing() && (reverb_volume_left_ != 0 || reverb_volume_right_ != 0);
+  return skip == kAllVoices && cd_audio_.size() == 0 && !irq_possible() && !wet_heard;
+}
+
+void Spu::quiet_samples(u32 n) {
+  // What generate_sample() does for n samples when quiet_from_here() holds, stage by stage where
+  // stages share nothing: the noise generator, the capture buffers (0: CD input and the silent
+  // voices 1 and 3) with the reverb (input 0; its writes as ATTR says), the output (0) and the
+  // main volume sweeps.
+  if (attr_ & kAttrEnable)
+    for (u32 k = 0; k < n; ++k) noise_.tick(attr_);
+  u8* ram = ram_.data();
+  const bool reverb_writes = (attr_ & kAttrReverbEnable) != 0;
+  for (u32 k = 0; k < n; ++k) {
+    // Sample by sample: the reverb work area may overlap the capture buffers.
+    const u32 off = capture_pos_ * 2;
+    for (u32 buffer = 0; buffer < 4; ++buffer) store_le16(ram + buffer * 0x400 + off, 0);
+    capture_pos_ = (capture_pos_ + 1) & 0x1FF;
+    const u32 later = n - 1 - k;
+    if (reverb_writes) {
+      spu::Reverb::IrqWatch none;
+      reverb_.tick(0, 0, ram, true, false, none);
+    } else if (later >= spu::Reverb::kTicksToOverwrite) {
+      reverb_.skip_tick(0, 0);
+    } else {
+      reverb_.owe_tick(0, 0, ram);
+    }
+  }
+  if (mixing()) {
+    for (u32 k = 0; k < n; ++k) {
+      if (output_.size() >= output_limit_) output_.erase(output_.begin(), output_.begin() + output_.size() / 2);
+      output_.push_back({});
+      capture_.push({});
+    }
+  }
+  if (!main_left_.latched())
+    for (u32 k = 0; k < n; ++k) main_left_.tick();
+  if (!main_right_.latched())
+    for (u32 k = 0; k < n; ++k) main_right_.tick();
+}
+
 void Spu::do_state(StateIO& s) {
   // A saved state holds every sample due by now (the console syncs before loading too: Console::
   // do_state; here a load must not make samples, the scheduler's time being the new one).

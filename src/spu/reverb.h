@@ -52,6 +52,13 @@ class Reverb {
   // first. The capture buffers (sound RAM 0..FFFh) are written every sample, so a tick reading
   // them is computed at once.
   void owe_tick(s32 in_left, s32 in_right, u8* ram);
+  // A tick nobody can see now (no writes, no IRQ9, no output wanted), with `later` ticks after it
+  // in the same catch-up (nothing observes the SPU before its end): skipped where its value is
+  // overwritten within them, owed otherwise.
+  void unseen_tick(s32 in_left, s32 in_right, u32 later, u8* ram) {
+    if (later >= kTicksToOverwrite) skip_tick(in_left, in_right);
+    else owe_tick(in_left, in_right, ram);
+  }
   // Computes the owed values (tick() does it first; so must a save). Without writes (as owed)
   // process_side() only reads `ram`.
   void settle(u8* ram);

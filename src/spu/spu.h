@@ -181,11 +181,21 @@ class Spu final : public IoDevice, public DmaPort {
   // that changes only counters, and n such samples at once.
   bool quiet_from_here(u32 skip) const;
   void quiet_samples(u32 n);
+  // One reverb tick on the sample's reverb input (skipped, owed or made: see its body); the wet
+  // output where heard, else 0.
+  StereoSample reverb_sample(s32 in_left, s32 in_right, u32 later);
+  // n output samples `out` to the taker and a running capture.
+  void push_output(StereoSample out, u32 n);
   void apply_key_events();
   struct Mix {
     s32 left = 0, right = 0, reverb_left = 0, reverb_right = 0;
   };
   bool mixing() const { return observed_ || capture_.active(); }
+  // Whether the mix hears the reverb's output (EVOLL/EVOLR).
+  bool reverb_heard() const { return mixing() && (reverb_volume_left_ != 0 || reverb_volume_right_ != 0); }
+  // Unheard, without writes (ATTR bit 7) or a possible IRQ9, a reverb tick's value matters only
+  // if the output is heard before it is overwritten (Reverb::unseen_tick).
+  bool reverb_unseen() const { return !reverb_heard() && !(attr_ & kAttrReverbEnable) && !irq_possible(); }
   // Voices (bit mask) whose output this sample is read by anything.
   u32 voices_needed() const;
   // One voice's sample: IRQ checks, envelope, pitch and block advance always; its output (into

@@ -94,6 +94,34 @@ u32 Spu::voices_needed() const {
   return (1u << 1) | (1u << 3) | (pitch_mod_ >> 1) | reverb_on_;
 }
 
+// push_output() and reverb_sample() run every sample and only this file calls them: inline.
+inline void Spu::push_output(StereoSample out, u32 n) {
+  // As n pushes one by one: the older half goes whenever a push finds the limit reached.
+  for (u32 left = n; left > 0;) {
+    if (output_.size() >= output_limit_) output_.erase(output_.begin(), output_.begin() + output_.size() / 2);
+    const u32 now = static_cast<u32>(std::min<size_t>(left, output_limit_ - output_.size()));
+    for (u32 k = 0; k < now; ++k) output_.push_back(out);
+    left -= now;
+  }
+  if (capture_.active())
+    for (u32 k = 0; k < n; ++k) capture_.push(out);
+}
+
+inline StereoSample Spu::reverb_sample(s32 in_left, s32 in_right, u32 later) {
+  // The reverb unit always runs (its history and work area are state); its output is only
+  // needed for a mix that hears it.
+  if (reverb_unseen()) {
+    reverb_.unseen_tick(in_left, in_right, later, ram_.data());
+    return {};
+  }
+  // With the flag already up a hit changes nothing (raise_irq), so only a possible IRQ9 is watched.
+  spu::Reverb::IrqWatch watch{irq_possible(), irq_address_, false};
+  const StereoSample wet =
+      reverb_.tick(in_left, in_right, ram_.data(), (attr_ & kAttrReverbEnable) != 0, reverb_heard(), watch);
+  if (watch.hit) raise_irq();
+  return wet;
+}
+
 void Spu::generate_sample(u32 skip, u32 later) {
   apply_key_events();
   Mix mix;
@@ -125,32 +153,14 @@ void Spu::generate_sample(u32 skip, u32 later) {
     }
   }
 
-  // The reverb unit always runs (its history and work area are state); its output is only
-  // needed for a mix that hears it.
-  const bool wet_heard = mixing && (reverb_volume_left_ != 0 || reverb_volume_right_ != 0);
-  const bool reverb_writes = (attr_ & kAttrReverbEnable) != 0;
-  StereoSample wet{};
-  // Unheard, without writes or a possible IRQ9, the value this tick computes matters only if the
-  // output is heard before it is overwritten: within this catch-up (nothing observes the SPU
-  // before its end) that cannot happen, and otherwise it is owed until it could.
-  if (!wet_heard && !reverb_writes && !irq_possible()) {
-    if (later >= spu::Reverb::kTicksToOverwrite) reverb_.skip_tick(mix.reverb_left, mix.reverb_right);
-    else reverb_.owe_tick(mix.reverb_left, mix.reverb_right, ram_.data());
-  } else {
-    // With the flag already up a hit changes nothing (raise_irq), so only a possible IRQ9 is watched.
-    spu::Reverb::IrqWatch watch{irq_possible(), irq_address_, false};
-    wet = reverb_.tick(mix.reverb_left, mix.reverb_right, ram_.data(), reverb_writes, wet_heard, watch);
-    if (watch.hit) raise_irq();
-  }
+  const StereoSample wet = reverb_sample(mix.reverb_left, mix.reverb_right, later);
   if (mixing) {
     mix.left += apply_volume(wet.left, reverb_volume_left_);
     mix.right += apply_volume(wet.right, reverb_volume_right_);
     StereoSample out;
     out.left = static_cast<s16>(clamp16(apply_volume(clamp16(mix.left), main_left_.level())));
     out.right = static_cast<s16>(clamp16(apply_volume(clamp16(mix.right), main_right_.level())));
-    if (output_.size() >= output_limit_) output_.erase(output_.begin(), output_.begin() + output_.size() / 2);
-    output_.push_back(out);
-    capture_.push(out);
+    push_output(out, 1);
   }
   main_left_.tick();
   main_right_.tick();
@@ -161,8 +171,7 @@ bool Spu::quiet_from_here(u32 skip) const {
   // IRQ9 possible (capture and reverb checks) and no reverb output heard: each remaining sample's
   // mix is 0 before and after the main volume.
   constexpr u32 kAllVoices = (1u << kNumVoices) - 1;
-  const bool wet_heard = mixing() && (reverb_volume_left_ != 0 || reverb_volume_right_ != 0);
-  return skip == kAllVoices && cd_audio_.size() == 0 && !irq_possible() && !wet_heard;
+  return skip == kAllVoices && cd_audio_.size() == 0 && !irq_possible() && !reverb_heard();
 }
 
 void Spu::quiet_samples(u32 n) {
@@ -172,30 +181,16 @@ void Spu::quiet_samples(u32 n) {
   // main volume sweeps.
   if (attr_ & kAttrEnable)
     for (u32 k = 0; k < n; ++k) noise_.tick(attr_);
-  u8* ram = ram_.data();
-  const bool reverb_writes = (attr_ & kAttrReverbEnable) != 0;
+  const bool unseen = reverb_unseen();  // holds for the whole catch-up
   for (u32 k = 0; k < n; ++k) {
     // Sample by sample: the reverb work area may overlap the capture buffers.
     const u32 off = capture_pos_ * 2;
-    for (u32 buffer = 0; buffer < 4; ++buffer) store_le16(ram + buffer * 0x400 + off, 0);
+    for (u32 buffer = 0; buffer < 4; ++buffer) store_le16(ram_.data() + buffer * 0x400 + off, 0);
     capture_pos_ = (capture_pos_ + 1) & 0x1FF;
-    const u32 later = n - 1 - k;
-    if (reverb_writes) {
-      spu::Reverb::IrqWatch none;
-      reverb_.tick(0, 0, ram, true, false, none);
-    } else if (later >= spu::Reverb::kTicksToOverwrite) {
-      reverb_.skip_tick(0, 0);
-    } else {
-      reverb_.owe_tick(0, 0, ram);
-    }
+    if (unseen) reverb_.unseen_tick(0, 0, n - 1 - k, ram_.data());
+    else reverb_sample(0, 0, n - 1 - k);
   }
-  if (mixing()) {
-    for (u32 k = 0; k < n; ++k) {
-      if (output_.size() >= output_limit_) output_.erase(output_.begin(), output_.begin() + output_.size() / 2);
-      output_.push_back({});
-      capture_.push({});
-    }
-  }
+  if (mixing()) push_output({}, n);
   if (!main_left_.latched())
     for (u32 k = 0; k < n; ++k) main_left_.tick();
   if (!main_right_.latched())

@@ -235,7 +235,10 @@ bool IdleSkip::note_store(Cpu& cpu, IdleStep& st) {
 // now. A load of part of a stored word, or code fetched from one, is not followed.
 bool IdleSkip::name_cells(Bus& bus) {
   if (cells_.count == 0) return true;
-  const auto cell_of = [this](u32 vaddr) { return location(vaddr) == kNoWord ? -1 : cells_.find(location(vaddr) & ~3u); };
+  const auto cell_of = [this](u32 vaddr) {
+    const u32 loc = location(vaddr);
+    return loc == kNoWord ? -1 : cells_.find(loc & ~3u);
+  };
   for (u32 i = 0; i < path_len_; ++i) {
     IdleStep& st = path_[i];
     if (cell_of(st.pc) >= 0) return false;

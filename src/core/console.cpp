@@ -214,9 +214,11 @@ bool Console::run_until(const std::function<bool()>& done, u64 max_frames) {
 }
 
 void Console::do_state(StateIO& s) {
-  // The SPU makes its samples lazily: those due belong to the state before a save or a load,
-  // and its event is booked at its next sample so that the state does not depend on batching.
-  spu_.sync_for_state();
+  // The SPU makes its samples lazily: those due belong to a saved state, and its event is booked
+  // at its next sample so that the state does not depend on batching. A load replaces them: a
+  // catch-up then would run to whatever clock a failed load left behind (a corrupt SCHD time can
+  // be billions of samples ahead) before the backup is put back.
+  if (!s.loading()) spu_.sync_for_state();
   s.section("CONS", 1);
   s.pod(frames_);
   s.boolean(hle_mode_);

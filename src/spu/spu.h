@@ -52,7 +52,7 @@ class Spu final : public IoDevice, public DmaPort {
   u32 max_batch() const { return max_batch_; }
   // Makes the samples due and books the SPU's event at its next sample, whatever the batching, so
   // that a save state made now is the same bytes either way; the console calls it before saving
-  // or loading. (Loading do_state() books the event again by the loaded registers.)
+  // (loading do_state() books the event again by the loaded registers).
   void sync_for_state();
 
   u32 io_read(u32 offset, u32 width) override;

@@ -198,8 +198,8 @@ void Spu::quiet_samples(u32 n) {
 }
 
 void Spu::do_state(StateIO& s) {
-  // A saved state holds every sample due by now (the console syncs before loading too: Console::
-  // do_state; here a load must not make samples, the scheduler's time being the new one).
+  // A saved state holds every sample due by now; a load makes none (the scheduler's time is
+  // already the loaded one, and the samples due before it belong to the abandoned timeline).
   if (!s.loading()) sync();
   // Version 2 keeps only the outputs of voices 1 and 3 (Voice::output); version 1 saved all.
   // Version 3 adds the cycles to the next sample.

@@ -3,10 +3,12 @@
 // alone; broken state files are refused, each with its own message, leaving the console as it was.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <thread>
 
 #include "core/console.h"
+#include "core/endian.h"
 #include "core/hash.h"
 #include "core/save_state.h"
 #include "temp_files.h"
@@ -151,6 +153,40 @@ TEST_F(BadState, EachDefectHasItsOwnMessage) {
   with_bios.load_bios_image(bios, "zero.bin");
   with_bios.boot_exe(kProgram);
   EXPECT_NE(load_error(with_bios.save_state()).find("different BIOS"), std::string::npos);
+}
+
+// Offset of a section's header (4 tag bytes, u32 version, u32 length) in a payload.
+size_t section_at(const std::vector<u8>& payload, const char (&tag)[5]) {
+  auto it = std::search(payload.begin(), payload.end(), tag, tag + 4);
+  EXPECT_NE(it, payload.end()) << tag;
+  return size_t(it - payload.begin());
+}
+
+// A load that fails after the scheduler's time was read puts the backup back without running the
+// lazily stepped devices up to that time: here the clock is 0xFFFF0000 SPU samples (768 cycles
+// each) ahead and the SPU's section has a version this build refuses, so catching the SPU up first would
+// make 4.3 billion samples, one by one with SPU IRQ9 enabled (psx-spx SPUCNT bit 6), before the
+// refusal.
+TEST(SaveState, RefusedStateWithAFarLaterClockLeavesTheConsoleAsItWas) {
+  Console c;
+  c.boot_exe(kGame);
+  c.run_frames(10);
+  u32 spucnt = 0;
+  ASSERT_TRUE(c.bus().read16(0x1F801DAA, spucnt));
+  ASSERT_TRUE(c.bus().write16(0x1F801DA4, 0xFFFF));  // IRQ address 7FFF8h, not reached here
+  ASSERT_TRUE(c.bus().write16(0x1F801DAA, spucnt | 0x8040));  // SPU enable, IRQ9 enable
+  const std::vector<u8> good = c.save_state();
+  SaveStateHeader h;
+  h.bios_hash = u64(load_le32(&good[16])) | u64(load_le32(&good[20])) << 32;
+  h.program_hash = u64(load_le32(&good[24])) | u64(load_le32(&good[28])) << 32;
+  std::vector<u8> p = unpack_save_state(good.data(), good.size(), h.bios_hash, h.program_hash);
+  const size_t now_at = section_at(p, "SCHD") + 12;  // SCHD's first field: the time, u64
+  const u64 later = (u64(load_le32(&p[now_at])) | u64(load_le32(&p[now_at + 4])) << 32) + 0xFFFF0000ull * 768;
+  store_le32(&p[now_at], u32(later));
+  store_le32(&p[now_at + 4], u32(later >> 32));
+  p[section_at(p, "SPU ") + 4] = 99;  // a section version this build does not read
+  EXPECT_THROW(c.load_state(pack_save_state(h, p)), StateError);
+  EXPECT_TRUE(c.save_state() == good) << "the refused state changed the console";
 }
 
 TEST_F(BadState, FilesAreWrittenAtomicallyAndReadBack) {

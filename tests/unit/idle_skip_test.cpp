@@ -232,6 +232,27 @@ TEST(IdleSkip, GpureadPollIsNotSkipped) {
   EXPECT_EQ(compare(code).stats.skips, 0u);
 }
 
+// A jump to address 1, the odd value that marks "no loop head": its fetch raises the address
+// error (psx-spx "COP0 - Exception Handling": AdEL, code 4, on an unaligned instruction fetch,
+// with EPC and BadVaddr the fetched address), and run() must not take the pc for a loop head
+// (it handed the same pc to IdleSkip forever). The vector at 80000080h holds zeros (NOPs) up to
+// the program, which jumps there again.
+TEST(IdleSkip, JumpToTheNoLoopHeadMarkRaisesTheAddressError) {
+  const u32 jr_t0 = kT0 << 21 | 0x08;
+  const std::vector<u32> code = {ori(kT0, 0, 1), jr_t0, kNop};
+  compare(code);
+  for (bool recompiler : {false, true}) {
+    Console c;
+    c.set_cpu_mode(recompiler ? Console::CpuMode::Recompiler : Console::CpuMode::Interpreter);
+    for (u32 i = 0; i < code.size(); ++i) c.write32(0x80010000 + 4 * i, code[i]);
+    c.cpu().set_pc(0x80010000);
+    c.run_frames(1);
+    EXPECT_EQ((c.cpu().cop0().cause >> 2) & 0x1F, 4u);
+    EXPECT_EQ(c.cpu().cop0().epc, 1u);
+    EXPECT_EQ(c.cpu().cop0().badvaddr, 1u);
+  }
+}
+
 // Whole programs: the same calls with skipping off and on end in the same save state.
 void expect_same(const std::function<void(Console&)>& boot, const std::function<void(Console&)>& play,
                  bool expect_skips = true) {

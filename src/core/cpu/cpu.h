@@ -99,6 +99,10 @@ class CpuT {
   // A short backward branch or jump marks its target as a loop head worth examining.
   static constexpr u32 kIdleLoopBytes = 256;
   static constexpr u32 kNoLoopHead = 1;  // never equals an aligned pc
+  // Whether run()'s pass hands the CPU to IdleSkip: at a loop head with skipping on. pc_ may be
+  // odd too (a jump to an odd address, whose fetch then raises the address error), so equality
+  // with kNoLoopHead is not a loop head; tested second, as pc_ rarely equals loop_head_.
+  bool at_loop_head() const { return pc_ == loop_head_ && loop_head_ != kNoLoopHead && idle_skip_; }
   // step() after its hook and interrupt checks: one instruction at pc_, its timing and the load
   // delay slot's bookkeeping.
   void execute_at_pc();

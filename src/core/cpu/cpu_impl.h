@@ -42,7 +42,7 @@ void CpuT<BusT>::run() {
   stop_ = false;
   while (!stop_ && sched_.now() < sched_.next_deadline()) {
     if constexpr (std::is_same_v<BusT, Bus>) {
-      if (pc_ == loop_head_ && idle_skip_) {
+      if (at_loop_head()) {
         loop_head_ = kNoLoopHead;
         idle_skip_->at_loop_head(*this);
         continue;

@@ -88,7 +88,7 @@ void RecompilerT<BusT>::run(Cpu& cpu) {
   cpu.stop_ = false;
   while (!cpu.stop_ && cpu.sched_.now() < cpu.sched_.next_deadline()) {
     if constexpr (std::is_same_v<BusT, Bus>) {  // as CpuT::run()
-      if (cpu.pc_ == cpu.loop_head_ && cpu.idle_skip_) {
+      if (cpu.at_loop_head()) {
         cpu.loop_head_ = Cpu::kNoLoopHead;
         cpu.idle_skip_->at_loop_head(cpu);
         continue;

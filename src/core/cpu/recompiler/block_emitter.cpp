@@ -34,22 +34,38 @@ void Impl::call_leaf(const void* fn) {
   call(rax);
 }
 
-// A step may read the time (a timer's counter, its own bookkeeping) or move it (a DMA), book an
-// event before the deadline, and it counts its instruction (hooks or idle skipping may read the
-// count), so the registers are written back before and read again after.
-void Impl::call_out(const void* fn) {
-  flush();
-  call_leaf(fn);
-  reload();
-}
-
+// A step's call: its pc and word and the function in rax, through step_routine().
 void Impl::call_step(const Step& s) {
-  mov(rdi, rbx);
   mov(esi, s.pc);
   mov(edx, s.word);
-  call_out(reinterpret_cast<const void*>(s.fn));
+  mov(rax, reinterpret_cast<u64>(s.fn));
+  call(step_routine());
   test(al, al);
   jz(*exit, T_NEAR);
+}
+
+// The call of the step function in rax with the context, as a routine of the block (emitted
+// once with the cold code): a block makes a call step for each instruction's slow path and
+// each load's or store's fallback, and this keeps each of them at about half the bytes. A step
+// may read the time (a timer's counter, its own bookkeeping) or move it (a DMA), book an event
+// before the deadline, and it counts its instruction (hooks or idle skipping may read the
+// count), so the registers are written back before and read again after. Entered with the
+// stack 8 bytes off the ABI's alignment (the return address).
+Label& Impl::step_routine() {
+  if (!step_entry) {
+    step_entry = &cold_label();
+    cold.push_back([this, &entry = *step_entry] {
+      L(entry);
+      mov(rdi, rbx);
+      sub(rsp, 8);
+      flush();
+      call(rax);
+      reload();
+      add(rsp, 8);
+      ret();
+    });
+  }
+  return *step_entry;
 }
 
 // The register the instruction writes through write_reg (0: none; a load's delayed write is not one).
@@ -701,6 +717,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.exit = &done;
   g.exit_after_first = &exit_after_first;
   g.routines.fill(nullptr);
+  g.step_entry = nullptr;
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   const size_t start = g.getSize();

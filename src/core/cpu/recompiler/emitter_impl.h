@@ -82,8 +82,6 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   const Xbyak::Reg64& instructions = rbp;
   void flush();
   void reload();
-  // A call out of native code to fn (arguments already in place): time flushed before, reloaded after.
-  void call_out(const void* fn);
   // A call to a function that is handed neither the CPU nor the scheduler (the GTE's, the code
   // pages'), so it can neither see nor move the time and count held in registers.
   void call_leaf(const void* fn);
@@ -106,6 +104,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
 
   // block_emitter.cpp
   void call_step(const Step& s);
+  Xbyak::Label& step_routine();
+  Xbyak::Label* step_entry = nullptr;  // this block's step_routine(), once emitted
   void alu(NativeOp op, u32 i);
   void arm_hook_static(u32 target);
   void arm_hook_ecx();

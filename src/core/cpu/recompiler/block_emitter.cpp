@@ -56,7 +56,7 @@ Label& Impl::step_routine() {
     step_entry = &cold_label();
     cold.push_back([this, &entry = *step_entry] {
       L(entry);
-      mov(rdi, rbx);
+      lea(rdi, ptr[rbx - lay.bias]);
       sub(rsp, 8);
       flush();
       call(rax);
@@ -615,7 +615,7 @@ void Impl::prologue(const Layout& layout) {
   const size_t start = getSize();
   for (const Xbyak::Reg64& r : {rbx, r12, r13, r14, r15, rbp}) push(r);
   sub(rsp, 8);
-  mov(rbx, reinterpret_cast<u64>(layout.context));
+  mov(rbx, reinterpret_cast<u64>(layout.context) + layout.bias);
   mov(r12, reinterpret_cast<u64>(layout.sched));
   reload();
   pad_to(start, kPrologueBytes, "block prologue");  // at most 57 bytes (the longest encodings)

@@ -43,10 +43,13 @@ class BlockEmitter {
     NativeOp native = NativeOp::None;
   };
   // Where native code finds the machine's state: byte offsets of CpuT's fields from the context
-  // (u32 unless noted), of the scheduler's time and deadline from `sched`, and the interrupt
-  // controller's and the i-cache's tables.
+  // plus `bias` (u32 unless noted), of the scheduler's time and deadline from `sched`, and the
+  // interrupt controller's and the i-cache's tables. Native code holds context + bias, chosen so
+  // that the fields it uses most lie within a signed byte of it (a one-byte displacement where
+  // x86-64 would otherwise take four).
   struct Layout {
     void* context;
+    int bias;
     void* sched;
     int regs, pc, next_pc, current_pc, load_reg, load_val, new_load_reg, new_load_val, shadow_reg;
     int loop_head, sr, cause, dcic, hook_pc, extra_hook_pc;

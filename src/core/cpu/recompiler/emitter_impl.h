@@ -1,15 +1,15 @@
-// The code generator behind BlockEmitter (block_emitter.h), shared by its two sources:
+// The code generator behind BlockEmitter (block_emitter.h), shared by its sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
-// operations and branches), block_emitter_memory.cpp (loads, stores, HI/LO moves) and
-// block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
-// commands). Only they
-// include this header (and with it xbyak). Registers while a block runs: rbx = the context (the
-// CPU), r12 = the scheduler, r13d = a load's or store's address, r14 = the scheduler's time and
-// r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
-// native code runs: flush() writes the time and the count back before anything outside the
-// block can look, reload() reads all three after a call). Within a native segment rbp stays the
-// count at the segment's start: instruction k adds nothing, and every way out of the segment
-// adds the k instructions run (its end, a deadline exit, a slow or fallback call).
+// operations and branches), block_emitter_memory.cpp (loads, stores, HI/LO moves),
+// block_emitter_muldiv.cpp (multiplies and divides) and block_emitter_cop2.cpp (GTE moves and
+// commands). Only they include this header (and with it xbyak). Registers while a block runs:
+// rbx = the context (the CPU) plus Layout::bias, r12 = the scheduler, r13d = a load's or
+// store's address, r14 = the scheduler's time and r15 = its deadline, rbp = the CPU's
+// instruction count (the cells in memory are stale while native code runs: flush() writes the
+// time and the count back before anything outside the block can look, reload() reads all three
+// after a call). Within a native segment rbp stays the count at the segment's start:
+// instruction k adds nothing, and every way out of the segment adds the k instructions run (its
+// end, a deadline exit, a slow or fallback call).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -143,7 +143,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void chain(bool clean);
   // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
   // block that cannot vouch for state_checks()), fn + kCleanEntry (a clean chain()).
-  static constexpr size_t kPrologueBytes = 64, kStateCheckBytes = 168;  // state checks: 162 bytes
+  static constexpr size_t kPrologueBytes = 64, kStateCheckBytes = 144;  // state checks: 141 bytes
   static constexpr size_t kCleanEntry = kPrologueBytes + kStateCheckBytes;
   void prologue(const Layout& layout);
   void epilogue();

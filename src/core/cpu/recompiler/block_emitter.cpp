@@ -18,14 +18,17 @@ namespace psx {
 using Xbyak::Label;
 using Impl = BlockEmitter::Impl;
 
+// Both leave every register but r11 as it was (a step's function in rax, its answer in al).
 void Impl::flush() {
-  mov(qword[r12 + lay.now], now);
+  mov(r11, reinterpret_cast<u64>(lay.sched));
+  mov(qword[r11 + lay.now], now);
   mov(cpu64(lay.instructions), instructions);
 }
 
 void Impl::reload() {
-  mov(now, qword[r12 + lay.now]);
-  mov(deadline, qword[r12 + lay.deadline]);
+  mov(r11, reinterpret_cast<u64>(lay.sched));
+  mov(now, qword[r11 + lay.now]);
+  mov(deadline, qword[r11 + lay.deadline]);
   mov(instructions, cpu64(lay.instructions));
 }
 
@@ -331,31 +334,32 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
   const u32 line = run[0].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
   u32 need = 0;
   for (size_t n = 0; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ((run[n].pc >> 2) & 3);
-  mov(rax, reinterpret_cast<u64>(&lay.icache_tags[(line >> 4) & 255]));
+  const Xbyak::Address tag = dword[r12 + int(4 * ((line >> 4) & 255))];
   if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
-    cmp(dword[rax], (phys & ICache::kTagMask) | 0xF);
+    cmp(tag, (phys & ICache::kTagMask) | 0xF);
   } else {
-    mov(eax, dword[rax]);
+    mov(eax, tag);
     xor_(eax, (phys & ICache::kTagMask) | need);
     test(eax, ICache::kTagMask | need);
   }
   jnz(fill ? *fill : fail, T_NEAR);
-  mov(rax, reinterpret_cast<u64>(&lay.icache_words[(line >> 2) & 1020]));
-  line_words(run, fail);
+  const auto words_at = reinterpret_cast<const char*>(&lay.icache_words[(line >> 2) & 1020]) -
+                        reinterpret_cast<const char*>(lay.icache_tags);
+  line_words(run, fail, r12 + int(words_at));
   if (filled) L(*filled);
 }
 
-// Each word of `run` on its first word's line, in the four words at rax, must be the word
+// Each word of `run` on its first word's line, in the four words at `at`, must be the word
 // compiled. Three or four words are compared at once with the line's compiled words, kept with
 // the cold code (SSE2: 37 bytes and 5 instructions on the main path instead of 48-61 bytes and
 // 6-8 compares and jumps); clobbers rax and xmm0 (no native code keeps anything there).
-void Impl::line_words(std::span<const Step> run, Label& fail) {
+void Impl::line_words(std::span<const Step> run, Label& fail, const Xbyak::RegExp& at) {
   const u32 line = run[0].pc & ~15u;
   size_t n = 0;
   while (n < run.size() && (run[n].pc & ~15u) == line) ++n;
   if (n < 3) {
     for (size_t k = 0; k < n; ++k) {
-      cmp(dword[rax + 4 * ((run[k].pc >> 2) & 3)], run[k].word);
+      cmp(dword[at + int(4 * ((run[k].pc >> 2) & 3))], run[k].word);
       jne(fail, T_NEAR);
     }
     return;
@@ -373,7 +377,7 @@ void Impl::line_words(std::span<const Step> run, Label& fail) {
     L(compiled);
     for (u32 w : words) dd(w);
   });
-  movdqu(xmm0, ptr[rax]);
+  movdqu(xmm0, ptr[at]);
   pcmpeqd(xmm0, ptr[rip + compiled]);
   pmovmskb(eax, xmm0);
   if (lanes != 0xFFFF) and_(eax, lanes);
@@ -406,7 +410,7 @@ void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
   test(dword[rax], lay.icache_block_bits);
   jz(slow, T_NEAR);
   mov(rax, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
-  line_words(rest, slow);
+  line_words(rest, slow, rax);
   mov(rdi, reinterpret_cast<u64>(lay.bus));
   mov(esi, rest[0].pc);
   call_leaf(reinterpret_cast<const void*>(lay.icache_miss_ram));
@@ -616,7 +620,7 @@ void Impl::prologue(const Layout& layout) {
   for (const Xbyak::Reg64& r : {rbx, r12, r13, r14, r15, rbp}) push(r);
   sub(rsp, 8);
   mov(rbx, reinterpret_cast<u64>(layout.context) + layout.bias);
-  mov(r12, reinterpret_cast<u64>(layout.sched));
+  mov(r12, reinterpret_cast<u64>(layout.icache_tags));
   reload();
   pad_to(start, kPrologueBytes, "block prologue");  // at most 57 bytes (the longest encodings)
 }

@@ -3,13 +3,13 @@
 // operations and branches), block_emitter_memory.cpp (loads, stores, HI/LO moves),
 // block_emitter_muldiv.cpp (multiplies and divides) and block_emitter_cop2.cpp (GTE moves and
 // commands). Only they include this header (and with it xbyak). Registers while a block runs:
-// rbx = the context (the CPU) plus Layout::bias, r12 = the scheduler, r13d = a load's or
-// store's address, r14 = the scheduler's time and r15 = its deadline, rbp = the CPU's
-// instruction count (the cells in memory are stale while native code runs: flush() writes the
-// time and the count back before anything outside the block can look, reload() reads all three
-// after a call). Within a native segment rbp stays the count at the segment's start:
-// instruction k adds nothing, and every way out of the segment adds the k instructions run (its
-// end, a deadline exit, a slow or fallback call).
+// rbx = the context (the CPU) plus Layout::bias, r12 = the i-cache's tags (its words lie at a
+// fixed distance from them), r13d = a load's or store's address, r14 = the scheduler's time and
+// r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
+// native code runs: flush() writes the time and the count back before anything outside the
+// block can look, reload() reads all three after a call). Within a native segment rbp stays the
+// count at the segment's start: instruction k adds nothing, and every way out of the segment
+// adds the k instructions run (its end, a deadline exit, a slow or fallback call).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -128,7 +128,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   std::array<Xbyak::Label*, 8> routines{};  // this block's machine_routine() entries, by needs
   void line_check(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
                   Xbyak::Label* filled = nullptr);
-  void line_words(std::span<const Step> run, Xbyak::Label& fail);
+  void line_words(std::span<const Step> run, Xbyak::Label& fail, const Xbyak::RegExp& at);
   bool fills_natively(u32 pc) const;
   Xbyak::Label* fill_entry(u32 pc, Segment& seg, size_t k) const;
   void fill_stub(std::span<const Step> rest, size_t k, Segment& seg);

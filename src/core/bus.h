@@ -74,15 +74,10 @@ class Bus {
     hot_lines_.fill(kNoLine);
   }
   const ICache& icache() const { return icache_; }
-  // fetch_hit()'s table in place (kLines entries), for the recompiler's native code.
-  const u32* hot_lines() const { return hot_lines_.data(); }
-  // fetch()'s i-cache miss on cached code in RAM at vaddr, without its time: the line filled as
-  // fetch_slow() fills it. Returns the words read (each kRamFetchUncached cycles), for the
-  // recompiler's native code, which waits for the bus and charges them itself.
-  u32 icache_miss_ram(u32 vaddr) {
-    const u32 p = physical(vaddr);
-    return icache_miss(vaddr, p, &ram_[p & (kRamSize - 1)]);
-  }
+  // fetch_hit()'s table in place (kLines entries: a line's address where it is held whole, else
+  // no_hot_line()), for the recompiler's native i-cache fills, which keep it as icache_miss().
+  u32* hot_lines_cell() { return hot_lines_.data(); }
+  static constexpr u32 no_hot_line() { return kNoLine; }
   // The cache control register in place and its i-cache enable bit (cached_code()), for the
   // recompiler's native code, which checks i-cache hits word by word (ICache::tags()).
   const u32* cache_control_cell() const { return &cache_control_; }

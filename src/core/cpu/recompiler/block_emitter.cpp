@@ -387,12 +387,47 @@ void Impl::line_words(std::span<const Step> run, Label& fail, const Xbyak::RegEx
 
 // Whether a miss on pc's line can be filled by native code: cached code in RAM (the guard has
 // ruled out KSEG1).
-bool Impl::fills_natively(u32 pc) const { return lay.icache_miss_ram && (pc & 0x1FFFFFFF) < 0x00800000; }
+bool Impl::fills_natively(u32 pc) const { return lay.hot_lines && (pc & 0x1FFFFFFF) < 0x00800000; }
 
 // Where a line check at instruction k (at pc) sends a miss: its fill stub, or nowhere (null: the
 // slow path) when the line cannot be filled natively.
 Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
   return fills_natively(pc) ? &seg.fill[k] : nullptr;
+}
+
+// ICache::fill() and Bus::icache_miss() for a miss at pc under a four-word block size, from the
+// line's RAM at rsi: a line whose tag holds pc's address is refilled whole, any other is
+// replaced from pc's word to the line's end; fetch_hit()'s table then names the line where all
+// four words are valid. Leaves the words read in eax.
+void Impl::icache_fill(u32 pc) {
+  const u32 line = pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
+  const u32 first = (pc >> 2) & 3, tag = phys & ICache::kTagMask;
+  const Xbyak::Address tag_at = dword[r12 + int(4 * ((line >> 4) & 255))];
+  const auto words_at = reinterpret_cast<const char*>(&lay.icache_words[(line >> 2) & 1020]) -
+                        reinterpret_cast<const char*>(lay.icache_tags);
+  Label other, done;
+  mov(ecx, tag_at);
+  xor_(ecx, tag);
+  test(ecx, ICache::kTagMask);
+  jnz(other);
+  or_(tag_at, 0xF);
+  movdqu(xmm0, ptr[rsi]);
+  movdqu(ptr[r12 + int(words_at)], xmm0);
+  mov(edx, line);
+  mov(ecx, 4);
+  jmp(done);
+  L(other);
+  mov(tag_at, tag | ((0xFu << first) & 0xF));
+  for (u32 w = first; w < 4; ++w) {
+    mov(ecx, dword[rsi + int(4 * w)]);
+    mov(dword[r12 + int(words_at + 4 * w)], ecx);
+  }
+  mov(edx, first == 0 ? line : lay.no_hot_line);
+  mov(ecx, 4 - first);
+  L(done);
+  mov(rax, reinterpret_cast<u64>(&lay.hot_lines[(line >> 4) & 255]));
+  mov(dword[rax], edx);
+  mov(eax, ecx);
 }
 
 // The fetch of rest[0] (instruction k) missing the i-cache, as CpuT::execute_at_pc() and
@@ -409,11 +444,9 @@ void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
   Label& slow = k == 0 ? seg.slow[0] : seg.slow_native[k];
   test(dword[rax], lay.icache_block_bits);
   jz(slow, T_NEAR);
-  mov(rax, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
-  line_words(rest, slow, rax);
-  mov(rdi, reinterpret_cast<u64>(lay.bus));
-  mov(esi, rest[0].pc);
-  call_leaf(reinterpret_cast<const void*>(lay.icache_miss_ram));
+  mov(rsi, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
+  line_words(rest, slow, rsi);
+  icache_fill(rest[0].pc);
   lea(rcx, ptr[now + 1]);
   mov(rdx, cpu64(lay.load_done_at));
   cmp(rcx, rdx);

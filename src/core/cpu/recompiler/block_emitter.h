@@ -64,9 +64,11 @@ class BlockEmitter {
     const u32* irq_mask;
     const u32* icache_tags;    // ICache::tags()
     const u32* icache_words;   // ICache::words()
-    // An i-cache miss in RAM filled natively: Bus::icache_miss_ram() and a word's fill time.
-    void* bus;
-    u32 (*icache_miss_ram)(void* bus, u32 vaddr);
+    // An i-cache miss in RAM filled natively (as Bus::icache_miss() and ICache::fill()): the
+    // i-cache tags and words above, Bus::hot_lines_cell() (null: no native fills) and
+    // no_hot_line(), and a word's fill time.
+    u32* hot_lines;
+    u32 no_hot_line;
     u32 fetch_word_cycles;     // Bus::kRamFetchUncached
     u32 icache_block_bits;     // Bus::icache_block_bits()
     const u32* cache_control;  // Bus::cache_control_cell()

@@ -235,8 +235,8 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
     l.cache_control = c.bus_.cache_control_cell();
     l.icache_enable = BusT::icache_enable_bit();
     l.icache_words = c.bus_.icache().words();
-    l.bus = &c.bus_;
-    l.icache_miss_ram = [](void* bus, u32 vaddr) { return static_cast<BusT*>(bus)->icache_miss_ram(vaddr); };
+    l.hot_lines = c.bus_.hot_lines_cell();
+    l.no_hot_line = BusT::no_hot_line();
     l.fetch_word_cycles = u32(BusT::kRamFetchUncached);
     l.icache_block_bits = BusT::icache_block_bits();
     l.ram = c.bus_.ram();

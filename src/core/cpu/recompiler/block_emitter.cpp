@@ -334,7 +334,7 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
   const u32 line = run[0].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
   u32 need = 0;
   for (size_t n = 0; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ((run[n].pc >> 2) & 3);
-  const Xbyak::Address tag = dword[r12 + int(4 * ((line >> 4) & 255))];
+  const Xbyak::Address tag = icache_tag(line);
   if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
     cmp(tag, (phys & ICache::kTagMask) | 0xF);
   } else {
@@ -343,10 +343,17 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
     test(eax, ICache::kTagMask | need);
   }
   jnz(fill ? *fill : fail, T_NEAR);
-  const auto words_at = reinterpret_cast<const char*>(&lay.icache_words[(line >> 2) & 1020]) -
-                        reinterpret_cast<const char*>(lay.icache_tags);
-  line_words(run, fail, r12 + int(words_at));
+  line_words(run, fail, icache_words(line));
   if (filled) L(*filled);
+}
+
+// The i-cache tag of `line` (an address's line) and where its four words begin, from r12.
+Xbyak::Address Impl::icache_tag(u32 line) { return dword[r12 + int(4 * ((line >> 4) & 255))]; }
+
+Xbyak::RegExp Impl::icache_words(u32 line) const {
+  const auto at = reinterpret_cast<const char*>(&lay.icache_words[(line >> 2) & 1020]) -
+                  reinterpret_cast<const char*>(lay.icache_tags);
+  return r12 + int(at);
 }
 
 // Each word of `run` on its first word's line, in the four words at `at`, must be the word
@@ -402,9 +409,8 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
 void Impl::icache_fill(u32 pc) {
   const u32 line = pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
   const u32 first = (pc >> 2) & 3, tag = phys & ICache::kTagMask;
-  const Xbyak::Address tag_at = dword[r12 + int(4 * ((line >> 4) & 255))];
-  const auto words_at = reinterpret_cast<const char*>(&lay.icache_words[(line >> 2) & 1020]) -
-                        reinterpret_cast<const char*>(lay.icache_tags);
+  const Xbyak::Address tag_at = icache_tag(line);
+  const Xbyak::RegExp words = icache_words(line);
   Label other, done;
   mov(ecx, tag_at);
   xor_(ecx, tag);
@@ -412,7 +418,7 @@ void Impl::icache_fill(u32 pc) {
   jnz(other);
   or_(tag_at, 0xF);
   movdqu(xmm0, ptr[rsi]);
-  movdqu(ptr[r12 + int(words_at)], xmm0);
+  movdqu(ptr[words], xmm0);
   mov(edx, line);
   mov(ecx, 4);
   jmp(done);
@@ -420,7 +426,7 @@ void Impl::icache_fill(u32 pc) {
   mov(tag_at, tag | ((0xFu << first) & 0xF));
   for (u32 w = first; w < 4; ++w) {
     mov(ecx, dword[rsi + int(4 * w)]);
-    mov(dword[r12 + int(words_at + 4 * w)], ecx);
+    mov(dword[words + int(4 * w)], ecx);
   }
   mov(edx, first == 0 ? line : lay.no_hot_line);
   mov(ecx, 4 - first);

@@ -129,6 +129,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void line_check(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
                   Xbyak::Label* filled = nullptr);
   void line_words(std::span<const Step> run, Xbyak::Label& fail, const Xbyak::RegExp& at);
+  Xbyak::Address icache_tag(u32 line);
+  Xbyak::RegExp icache_words(u32 line) const;
   bool fills_natively(u32 pc) const;
   Xbyak::Label* fill_entry(u32 pc, Segment& seg, size_t k) const;
   void fill_stub(std::span<const Step> rest, size_t k, Segment& seg);

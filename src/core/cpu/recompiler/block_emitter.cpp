@@ -1,6 +1,7 @@
 // Emits compiled blocks (block_emitter.h) with xbyak (System V x86-64 calling convention): a
 // block's frame, the segment guard, each native instruction's bookkeeping (CpuT::execute_at_pc),
-// the ALU operations and the branches. Loads, stores and HI/LO: block_emitter_memory.cpp.
+// the ALU operations and the branches. Loads, stores and HI/LO: block_emitter_memory.cpp; the
+// i-cache line checks and fills: block_emitter_icache.cpp.
 #include "core/cpu/recompiler/block_emitter.h"
 
 #include <algorithm>
@@ -9,8 +10,6 @@
 
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
-#include "core/cpu/icache.h"
-#include "core/cpu/recompiler/code_pages.h"
 #include "core/cpu/recompiler/emitter_impl.h"
 
 namespace psx {
@@ -325,141 +324,6 @@ Label& Impl::machine_routine(u32 needs) {
     });
   }
   return *r;
-}
-
-// The i-cache check for the words of `run` on its first word's line: the line's tag must be the
-// code's physical address (KUSEG as it is, KSEG0 less bit 31) with those words' valid bits set
-// (ICache::hit()), and each must be the word compiled.
-void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label* filled) {
-  const u32 line = run[0].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
-  u32 need = 0;
-  for (size_t n = 0; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ((run[n].pc >> 2) & 3);
-  const Xbyak::Address tag = icache_tag(line);
-  if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
-    cmp(tag, (phys & ICache::kTagMask) | 0xF);
-  } else {
-    mov(eax, tag);
-    xor_(eax, (phys & ICache::kTagMask) | need);
-    test(eax, ICache::kTagMask | need);
-  }
-  jnz(fill ? *fill : fail, T_NEAR);
-  line_words(run, fail, icache_words(line));
-  if (filled) L(*filled);
-}
-
-// The i-cache tag of `line` (an address's line) and where its four words begin, from r12.
-Xbyak::Address Impl::icache_tag(u32 line) { return dword[r12 + int(4 * ((line >> 4) & 255))]; }
-
-Xbyak::RegExp Impl::icache_words(u32 line) const {
-  const auto at = reinterpret_cast<const char*>(&lay.icache_words[(line >> 2) & 1020]) -
-                  reinterpret_cast<const char*>(lay.icache_tags);
-  return r12 + int(at);
-}
-
-// Each word of `run` on its first word's line, in the four words at `at`, must be the word
-// compiled. Three or four words are compared at once with the line's compiled words, kept with
-// the cold code (SSE2: 37 bytes and 5 instructions on the main path instead of 48-61 bytes and
-// 6-8 compares and jumps); clobbers rax and xmm0 (no native code keeps anything there).
-void Impl::line_words(std::span<const Step> run, Label& fail, const Xbyak::RegExp& at) {
-  const u32 line = run[0].pc & ~15u;
-  size_t n = 0;
-  while (n < run.size() && (run[n].pc & ~15u) == line) ++n;
-  if (n < 3) {
-    for (size_t k = 0; k < n; ++k) {
-      cmp(dword[at + int(4 * ((run[k].pc >> 2) & 3))], run[k].word);
-      jne(fail, T_NEAR);
-    }
-    return;
-  }
-  std::array<u32, 4> words{};
-  u32 lanes = 0;  // pmovmskb's bits: four per word
-  for (size_t k = 0; k < n; ++k) {
-    const u32 w = (run[k].pc >> 2) & 3;
-    words[w] = run[k].word;
-    lanes |= 0xFu << (4 * w);
-  }
-  Label& compiled = cold_label();
-  cold.push_back([this, words, &compiled] {
-    align(16);  // pcmpeqd's memory operand
-    L(compiled);
-    for (u32 w : words) dd(w);
-  });
-  movdqu(xmm0, ptr[at]);
-  pcmpeqd(xmm0, ptr[rip + compiled]);
-  pmovmskb(eax, xmm0);
-  if (lanes != 0xFFFF) and_(eax, lanes);
-  cmp(eax, lanes);
-  jne(fail, T_NEAR);
-}
-
-// Whether a miss on pc's line can be filled by native code: cached code in RAM (the guard has
-// ruled out KSEG1).
-bool Impl::fills_natively(u32 pc) const { return lay.hot_lines && (pc & 0x1FFFFFFF) < 0x00800000; }
-
-// Where a line check at instruction k (at pc) sends a miss: its fill stub, or nowhere (null: the
-// slow path) when the line cannot be filled natively.
-Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
-  return fills_natively(pc) ? &seg.fill[k] : nullptr;
-}
-
-// ICache::fill() and Bus::icache_miss() for a miss at pc under a four-word block size, from the
-// line's RAM at rsi: a line whose tag holds pc's address is refilled whole, any other is
-// replaced from pc's word to the line's end; fetch_hit()'s table then names the line where all
-// four words are valid. Leaves the words read in eax.
-void Impl::icache_fill(u32 pc) {
-  const u32 line = pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
-  const u32 first = (pc >> 2) & 3, tag = phys & ICache::kTagMask;
-  const Xbyak::Address tag_at = icache_tag(line);
-  const Xbyak::RegExp words = icache_words(line);
-  Label other, done;
-  mov(ecx, tag_at);
-  xor_(ecx, tag);
-  test(ecx, ICache::kTagMask);
-  jnz(other);
-  or_(tag_at, 0xF);
-  movdqu(xmm0, ptr[rsi]);
-  movdqu(ptr[words], xmm0);
-  mov(edx, line);
-  mov(ecx, 4);
-  jmp(done);
-  L(other);
-  mov(tag_at, tag | ((0xFu << first) & 0xF));
-  for (u32 w = first; w < 4; ++w) {
-    mov(ecx, dword[rsi + int(4 * w)]);
-    mov(dword[words + int(4 * w)], ecx);
-  }
-  mov(edx, first == 0 ? line : lay.no_hot_line);
-  mov(ecx, 4 - first);
-  L(done);
-  mov(rax, reinterpret_cast<u64>(&lay.hot_lines[(line >> 4) & 255]));
-  mov(dword[rax], edx);
-  mov(eax, ecx);
-}
-
-// The fetch of rest[0] (instruction k) missing the i-cache, as CpuT::execute_at_pc() and
-// Bus::fetch_slow() make it: the instruction's cycle, then the wait for a load's bus access
-// still under way, then the fill and a word's time for each word read. Only a fill of the words
-// the run needs from this line that brings exactly the words compiled (RAM still holds them) is
-// made here, and not under a two-word block size (a fill entered at word 0 would leave words 2
-// and 3 missing); otherwise instruction k takes its slow path, nothing changed. The time is
-// left one cycle short: instruction k counts its own cycle.
-void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
-  const u32 line = rest[0].pc & ~15u;
-  L(seg.fill[k]);
-  mov(rax, reinterpret_cast<u64>(lay.cache_control));
-  Label& slow = k == 0 ? seg.slow[0] : seg.slow_native[k];
-  test(dword[rax], lay.icache_block_bits);
-  jz(slow, T_NEAR);
-  mov(rsi, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
-  line_words(rest, slow, rsi);
-  icache_fill(rest[0].pc);
-  lea(rcx, ptr[now + 1]);
-  mov(rdx, cpu64(lay.load_done_at));
-  cmp(rcx, rdx);
-  cmovb(rcx, rdx);
-  imul(eax, eax, lay.fetch_word_cycles);
-  lea(now, ptr[rcx + rax - 1]);
-  jmp(seg.filled[k], T_NEAR);
 }
 
 // Instruction k of a native segment: CpuT::run()'s loop pass and execute_at_pc(). The guard

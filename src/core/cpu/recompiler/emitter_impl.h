@@ -1,8 +1,9 @@
 // The code generator behind BlockEmitter (block_emitter.h), shared by its sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
-// operations and branches), block_emitter_memory.cpp (loads, stores, HI/LO moves),
-// block_emitter_muldiv.cpp (multiplies and divides) and block_emitter_cop2.cpp (GTE moves and
-// commands). Only they include this header (and with it xbyak). Registers while a block runs:
+// operations and branches), block_emitter_icache.cpp (i-cache line checks and fills),
+// block_emitter_memory.cpp (loads, stores, HI/LO moves), block_emitter_muldiv.cpp (multiplies
+// and divides) and block_emitter_cop2.cpp (GTE moves and commands). Only they include this
+// header (and with it xbyak). Registers while a block runs:
 // rbx = the context (the CPU) plus Layout::bias, r12 = the i-cache's tags (its words lie at a
 // fixed distance from them), r13d = a load's or store's address, r14 = the scheduler's time and
 // r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
@@ -126,6 +127,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void pad_to(size_t start, size_t bytes, const char* what);
   Xbyak::Label& machine_routine(u32 needs);
   std::array<Xbyak::Label*, 8> routines{};  // this block's machine_routine() entries, by needs
+  // block_emitter_icache.cpp
   void line_check(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
                   Xbyak::Label* filled = nullptr);
   void line_words(std::span<const Step> run, Xbyak::Label& fail, const Xbyak::RegExp& at);
@@ -135,6 +137,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Xbyak::Label* fill_entry(u32 pc, Segment& seg, size_t k) const;
   void fill_stub(std::span<const Step> rest, size_t k, Segment& seg);
   void icache_fill(u32 pc);
+  // block_emitter.cpp
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);

@@ -181,7 +181,8 @@ void Spu::quiet_samples(u32 n) {
   // main volume sweeps.
   if (attr_ & kAttrEnable)
     for (u32 k = 0; k < n; ++k) noise_.tick(attr_);
-  const bool unseen = reverb_unseen();  // holds for the whole catch-up
+  // Holds for the whole catch-up: tested once here rather than by reverb_sample() per sample.
+  const bool unseen = reverb_unseen();
   for (u32 k = 0; k < n; ++k) {
     // Sample by sample: the reverb work area may overlap the capture buffers.
     const u32 off = capture_pos_ * 2;

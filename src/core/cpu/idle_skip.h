@@ -67,8 +67,8 @@ class IdleSkip {
   bool name_cells(Bus& bus);
 
   // A loop that could not be skipped (it stores other than to fixed words, reads a timer, exits,
-  // or an event is due within its iteration) is examined again only after 2^failures - 1 more visits to its head, so loops
-  // that never qualify cost little.
+  // or an event is due within its iteration) is examined again only after 2^failures - 1 more
+  // visits to its head, so loops that never qualify cost little.
   static constexpr u32 kMaxBackoff = 8;
   struct Backoff {
     u32 head = 1;

@@ -41,6 +41,12 @@ void expect_same(const std::function<void(Console&)>& boot, const std::function<
   EXPECT_EQ(ref.cycles(), rec.cycles());
   EXPECT_EQ(ref.instructions(), rec.instructions());
   EXPECT_TRUE(ref.save_state(false) == rec.save_state(false)) << "state differs under the recompiler";
+  // Idle skipping's choices too: the recompiler hands loop heads to it (or passes one that is
+  // backing off itself) exactly where the interpreter does.
+  EXPECT_EQ(ref.idle_skip_stats().examinations, rec.idle_skip_stats().examinations);
+  EXPECT_EQ(ref.idle_skip_stats().skips, rec.idle_skip_stats().skips);
+  EXPECT_EQ(ref.idle_skip_stats().iterations, rec.idle_skip_stats().iterations);
+  EXPECT_EQ(ref.idle_skip_stats().proofs, rec.idle_skip_stats().proofs);
   EXPECT_GT(rec.recompiler_stats().compiled, 0u);
   EXPECT_EQ(ref.recompiler_stats().compiled, 0u);
 }

@@ -2,6 +2,8 @@
 #include "core/cpu/idle_skip.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <type_traits>
 
 #include "core/bus.h"
 #include "core/cpu/cpu.h"
@@ -90,6 +92,12 @@ u32 load_width(u32 instr) {
 
 }  // namespace
 
+IdleSkip::BackoffCells IdleSkip::backoff_cells() {
+  static_assert(std::is_standard_layout_v<IdleSkip> && sizeof(Backoff) == kBackoffBytes &&
+                offsetof(Backoff, head) == 0 && offsetof(Backoff, visits) == 4);
+  return {int(offsetof(IdleSkip, last_head_)), int(offsetof(IdleSkip, backoff_))};
+}
+
 void IdleSkip::at_loop_head(Cpu& cpu) {
   const u32 head = cpu.pc_;
   Backoff& b = backoff_[(head >> 2) % backoff_.size()];
@@ -99,6 +107,7 @@ void IdleSkip::at_loop_head(Cpu& cpu) {
     --b.visits;
   } else {
     if (b.head != head) b = Backoff{head, 0, 0};
+    ++stats_.examinations;
     if (examine(cpu)) {
       b.failures = 0;
     } else {

@@ -53,12 +53,23 @@ class IdleSkip {
     u64 iterations = 0;  // loop iterations skipped in all
     u64 cycles = 0;      // CPU cycles they took
     u64 proofs = 0;      // proofs made (the other skips reused one)
+    u64 examinations = 0;  // iterations recorded to try a loop (examine())
   };
 
   // Called by the CPU's run loop with pc at a loop head (and the loop head cleared); skips
   // iterations, or executes some, or does nothing.
   void at_loop_head(CpuT<Bus>& cpu);
   const Stats& stats() const { return stats_; }
+
+  // What at_loop_head() reads and writes to let a backing-off loop head pass (below), for native
+  // code that does the same without returning to its dispatcher (the recompiler's chain()): byte
+  // offsets in an IdleSkip of last_head_ and of the backoff table, whose kBackoffEntries entries
+  // of kBackoffBytes are {u32 head, visits, failures}, head at entry (head >> 2) % kBackoffEntries.
+  struct BackoffCells {
+    int last_head, table;
+  };
+  static constexpr u32 kBackoffEntries = 64, kBackoffBytes = 12;
+  static BackoffCells backoff_cells();
 
  private:
   // Records and proves one iteration from the loop head; skips and returns true when it can.
@@ -75,7 +86,7 @@ class IdleSkip {
     u32 visits = 0;
     u32 failures = 0;
   };
-  std::array<Backoff, 64> backoff_{};
+  std::array<Backoff, kBackoffEntries> backoff_{};
   // The last proof made: the iteration recorded, the registers it started from and added, the
   // load in flight at its end, and its bound.
   struct Proven {

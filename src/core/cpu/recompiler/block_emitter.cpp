@@ -10,6 +10,7 @@
 
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
+#include "core/cpu/idle_skip.h"
 #include "core/cpu/recompiler/emitter_impl.h"
 
 namespace psx {
@@ -492,8 +493,8 @@ void Impl::chain(bool clean) {
   mov(eax, cpu32(lay.pc));
   cmp(eax, cpu32(lay.loop_head));
   jne(no_loop_head);
-  cmp(qword[rbx + lay.idle_skip], 0);
-  jne(back, T_NEAR);
+  call(loop_head_routine());
+  jnz(back, T_NEAR);
   L(no_loop_head);
   mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
   cmp(byte[rcx], 0);
@@ -512,6 +513,45 @@ void Impl::chain(bool clean) {
   flush();
   epilogue();
   ret();
+}
+
+// chain()'s pc (in eax) is the loop head: run() would hand it to IdleSkip::at_loop_head(), whose
+// most common answer, for a loop that failed to qualify and is backing off, is to count one visit
+// off and let the loop run on. This routine (one per block, with the cold code) gives that answer
+// itself, clearing the loop head as run() does, and leaves every other case to the dispatcher:
+// ZF set when the chain may go on (also without idle skipping), clear when it must go back. A tight
+// loop that stores (a memset, a sieve) would otherwise return to the dispatcher every iteration.
+Label& Impl::loop_head_routine() {
+  if (!loop_head_entry) {
+    loop_head_entry = &cold_label();
+    cold.push_back([this, &entry = *loop_head_entry] {
+      Label refuse, done;
+      L(entry);
+      mov(rdx, cpu64(lay.idle_skip));
+      test(rdx, rdx);
+      jz(done);  // ZF set
+      cmp(eax, dword[rdx + lay.idle_last_head]);  // right after a skip: at_loop_head() decides
+      je(refuse);
+      mov(ecx, eax);
+      shr(ecx, 2);
+      and_(ecx, IdleSkip::kBackoffEntries - 1);
+      imul(ecx, ecx, IdleSkip::kBackoffBytes);
+      add(rdx, rcx);
+      cmp(dword[rdx + lay.idle_backoff], eax);  // the entry's head
+      jne(refuse);
+      cmp(dword[rdx + lay.idle_backoff + 4], 0);  // its visits left before the next examination
+      je(refuse);
+      sub(dword[rdx + lay.idle_backoff + 4], 1);
+      mov(cpu32(lay.loop_head), lay.no_loop_head);
+      cmp(eax, eax);  // ZF set
+      L(done);
+      ret();
+      L(refuse);
+      test(rdx, rdx);  // ZF clear (rdx is the IdleSkip or past it)
+      ret();
+    });
+  }
+  return *loop_head_entry;
 }
 
 // Six callee-saved pushes and 8 bytes more leave the stack 16-byte aligned at each call, as the
@@ -625,6 +665,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.exit_after_first = &exit_after_first;
   g.routines.fill(nullptr);
   g.step_entry = nullptr;
+  g.loop_head_entry = nullptr;
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   const size_t start = g.getSize();

@@ -57,6 +57,8 @@ class BlockEmitter {
     int hi, lo;
     int instructions, load_done_at, muldiv_ready_at, gte_ready_at;  // u64
     int idle_skip, hooks;                                // pointers
+    int idle_last_head, idle_backoff;  // IdleSkip::backoff_cells(), from what idle_skip points to
+    u32 no_loop_head;                  // CpuT::kNoLoopHead
     int now, deadline;                                   // u64, from sched
     int load_issue, load_bus;  // CpuT::kLoadIssue, kLoadBus (the load-shadow model)
     int ram_read;              // Bus::kRamRead (a RAM read outside that model: LWC2)

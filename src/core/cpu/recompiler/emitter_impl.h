@@ -147,6 +147,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
   void chain(bool clean);
+  Xbyak::Label& loop_head_routine();
+  Xbyak::Label* loop_head_entry = nullptr;  // this block's loop_head_routine(), once emitted
   // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
   // block that cannot vouch for state_checks()), fn + kCleanEntry (a clean chain()).
   static constexpr size_t kPrologueBytes = 64, kStateCheckBytes = 144;  // state checks: 141 bytes

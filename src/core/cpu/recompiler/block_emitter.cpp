@@ -217,7 +217,11 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, Label* f
       break;
     }
   }
-  if (is_branch(run[0].native)) {  // branch() assumes it is not in a delay slot
+  // A segment's first instruction runs natively only out of a delay slot, next_pc_ following pc_
+  // (native() then knows its pc_, next_pc_ and in_delay_slot_), as does a branch (branch()
+  // assumes it). A segment resumed after a call needs no check: the call left on the next
+  // instruction (call_step()), and after a branch's call its delay slot reads where it went.
+  if (checks != Checks::routine || is_branch(run[0].native)) {
     cmp(byte[rbx + lay.next_in_delay], 0);
     jne(fail, T_NEAR);
     cmp(cpu32(lay.next_pc), first + 4);
@@ -333,12 +337,13 @@ Label& Impl::machine_routine(u32 needs) {
 // instruction after the first, and the i-cache where one starts a line the guard left to it. A
 // branch may arm a hook or name a loop head, but only its delay slot follows it in the segment,
 // and step() leaves an armed hook alone in a delay slot, and the loop head lies at or before the
-// branch. After the first instruction the pipeline is
-// known: not in a delay slot, next_pc = pc + 4, and the load delay slot as seg.pipe[k] says.
+// branch. The guard has also seen that the first instruction is not in a delay slot, so where
+// each instruction is and goes is known (but for a delay slot's target), and the load delay
+// slot is as seg.pipe[k] says (unknown at the first instruction).
 // A branch's delay slot (after_branch) runs with in_delay_slot_ set and goes wherever the
 // branch set next_pc_. A load or store first checks, before changing anything, that it can make
 // its access natively; if not, it runs as a call (seg.fallback[k]; see emit() for what follows).
-void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg) {
+void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg) {
   using namespace cpu_detail;
   const Step& s = rest[0];
   const NativeOp op = s.native;
@@ -351,15 +356,11 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
     if ((s.pc & 15) == 0) line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
   }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
-  if (k == 0 || after_branch) mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
-  if (k == 0) {
-    mov(al, byte[rbx + lay.next_in_delay]);
-    mov(byte[rbx + lay.in_delay_slot], al);
-    mov(byte[rbx + lay.next_in_delay], 0);
-  } else if (after_branch) {
+  if (after_branch) {
+    mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
     mov(byte[rbx + lay.in_delay_slot], 1);
     mov(byte[rbx + lay.next_in_delay], 0);
-  } else if (k == 1) {
+  } else if (k == 0) {
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
   inc(now);
@@ -370,7 +371,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   } else if (seg.shadow[k] == Shadow::clear) {
     mov(cpu32(lay.shadow_reg), 0);
   }
-  if (k == 0 || after_branch) {
+  if (after_branch) {
     mov(eax, cpu32(lay.next_pc));
     mov(cpu32(lay.pc), eax);
     add(eax, 4);
@@ -389,20 +390,16 @@ void Impl::native(std::span<const Step> rest, size_t k, bool last_in_block, bool
   else alu(op, s.word);
   if (d != 0) mov(reg(d), eax);
   commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word));
-  if (k == 0 && !last_in_block) {  // the first instruction may be a delay slot
-    cmp(cpu32(lay.pc), s.pc + 4);
-    jne(*exit_after_first, T_NEAR);
-  }
 }
 
 // current_pc_, pc_ and next_pc_ after instruction j of a segment, which native code writes only
 // where someone outside the block can look (sync_pc() at a segment's end, before a slow or
-// fallback call, at a deadline exit): the segment's first instruction and a delay slot write
-// theirs, which depend on where the CPU came from; any other one's are its address, the next
-// and the one after, except that a branch has set next_pc_ itself. Nothing called from inside
-// an instruction reads them (the GTE, the code pages).
+// fallback call, at a deadline exit): a delay slot writes its own, which depend on where the
+// branch went; any other instruction's are its address, the next and the one after, except that
+// a branch has set next_pc_ itself. Nothing called from inside an instruction reads them (the
+// GTE, the code pages).
 void Impl::sync_pc(std::span<const Step> run, size_t j) {
-  if (j == 0 || is_branch(run[j - 1].native)) return;
+  if (j > 0 && is_branch(run[j - 1].native)) return;
   mov(cpu32(lay.current_pc), run[j].pc);
   mov(cpu32(lay.pc), run[j].pc + 4);
   if (!is_branch(run[j].native)) mov(cpu32(lay.next_pc), run[j].pc + 8);
@@ -411,18 +408,33 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 // execute_at_pc()'s load delay slot after the instruction: the previous instruction's load
 // lands unless this one wrote the register (write_reg and delayed_load clear load_reg_ for
 // `cleared`), and this one's load (`load`: eax to rt) becomes the pending one.
+// Where it is not known (a segment's first instruction), an empty slot (load_reg_ and load_val_
+// both zero, which then stay so) is checked for and the rest left to the cold code.
 void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt) {
   if (pipe.dynamic) {
-    Label skip;
+    Label &pending = cold_label(), &back = cold_label();
     mov(ecx, cpu32(lay.load_reg));
-    if (cleared != 0) {
-      cmp(ecx, cleared);
-      je(skip);
-    }
-    mov(edx, cpu32(lay.load_val));
-    mov(dword[rbx + rcx * 4 + lay.regs], edx);
-    L(skip);
-    mov(reg(0), 0);
+    or_(ecx, cpu32(lay.load_val));
+    jnz(pending, T_NEAR);
+    L(back);
+    cold.push_back([this, &pending, &back, cleared, load] {
+      Label skip;
+      L(pending);
+      mov(ecx, cpu32(lay.load_reg));
+      if (cleared != 0) {
+        cmp(ecx, cleared);
+        je(skip);
+      }
+      mov(edx, cpu32(lay.load_val));
+      mov(dword[rbx + rcx * 4 + lay.regs], edx);
+      L(skip);
+      mov(reg(0), 0);
+      if (!load) {
+        mov(cpu32(lay.load_reg), 0);
+        mov(cpu32(lay.load_val), 0);
+      }
+      jmp(back, T_NEAR);
+    });
   } else if (pipe.after_load && pipe.load_reg != 0 && pipe.load_reg != cleared) {
     mov(edx, cpu32(lay.load_val));
     mov(reg(pipe.load_reg), edx);
@@ -430,7 +442,7 @@ void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt) {
   if (load) {
     mov(cpu32(lay.load_reg), rt);
     mov(cpu32(lay.load_val), eax);
-  } else if (pipe.dynamic || pipe.after_load) {
+  } else if (pipe.after_load) {
     mov(cpu32(lay.load_reg), 0);
     mov(cpu32(lay.load_val), 0);
   }
@@ -644,6 +656,9 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
   }
   guard(run.subspan(k + 1), seg.slow[k + 1], Checks::routine);
   sub(instructions, int(k + 1));  // native code counts from where it resumes
+  // Instruction 0 may have been a delay slot whose branch went on to instruction 1, which then
+  // is not in one: native code writes in_delay_slot_ at instruction 0 only (or after a branch).
+  if (k == 0 && !is_branch(run[0].native)) mov(byte[rbx + lay.in_delay_slot], 0);
   jmp(seg.resume[k + 1], T_NEAR);
 }
 
@@ -654,15 +669,13 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   // Upper bounds on one step's code (inline code with a line check, stall stub, and the slow
   // call and the load's or store's call, each with the guard for the rest: at most about 180
   // bytes and a line check of at most 90) and on the frame's (prologue and padded state checks,
-  // kCleanEntry bytes, then two chain()s of about 150 bytes each and the first
-  // instruction's exit).
+  // kCleanEntry bytes, then two chain()s of about 150 bytes each and the loop-head routine).
   const size_t step_bytes = 1536, frame_bytes = 768;
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;
-  Label done, exit_after_first;
+  Label done;
   g.exit = &done;
-  g.exit_after_first = &exit_after_first;
   g.routines.fill(nullptr);
   g.step_entry = nullptr;
   g.loop_head_entry = nullptr;
@@ -694,7 +707,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);
-      g.native(run.subspan(k), k, seg.first + k + 1 == steps.size(), after_branch, seg);
+      g.native(run.subspan(k), k, after_branch, seg);
     }
     g.add(g.instructions, int(seg.count));
     g.sync_pc(run, seg.count - 1);
@@ -704,9 +717,6 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.L(done);
   g.chain(false);
   for (Segment& seg : segments) g.segment_stubs(steps.subspan(seg.first, seg.count), seg);
-  g.L(exit_after_first);
-  g.inc(g.instructions);
-  g.jmp(done, Xbyak::CodeGenerator::T_NEAR);
   g.emit_cold();
   return entry;
 }

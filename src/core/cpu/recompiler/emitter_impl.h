@@ -64,7 +64,6 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   const size_t capacity;
   Layout lay{};
   Xbyak::Label* exit = nullptr;  // the block's epilogue
-  Xbyak::Label* exit_after_first = nullptr;  // the same after a segment's first instruction
   // Rarely taken code of the block (a scratchpad access, a store into compiled code, the
   // machine_routine()s), emitted after the whole block so that the main path stays short;
   // labels it jumps to or from live in cold_labels until then.
@@ -139,7 +138,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void icache_fill(u32 pc);
   // block_emitter.cpp
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
-  void native(std::span<const Step> rest, size_t k, bool last_in_block, bool after_branch, Segment& seg);
+  void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void sync_pc(std::span<const Step> run, size_t j);
   void stall_stub(const Step& s, size_t k, Segment& seg);

@@ -124,6 +124,29 @@ TEST(IdleSkip, LoopEnteredWithAnotherBoundIsProvenAgain) {
   EXPECT_EQ(on.s1, 4u);
 }
 
+// Two countdowns taking turns, as a pad transfer's loops polling for each byte and for its
+// acknowledgement do (Tumble's), re-examined after every SPU sample event. Between rounds each
+// meets the other's proof last, and registers neither names have moved on (s1 counts the rounds,
+// t3 toggles). B loads a RAM flag the rounds toggle, so it needs a proof for each value. Without
+// reuse across turns every round makes two proofs (each loop's first examination meets the
+// other's); with it a few serve all rounds.
+TEST(IdleSkip, LoopsTakingTurnsReuseTheirProofs) {
+  const u32 xori_t3 = itype(0x0E, kT3, kT3, 1);
+  std::vector<u32> code = {lui(kT4, 0x8002),                                             // t4: the flag
+                           addiu(kT0, 0, 3000), addiu(kT0, kT0, -1), bne(kT0, 0, -2), kNop,  // 1: A
+                           addiu(kT1, 0, 3000),                                              // 5: B
+                           lw(kT2, 0, kT4), addiu(kT1, kT1, -1), bne(kT1, 0, -3), kNop,
+                           lw(kT3, 0, kT4), kNop, xori_t3, sw(kT3, 0, kT4),  // 10: the flag toggles
+                           addiu(kS1, kS1, 1), j(0x80010004), kNop};
+  Outcome on = compare(code, 0x80010000, true);
+  // A round is 3000 iterations of A (3 cycles each at least) and 3000 of B (4): 21000 cycles and
+  // more, so six frames (3.39 M cycles) hold at most 161 rounds; each round's loops are examined
+  // several times (an event every 768 cycles).
+  EXPECT_GE(on.s1, 20u);
+  EXPECT_GT(on.stats.skips, 4 * on.s1);
+  EXPECT_LT(on.stats.proofs * 10, on.s1);
+}
+
 TEST(IdleSkip, UncachedCodeIsSkippedExactly) {
   std::vector<u32> code = vblank_wait();
   code[15] = j(0xA0010004);
@@ -157,6 +180,21 @@ TEST(IdleSkip, JoystatPollOnStableBitsIsSkipped) {
   code[4] = lw(kT2, 0x1044, kT0);
   code[6] = andi(kT2, kT2, 0x200);  // bit 9, the interrupt request (an /ACK that never comes here)
   EXPECT_GT(compare(code).stats.skips, 0u);
+}
+
+// The same poll with JOY_BAUD set to a pad's rate (0x88), so that the timer bits read otherwise
+// at every examination: the proof knows only the stable bits of the word read, so it serves
+// again after each SPU sample event.
+TEST(IdleSkip, JoystatPollReusesItsProofWhileTheBaudTimerCounts) {
+  std::vector<u32> code = vblank_wait();
+  code[4] = lw(kT2, 0x1044, kT0);
+  code[6] = andi(kT2, kT2, 0x200);
+  code[15] = j(0x8001000C);  // past the two instructions below
+  const u32 sh_t4 = itype(0x29, kT0, kT4, 0x104E);  // sh t4, JOY_BAUD(t0)
+  code.insert(code.begin() + 1, {ori(kT4, 0, 0x88), sh_t4});
+  Outcome on = compare(code, 0x80010000, true);
+  EXPECT_GT(on.stats.skips, 4400u);
+  EXPECT_LT(on.stats.proofs * 100, on.stats.skips);
 }
 
 TEST(IdleSkip, LoopKeepingTheBaudTimerIsNotSkipped) {

@@ -76,9 +76,24 @@ u32 word_at(Bus& bus, u32 loc) {
   return load_le32(loc & kScratchTag ? bus.scratchpad() + (loc & ~kScratchTag) : bus.ram() + loc);
 }
 
+// The proof knows of a load's value only the bits pure_load_bits() gave (IdleProof's partial
+// values): JOY_STAT's baud timer, say, may read otherwise.
 bool same_step(const IdleStep& a, const IdleStep& b) {
-  return a.pc == b.pc && a.instr == b.instr && a.addr == b.addr && a.load_value == b.load_value &&
-         a.load_bits == b.load_bits;
+  return a.pc == b.pc && a.instr == b.instr && a.addr == b.addr && a.load_bits == b.load_bits &&
+         ((a.load_value ^ b.load_value) & a.load_bits) == 0;
+}
+
+// The general registers an instruction names (bit r for register r): rs, rt and rd of SPECIAL,
+// rs and r31 of BcondZ, r31 of JAL, rs and rt of the rest (more than some use, which is safe).
+u32 named_registers(u32 instr) {
+  const u32 op = instr >> 26, rs = 1u << ((instr >> 21) & 31), rt = 1u << ((instr >> 16) & 31);
+  switch (op) {
+    case 0x00: return rs | rt | 1u << ((instr >> 11) & 31);
+    case 0x01: return rs | 1u << 31;
+    case 0x02: return 0;
+    case 0x03: return 1u << 31;
+    default: return rs | rt;
+  }
 }
 
 u32 load_width(u32 instr) {
@@ -187,14 +202,15 @@ bool IdleSkip::examine(Cpu& cpu) {
     if (!proof.run(path_.data(), path_len_)) return false;
     max_k = proof.max_k();
     ++stats_.proofs;
-    proven_.head = head;
-    proven_.len = path_len_;
-    std::copy(path_.begin(), path_.begin() + path_len_, proven_.path.begin());
-    proven_.before = regs0;
-    proven_.line = RegisterLine(regs0, cpu.regs_);
-    proven_.load_reg = cpu.load_reg_;
-    proven_.load_val = cpu.load_val_;
-    proven_.max_k = max_k;
+    Proven* p = &proven_[proven_next_++ % kProofs];
+    p->head = head;
+    p->len = path_len_;
+    std::copy(path_.begin(), path_.begin() + path_len_, p->path.begin());
+    p->before = regs0;
+    p->line = RegisterLine(regs0, cpu.regs_);
+    p->load_reg = cpu.load_reg_;
+    p->load_val = cpu.load_val_;
+    p->max_k = max_k;
   }
 
   // 3. Skip whole iterations, ending before the deadline so the event's iteration is interpreted.
@@ -266,18 +282,23 @@ bool IdleSkip::name_cells(Bus& bus) {
 // before + (k+1)*step. An iteration recorded now that repeats the proven one step for step (the
 // same instructions, load addresses and values, hence the same decisions), adds the same step and
 // leaves the same load in flight, from before + j*step, is the proven iteration j - 1 or the
-// recorded one itself (j = 0); the iterations after it are the proven ones from j on.
+// recorded one itself (j = 0); the iterations after it are the proven ones from j on. A register
+// no instruction of the path names plays no part in the proof, so the loop met again with another
+// value there (a transfer's byte count, say) is still the proven one. A loop can have several
+// proofs (JOY_STAT's /ACK bit read high in one transfer, low in the next).
 bool IdleSkip::reuse_proof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg,
                            u32 load_val, u64& max_k) const {
-  const Proven& p = proven_;
-  if (p.head != path_[0].pc || p.len != path_len_ || p.load_reg != load_reg || p.load_val != load_val)
-    return false;
-  for (u32 i = 0; i < path_len_; ++i)
-    if (!same_step(p.path[i], path_[i])) return false;
-  u32 j;
-  if (!p.line.same_steps(before, after) || !p.line.iterations(p.before, before, j) || j > p.max_k) return false;
-  max_k = p.max_k == ~u64{0} ? p.max_k : p.max_k - j;
-  return true;
+  u32 named = 1;  // r0 is always zero
+  for (u32 i = 0; i < path_len_; ++i) named |= named_registers(path_[i].instr);
+  for (const Proven& p : proven_) {
+    if (p.head != path_[0].pc || p.len != path_len_ || p.load_reg != load_reg || p.load_val != load_val) continue;
+    if (!std::equal(path_.begin(), path_.begin() + path_len_, p.path.begin(), same_step)) continue;
+    u32 j;
+    if (!p.line.same_steps(before, after) || !p.line.iterations(p.before, before, j, ~named) || j > p.max_k) continue;
+    max_k = p.max_k == ~u64{0} ? p.max_k : p.max_k - j;
+    return true;
+  }
+  return false;
 }
 
 }  // namespace psx

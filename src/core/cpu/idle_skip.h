@@ -27,9 +27,10 @@
 //     is skipped; the stored words get the values the last of them would have stored.
 // A loop usually reaches its head again right after the event that ended a skip (the SPU's
 // sample event alone falls due every 768 cycles). Its next recorded iteration then mostly repeats
-// the last one proven, only started further along the same line (a spin counter a few iterations
-// on), and the proof is reused instead of redone: step 2 is most of the cost of an examination.
-// (Not for loops that store: a counter in memory shows in the loads' values, which then differ.)
+// one proven before, only started further along the same line (a spin counter a few iterations
+// on), and that proof is reused instead of redone: step 2 is most of the cost of an examination.
+// The last few proofs are kept, for loops that take turns. (Not for loops that store: a counter
+// in memory shows in the loads' values, which then differ.)
 #pragma once
 #include <array>
 
@@ -99,10 +100,14 @@ class IdleSkip {
     u64 max_k = 0;
   };
   // The bound for the iteration just recorded (path_, from `before` to `after`) taken from the
-  // last proof, when that proof covers it; false when the proof must be made.
+  // proofs made before, when one covers it; false when the proof must be made.
   bool reuse_proof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg,
                    u32 load_val, u64& max_k) const;
-  Proven proven_;
+  // The proofs last made, replaced in turn: a pad transfer's loops polling for each byte and
+  // for its acknowledgement take turns, each with two proofs (reuse_proof()).
+  static constexpr size_t kProofs = 8;
+  std::array<Proven, kProofs> proven_{};
+  size_t proven_next_ = 0;
   // The loop last proven and what one iteration of it costs.
   u32 last_head_ = 1;
   Cycles last_cost_ = 0;

@@ -32,10 +32,11 @@ class RegisterLine {
     return differ == 0;
   }
 
-  // The smallest j with from + j*step == to, if there is one (0 when no register moves).
-  bool iterations(const std::array<u32, 32>& from, const std::array<u32, 32>& to, u32& j) const {
+  // The smallest j with from + j*step == to, if there is one (0 when no register moves); the
+  // registers in `any` (bit r for register r) may differ where their step is zero.
+  bool iterations(const std::array<u32, 32>& from, const std::array<u32, 32>& to, u32& j, u32 any = 0) const {
     u32 differ = 0;
-    for (u32 r = 0; r < 32; ++r) differ |= (from[r] ^ to[r]) & fixed_[r];
+    for (u32 r = 0; r < 32; ++r) differ |= (from[r] ^ to[r]) & fixed_[r] & ((any >> r & 1) - 1);
     if (differ) return false;
     j = 0;
     if (moving_count_ == 0) return true;

@@ -145,14 +145,19 @@ void Impl::arm_hook_ecx() {
   L(skip);
 }
 
+// Where a branch or J/JAL at pc goes when taken (JR and JALR: nowhere known now).
+u32 Impl::static_target(NativeOp op, u32 pc, u32 i) {
+  if (op == NativeOp::J || op == NativeOp::Jal) return ((pc + 4) & 0xF0000000) | ((i & 0x03FFFFFF) << 2);
+  return pc + 4 + (cpu_detail::simm(i) << 2);
+}
+
 // CpuT::execute() for a branch or jump at pc (not in a delay slot, so pc_ = pc + 4 and
 // next_pc_ = pc + 8 now): branch() / loop_branch(), the link (eax) through write_reg, which
 // the BcondZ links make whether or not the branch is taken, after reading rs.
 void Impl::branch(NativeOp op, u32 pc, u32 i) {
   using namespace cpu_detail;
   Label not_taken;
-  const u32 target = op == NativeOp::J || op == NativeOp::Jal ? ((pc + 4) & 0xF0000000) | ((i & 0x03FFFFFF) << 2)
-                                                               : pc + 4 + (simm(i) << 2);
+  const u32 target = static_target(op, pc, i);
   switch (op) {
     case NativeOp::Beq: mov(eax, reg(rs(i))); cmp(eax, reg(rt(i))); jne(not_taken, T_NEAR); break;
     case NativeOp::Bne: mov(eax, reg(rs(i))); cmp(eax, reg(rt(i))); je(not_taken, T_NEAR); break;
@@ -486,7 +491,8 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
 
 // The block's end: RecompilerT::run()'s next loop pass. When it would call the block that
 // find()'s table holds for the pc (no stop, time before the deadline, no idle-loop head to hand
-// to IdleSkip, no written code pages whose blocks must be dropped first), the block jumps there
+// to IdleSkip but one backing off, loop_head_routine(), no written code pages whose blocks must
+// be dropped first), the block jumps there
 // itself, past that block's prologue (kPrologueBytes), in the same frame and with the time and
 // count still in their registers; otherwise it writes them back and returns to the dispatcher,
 // which makes the same checks and does what they ask. A `clean` chain, from a native run that
@@ -511,6 +517,10 @@ void Impl::chain(bool clean) {
   mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
   cmp(byte[rcx], 0);
   jne(back, T_NEAR);
+  if (clean && self_loop) {  // this block is find()'s for its own pc while no code page is written
+    cmp(eax, block_pc);
+    je(block_entry + kCleanEntry);
+  }
   mov(ecx, eax);
   shr(ecx, 2);
   and_(ecx, lay.recent_count - 1);
@@ -681,6 +691,12 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.loop_head_entry = nullptr;
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
+  g.block_pc = steps[0].pc;
+  g.block_entry = g.getCurr();
+  g.self_loop = std::any_of(steps.begin(), steps.end(), [&](const Step& s) {
+    return Impl::is_branch(s.native) && s.native != NativeOp::Jr && s.native != NativeOp::Jalr &&
+           Impl::static_target(s.native, s.pc, s.word) == steps[0].pc;
+  });
   const size_t start = g.getSize();
   g.prologue(layout);
   if (steps[0].native == NativeOp::None) {  // no guard: both chained entries go to the first call

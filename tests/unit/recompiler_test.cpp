@@ -277,6 +277,34 @@ TEST(RecompilerCode, NativeBranches) {
   expect_same_code(code, base, 0, regs, 3);
 }
 
+// Loops of one block that branch back to their own start, which a block runs again without
+// leaving it or checking its guard a second time: a store through a moving pointer (never
+// idle-skipped: it goes on looping past the loop head), a load in the delay slot read at the
+// loop's first instruction (the load still pending there, then in its shadow), and a loop across
+// an i-cache line boundary with a load read at once (a shadow stall) and stores.
+TEST(RecompilerCode, LoopsOfOneBlock) {
+  const u32 base = 0x80010000, kT2 = 10, kT3 = 11, kT4 = 12, kS7 = 23;
+  const auto addiu = [](u32 t, u32 s, u32 imm) { return itype(0x09, s, t, imm); };
+  const auto addu = [](u32 d, u32 s, u32 t) { return rtype(0x21, s, t, d); };
+  const auto bgtz = [](u32 s, u32 off) { return itype(0x07, s, 0, off); };
+  std::vector<u32> code = {
+      addiu(kT2, 0, 200), addu(kT1, kS7, 0),                                  // 0
+      itype(0x2B, kT1, 0, 0), addiu(kT2, kT2, 0xFFFF), bgtz(kT2, 0xFFFD),    // 2: sw zero, 0(t1)
+      addiu(kT1, kT1, 4),                                                     // 5: delay slot
+      addiu(kT2, 0, 300), addu(kT1, kS7, 0),                                  // 6
+      addu(kT3, kT3, kT4), addiu(kT2, kT2, 0xFFFF), bgtz(kT2, 0xFFFD),       // 8: reads t4
+      itype(0x23, kT1, kT4, 0),                                               // 11: lw t4, 0(t1)
+      itype(0x2B, kS7, kT3, 4), addiu(kT2, 0, 100), kNop, kNop, kNop, kNop,   // 12
+      itype(0x23, kS7, kT4, 8), addu(kT3, kT3, kT4),                          // 18: offset 8 of a line
+      rtype(0x26, kT3, kT2, kT3), addiu(kT2, kT2, 0xFFFF), bgtz(kT2, 0xFFFB), // 20: xor t3, t3, t2
+      itype(0x2B, kS7, kT3, 12),                                              // 23: sw t3, 12(s7)
+      j(base), kNop};
+  std::vector<u32> regs(31);
+  for (u32 r = 0; r < 31; ++r) regs[r] = 0x01010101u * (r + 1);
+  regs[kS7 - 1] = 0x80100000;
+  expect_same_code(code, base, 0, regs, 3);
+}
+
 // Cached code entered in the middle of i-cache lines: a miss fills from the fetched word to the
 // line's end (psx-spx "Memory Map", i-Cache), so the loop's first line and the subroutine's
 // line are held only in part, and their hits are as free as on whole lines (native code must

@@ -219,6 +219,7 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, Label* f
       state_checks(fail);
       pad_to(start, kStateCheckBytes, "state checks");
       needs_checks(needs, fail);
+      if (loops_natively) mov(byte[rsp], 0);  // no call since this guard (chain())
       break;
     }
   }
@@ -498,7 +499,14 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
 // which makes the same checks and does what they ask. A `clean` chain, from a native run that
 // reached the block's end, also skips the next block's state_checks() (kCleanEntry): they held
 // when that run started, and of what they check only a hook could have changed since.
-void Impl::chain(bool clean) {
+// A block that is one native segment and branches back to its start (loops_natively) goes, on that
+// branch, straight to its first instruction (`loop`, the segment's resume[0]) past its whole guard
+// when no call was made since the guard passed (the frame's spare byte at rsp says; a load or
+// store made by a call may have written the cache control or raised an interrupt): a native pass
+// through it changes nothing the guard checked but what this chain checks (the time, a stop, a
+// hook, the loop head), and no i-cache line the block uses (a fill stub refills a line with the
+// words compiled; stores leave the i-cache alone).
+void Impl::chain(bool clean, Label* loop) {
   Label back, no_loop_head;
   cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
@@ -518,8 +526,15 @@ void Impl::chain(bool clean) {
   cmp(byte[rcx], 0);
   jne(back, T_NEAR);
   if (clean && self_loop) {  // this block is find()'s for its own pc while no code page is written
+    Label other;
     cmp(eax, block_pc);
-    je(block_entry + kCleanEntry);
+    jne(other);
+    if (loop) {
+      cmp(byte[rsp], 0);
+      je(*loop, T_NEAR);
+    }
+    jmp(block_entry + kCleanEntry, T_NEAR);
+    L(other);
   }
   mov(ecx, eax);
   shr(ecx, 2);
@@ -584,10 +599,11 @@ void Impl::prologue(const Layout& layout) {
   const size_t start = getSize();
   for (const Xbyak::Reg64& r : {rbx, r12, r13, r14, r15, rbp}) push(r);
   sub(rsp, 8);
+  mov(byte[rsp], 1);  // the frame's spare byte: no guard passed yet (chain())
   mov(rbx, reinterpret_cast<u64>(layout.context) + layout.bias);
   mov(r12, reinterpret_cast<u64>(layout.icache_tags));
   reload();
-  pad_to(start, kPrologueBytes, "block prologue");  // at most 57 bytes (the longest encodings)
+  pad_to(start, kPrologueBytes, "block prologue");  // at most 61 bytes (the longest encodings)
 }
 
 void Impl::epilogue() {
@@ -666,6 +682,7 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
   }
   guard(run.subspan(k + 1), seg.slow[k + 1], Checks::routine);
   sub(instructions, int(k + 1));  // native code counts from where it resumes
+  if (loops_natively) mov(byte[rsp], 1);  // a call since the block's guard (chain())
   // Instruction 0 may have been a delay slot whose branch went on to instruction 1, which then
   // is not in one: native code writes in_delay_slot_ at instruction 0 only (or after a branch).
   if (k == 0 && !is_branch(run[0].native)) mov(byte[rbx + lay.in_delay_slot], 0);
@@ -697,6 +714,9 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     return Impl::is_branch(s.native) && s.native != NativeOp::Jr && s.native != NativeOp::Jalr &&
            Impl::static_target(s.native, s.pc, s.word) == steps[0].pc;
   });
+  g.loops_natively = g.self_loop && std::all_of(steps.begin(), steps.end(), [](const Step& s) {
+    return s.native != NativeOp::None;
+  });
   const size_t start = g.getSize();
   g.prologue(layout);
   if (steps[0].native == NativeOp::None) {  // no guard: both chained entries go to the first call
@@ -727,7 +747,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     }
     g.add(g.instructions, int(seg.count));
     g.sync_pc(run, seg.count - 1);
-    if (i == steps.size()) g.chain(true);  // the block's native end
+    if (i == steps.size()) g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr);  // the block's native end
     g.L(seg.end);
   }
   g.L(done);

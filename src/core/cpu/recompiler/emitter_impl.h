@@ -145,12 +145,13 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
-  void chain(bool clean);
+  void chain(bool clean, Xbyak::Label* loop = nullptr);
   // The block being emitted: its pc, its entry, and whether a branch of it goes back there (a
   // clean chain() then tries its own clean entry first).
   u32 block_pc = 0;
   const Xbyak::uint8* block_entry = nullptr;
   bool self_loop = false;
+  bool loops_natively = false;  // self_loop, and every step native: one segment
   static u32 static_target(NativeOp op, u32 pc, u32 i);
   Xbyak::Label& loop_head_routine();
   Xbyak::Label* loop_head_entry = nullptr;  // this block's loop_head_routine(), once emitted

@@ -109,7 +109,7 @@ u32 load_width(u32 instr) {
 
 IdleSkip::BackoffCells IdleSkip::backoff_cells() {
   static_assert(std::is_standard_layout_v<IdleSkip> && sizeof(Backoff) == kBackoffBytes &&
-                offsetof(Backoff, head) == 0 && offsetof(Backoff, visits) == 4);
+                offsetof(Backoff, head) == 0 && offsetof(Backoff, visits) == kBackoffVisits);
   return {int(offsetof(IdleSkip, last_head_)), int(offsetof(IdleSkip, backoff_))};
 }
 

@@ -69,7 +69,7 @@ class IdleSkip {
   struct BackoffCells {
     int last_head, table;
   };
-  static constexpr u32 kBackoffEntries = 64, kBackoffBytes = 12;
+  static constexpr u32 kBackoffEntries = 64, kBackoffBytes = 12, kBackoffVisits = 4;  // visits' offset
   static BackoffCells backoff_cells();
 
  private:

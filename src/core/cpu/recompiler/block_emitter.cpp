@@ -493,12 +493,12 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
 // The block's end: RecompilerT::run()'s next loop pass. When it would call the block that
 // find()'s table holds for the pc (no stop, time before the deadline, no idle-loop head to hand
 // to IdleSkip but one backing off, loop_head_routine(), no written code pages whose blocks must
-// be dropped first), the block jumps there
-// itself, past that block's prologue (kPrologueBytes), in the same frame and with the time and
-// count still in their registers; otherwise it writes them back and returns to the dispatcher,
-// which makes the same checks and does what they ask. A `clean` chain, from a native run that
-// reached the block's end, also skips the next block's state_checks() (kCleanEntry): they held
-// when that run started, and of what they check only a hook could have changed since.
+// be dropped first), the block jumps there itself, past that block's prologue (kPrologueBytes),
+// in the same frame and with the time and count still in their registers; otherwise it writes
+// them back and returns to the dispatcher, which makes the same checks and does what they ask. A
+// `clean` chain, from a native run that reached the block's end, also skips the next block's
+// state_checks() (kCleanEntry): they held when that run started, and of what they check only a
+// hook could have changed since.
 // A block that is one native segment and branches back to its start (loops_natively) goes, on that
 // branch, straight to its first instruction (`loop`, the segment's resume[0]) past its whole guard
 // when no call was made since the guard passed (the frame's spare byte at rsp says; a load or
@@ -576,9 +576,10 @@ Label& Impl::loop_head_routine() {
       add(rdx, rcx);
       cmp(dword[rdx + lay.idle_backoff], eax);  // the entry's head
       jne(refuse);
-      cmp(dword[rdx + lay.idle_backoff + 4], 0);  // its visits left before the next examination
+      const Xbyak::Address visits = dword[rdx + lay.idle_backoff + IdleSkip::kBackoffVisits];
+      cmp(visits, 0);  // left before the next examination
       je(refuse);
-      sub(dword[rdx + lay.idle_backoff + 4], 1);
+      sub(visits, 1);
       mov(cpu32(lay.loop_head), lay.no_loop_head);
       cmp(eax, eax);  // ZF set
       L(done);

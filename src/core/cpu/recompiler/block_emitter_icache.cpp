@@ -1,6 +1,7 @@
 // The i-cache side of compiled blocks (emitter_impl.h): the line checks that let native code
 // run only from i-cache hits still holding the compiled words, and the fills native code makes
 // itself on a miss in RAM, as Bus::fetch_slow() and ICache::fill() make them.
+#include "core/bus.h"
 #include "core/cpu/icache.h"
 #include "core/cpu/recompiler/code_pages.h"
 #include "core/cpu/recompiler/emitter_impl.h"
@@ -11,18 +12,18 @@ using Xbyak::Label;
 using Impl = BlockEmitter::Impl;
 
 // The i-cache check for the words of `run` on its first word's line: the line's tag must be the
-// code's physical address (KUSEG as it is, KSEG0 less bit 31) with those words' valid bits set
-// (ICache::hit()), and each must be the word compiled.
+// code's physical address (Bus::physical(), as Bus::fetch() tags it) with those words' valid bits
+// set (ICache::hit()), and each must be the word compiled.
 void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label* filled) {
-  const u32 line = run[0].pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
+  const u32 line = run[0].pc & ~15u, tag_bits = Bus::physical(line) & ICache::kTagMask;
   u32 need = 0;
-  for (size_t n = 0; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ((run[n].pc >> 2) & 3);
+  for (size_t n = 0; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ICache::word(run[n].pc);
   const Xbyak::Address tag = icache_tag(line);
   if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
-    cmp(tag, (phys & ICache::kTagMask) | 0xF);
+    cmp(tag, tag_bits | 0xF);
   } else {
     mov(eax, tag);
-    xor_(eax, (phys & ICache::kTagMask) | need);
+    xor_(eax, tag_bits | need);
     test(eax, ICache::kTagMask | need);
   }
   jnz(fill ? *fill : fail, T_NEAR);
@@ -31,10 +32,10 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
 }
 
 // The i-cache tag of `line` (an address's line) and where its four words begin, from r12.
-Xbyak::Address Impl::icache_tag(u32 line) { return dword[r12 + int(4 * ((line >> 4) & 255))]; }
+Xbyak::Address Impl::icache_tag(u32 line) { return dword[r12 + int(4 * ICache::line(line))]; }
 
 Xbyak::RegExp Impl::icache_words(u32 line) const {
-  const auto at = reinterpret_cast<const char*>(&lay.icache_words[(line >> 2) & 1020]) -
+  const auto at = reinterpret_cast<const char*>(&lay.icache_words[4 * ICache::line(line)]) -
                   reinterpret_cast<const char*>(lay.icache_tags);
   return r12 + int(at);
 }
@@ -49,7 +50,7 @@ void Impl::line_words(std::span<const Step> run, Label& fail, const Xbyak::RegEx
   while (n < run.size() && (run[n].pc & ~15u) == line) ++n;
   if (n < 3) {
     for (size_t k = 0; k < n; ++k) {
-      cmp(dword[at + int(4 * ((run[k].pc >> 2) & 3))], run[k].word);
+      cmp(dword[at + int(4 * ICache::word(run[k].pc))], run[k].word);
       jne(fail, T_NEAR);
     }
     return;
@@ -57,7 +58,7 @@ void Impl::line_words(std::span<const Step> run, Label& fail, const Xbyak::RegEx
   std::array<u32, 4> words{};
   u32 lanes = 0;  // pmovmskb's bits: four per word
   for (size_t k = 0; k < n; ++k) {
-    const u32 w = (run[k].pc >> 2) & 3;
+    const u32 w = ICache::word(run[k].pc);
     words[w] = run[k].word;
     lanes |= 0xFu << (4 * w);
   }
@@ -90,8 +91,7 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
 // replaced from pc's word to the line's end; fetch_hit()'s table then names the line where all
 // four words are valid. Leaves the words read in eax.
 void Impl::icache_fill(u32 pc) {
-  const u32 line = pc & ~15u, phys = line < 0x80000000 ? line : line & 0x7FFFFFFF;
-  const u32 first = (pc >> 2) & 3, tag = phys & ICache::kTagMask;
+  const u32 line = pc & ~15u, first = ICache::word(pc), tag = Bus::physical(line) & ICache::kTagMask;
   const Xbyak::Address tag_at = icache_tag(line);
   const Xbyak::RegExp words = icache_words(line);
   Label other, done;
@@ -114,7 +114,7 @@ void Impl::icache_fill(u32 pc) {
   mov(edx, first == 0 ? line : lay.no_hot_line);
   mov(ecx, 4 - first);
   L(done);
-  mov(rax, reinterpret_cast<u64>(&lay.hot_lines[(line >> 4) & 255]));
+  mov(rax, reinterpret_cast<u64>(&lay.hot_lines[ICache::line(line)]));
   mov(dword[rax], edx);
   mov(eax, ecx);
 }

@@ -203,8 +203,9 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.stop = cpu_at(&c.stop_);
   l.hook_armed = cpu_at(&c.hook_armed_);
   l.idle_skip = cpu_at(&c.idle_skip_);
-  l.idle_last_head = IdleSkip::backoff_cells().last_head;
-  l.idle_backoff = IdleSkip::backoff_cells().table;
+  const IdleSkip::BackoffCells backoff = IdleSkip::backoff_cells();
+  l.idle_last_head = backoff.last_head;
+  l.idle_backoff = backoff.table;
   l.no_loop_head = Cpu::kNoLoopHead;
   l.hooks = cpu_at(&c.hooks_);
   l.hook_pc = cpu_at(&c.hook_pc_);

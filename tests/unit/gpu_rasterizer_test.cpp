@@ -149,6 +149,52 @@ TEST_F(GpuTest, DitherClampsAtChannelLimits) {
   EXPECT_EQ(px(2, 1), rgb15(0, 31, 0));  // dither +3: red 5 -> 0, green 258 -> 255 -> 31
 }
 
+TEST_F(GpuTest, GouraudRowsStartingAtAnyColumn) {
+  // Red 0 at x = 5, 248 at x = 36: dR/dx = 8, so pixel x has 5-bit red x - 5 (no dither). Rows
+  // of 31 pixels from column 5: whole groups of eight pixels and a last group of seven.
+  gp0({0x38000000, xy(5, 0), 0x0000F8, xy(36, 0), 0x000000, xy(5, 3), 0x0000F8, xy(36, 3)});
+  for (u32 y = 0; y < 3; ++y) {
+    EXPECT_EQ(px(4, y), 0) << y;
+    for (u32 x = 5; x < 36; ++x) EXPECT_EQ(px(x, y), rgb15(x - 5, 0, 0)) << x << "," << y;
+    EXPECT_EQ(px(36, y), 0) << y;
+  }
+}
+
+TEST_F(GpuTest, GouraudRowsKeepMaskedPixelsAndDitherByColumn) {
+  // Pixels with bit 15 (set by GP0(A0) data) in the path of a dithered Gouraud quad of constant
+  // 66 from x = 3 to 21 (18 pixels: two groups of eight and two more), drawn with the mask
+  // check on: those stay, every other pixel is (66 + dither[y & 3][x & 3]) >> 3 with bit 15
+  // clear (GP0(E6) bit 0 off).
+  gp0({0xE1000000 | (1 << 9)});
+  poke(3, 0, 0x8001), poke(10, 1, 0x8002), poke(19, 2, 0x8003), poke(20, 3, 0x8004);
+  gp0({0xE6000002});
+  gp0({0x38424242, xy(3, 0), 0x424242, xy(21, 0), 0x424242, xy(3, 4), 0x424242, xy(21, 4)});
+  EXPECT_EQ(px(3, 0), 0x8001);
+  EXPECT_EQ(px(10, 1), 0x8002);
+  EXPECT_EQ(px(19, 2), 0x8003);
+  EXPECT_EQ(px(20, 3), 0x8004);
+  for (u32 y = 0; y < 4; ++y)
+    for (u32 x = 3; x < 21; ++x) {
+      if ((x == 3 && y == 0) || (x == 10 && y == 1) || (x == 19 && y == 2) || (x == 20 && y == 3)) continue;
+      u32 c = static_cast<u32>(66 + kDither[y & 3][x & 3]) >> 3;
+      EXPECT_EQ(px(x, y), rgb15(c, c, c)) << x << "," << y;
+    }
+  EXPECT_EQ(px(21, 0), 0);
+}
+
+TEST_F(GpuTest, GouraudRowsEndAtTheLastVramColumn) {
+  // Green 0 at x = 1000, 184 at x = 1023 (dG/dx = 8): pixel x has 5-bit green x - 1000, up to
+  // column 1022 (the right edge is left out), with GP0(E6) bit 0 setting bit 15 on each. The
+  // rows are VRAM's last two, so a group of eight pixels read past the row's end would fall
+  // outside VRAM (the sanitizer build reports that).
+  gp0({0xE6000001});
+  gp0({0x38000000, xy(1000, 510), 0x00B800, xy(1023, 510), 0x000000, xy(1000, 512), 0x00B800, xy(1023, 512)});
+  for (u32 y = 510; y < 512; ++y) {
+    for (u32 x = 1000; x < 1023; ++x) EXPECT_EQ(px(x, y), 0x8000 | rgb15(0, x - 1000, 0)) << x << "," << y;
+    EXPECT_EQ(px(1023, y), 0) << y;
+  }
+}
+
 TEST_F(GpuTest, LinesIncludeBothEndpoints) {
   gp0({0x40000000 | kWhite, xy(0, 0), xy(5, 0)});
   for (u32 x = 0; x <= 5; ++x) EXPECT_EQ(px(x, 0), kWhite15);

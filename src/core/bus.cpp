@@ -206,6 +206,13 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
   return false;
 }
 
+bool Bus::write_io(u32 vaddr, u32 v, u32 width) {
+  const u32 p = physical(vaddr);
+  if (p < kIoBase || p >= kIoEnd) return false;
+  io_write(p, v, width);
+  return true;
+}
+
 void Bus::set_cache_control(u32 v) {
   cache_control_ = v;
   hot_lines_.fill(kNoLine);

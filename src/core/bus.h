@@ -102,6 +102,10 @@ class Bus {
   bool write32(u32 vaddr, u32 v) { return write(vaddr, v, 4); }
   bool write16(u32 vaddr, u32 v) { return write(vaddr, v, 2); }
   bool write8(u32 vaddr, u32 v) { return write(vaddr, v, 1); }
+  // A CPU store of `width` bytes (v holds only those) as write() makes it when vaddr lies in the
+  // I/O region (physical 1F801000h-1F802FFFh); false, with nothing written, anywhere else. For
+  // the recompiler's store calls, whose native code makes the RAM and scratchpad stores itself.
+  bool write_io(u32 vaddr, u32 v, u32 width);
 
   // Maps a block's registers into the I/O region (physical 0x1F801000-0x1F802FFF, 16-byte units).
   void map_io(u32 phys_base, u32 size, IoDevice* dev);

@@ -2,11 +2,12 @@
 // differentially: every program must end in exactly the state (RAM, scratchpad, devices, CPU
 // registers and pipeline, COP0, cycle and instruction counts) it ends in under the interpreter.
 // Random streams make accesses through every address kind the native code tells apart: RAM in
-// KSEG0, KSEG1 and a KUSEG mirror, the scratchpad, timer registers (I/O), expansion region 1 and
-// wild addresses (bus errors), aligned and not (address errors), stores into their own code,
-// with SR switching between kernel mode, an isolated cache and user mode, and DCIC data breaks
-// armed or not. Named cases pin down the load delay slot and shadow, sign extension, LWL/LWR
-// merging, the HI/LO wait after MULT and DIV, and BcondZ links.
+// KSEG0, KSEG1 and a KUSEG mirror, the scratchpad, timer registers (I/O, through KUSEG and
+// KSEG1, which user mode may not reach), expansion region 1 and wild addresses (bus errors),
+// aligned and not (address errors), stores into their own code, with SR switching between
+// kernel mode, an isolated cache and user mode, and DCIC data breaks armed or not. Named cases
+// pin down the load delay slot and shadow, sign extension, LWL/LWR merging, the HI/LO wait
+// after MULT and DIV, and BcondZ links.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -27,7 +28,7 @@ constexpr u32 kBase = 0x80010000;
 constexpr u32 kT2 = 10, kT3 = 11, kAt = 1, kRa = 31;
 // Base registers, never written by the streams.
 constexpr u32 kRamK0 = 23, kScratch = 22, kTimers = 21, kRamK1 = 20, kRamKuseg = 19, kCode = 18, kExp1 = 30;
-constexpr u32 kScratchK1 = 27, kKseg2 = 28;
+constexpr u32 kScratchK1 = 27, kKseg2 = 28, kTimersK1 = 24;
 
 std::vector<u32> memory_regs(u32 seed) {
   std::vector<u32> regs = random_regs(seed);
@@ -40,6 +41,7 @@ std::vector<u32> memory_regs(u32 seed) {
   regs[kExp1 - 1] = 0x1F000000;
   regs[kScratchK1 - 1] = 0xBF800000;  // the scratchpad's addresses in KSEG1: a bus error
   regs[kKseg2 - 1] = 0xC0000000;      // KSEG2 (only the cache control register is there)
+  regs[kTimersK1 - 1] = 0xBF801100;   // the timers in KSEG1: an address error in user mode
   return regs;
 }
 
@@ -62,7 +64,7 @@ std::pair<u32, u32> random_address(std::mt19937& rng, u32 width, bool store, u32
   u32 base, off;
   if (kind < 5) base = kRamK0, off = rng() & 0x3FF;
   else if (kind < 8) base = kScratch, off = rng() & 0x3FF;
-  else if (kind < 9) base = kTimers, off = rng() & 0x2F;
+  else if (kind < 9) base = rng() % 2 ? kTimers : kTimersK1, off = rng() & 0x2F;
   else if (kind < 10) base = kRamK1, off = rng() & 0x3FF;
   else if (kind < 11) base = kRamKuseg, off = rng() & 0x3FF;
   else if (kind < 12) base = kExp1, off = rng() & 0xFF;

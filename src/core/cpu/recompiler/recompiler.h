@@ -73,6 +73,8 @@ class RecompilerT {
   static bool step_fast(void* cpu, u32 pc, u32 word);
   template <NativeOp K>
   static void exec(Cpu& c, u32 instr);
+  template <NativeOp K>
+  static void store_call(Cpu& c, u32 instr);
 
   BusT& bus_;
   CodePages pages_;

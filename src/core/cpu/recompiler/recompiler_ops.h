@@ -73,8 +73,8 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
   }
 }
 
-// The semantics of CpuT::execute() for the ALU instructions with a call step of their own
-// (step_for()); the others through CpuT::execute() itself (cpu_execute.h).
+// The semantics of CpuT::execute() for the ALU instructions and the stores with a call step of
+// their own (step_for()); the others through CpuT::execute() itself (cpu_execute.h).
 template <class BusT>
 template <NativeOp K>
 void RecompilerT<BusT>::exec(Cpu& c, u32 i) {
@@ -98,7 +98,25 @@ void RecompilerT<BusT>::exec(Cpu& c, u32 i) {
   else if constexpr (K == NativeOp::Nor) c.write_reg(rd(i), ~(s | t));
   else if constexpr (K == NativeOp::Slt) c.write_reg(rd(i), s32(s) < s32(t));
   else if constexpr (K == NativeOp::Sltu) c.write_reg(rd(i), s < t);
+  else if constexpr (K == NativeOp::Sw || K == NativeOp::Sh || K == NativeOp::Sb) store_call<K>(c, i);
   else c.execute(i);
+}
+
+// A store's call. The native code makes RAM and scratchpad stores itself, so a store that calls
+// is mostly one to an I/O port (GP0, the SPU's registers). CpuT::store() checks the alignment,
+// user mode, DCIC's data break and the isolated cache, then goes through Bus::write(): where
+// none of those checks can apply, an I/O store goes straight to its port. The rest, and stores
+// to any other region, run as CpuT::execute().
+template <class BusT>
+template <NativeOp K>
+void RecompilerT<BusT>::store_call(Cpu& c, u32 i) {
+  using namespace cpu_detail;
+  constexpr u32 width = K == NativeOp::Sw ? 4 : K == NativeOp::Sh ? 2 : 1;
+  constexpr u32 mask = width == 4 ? 0xFFFFFFFF : (1u << (width * 8)) - 1;
+  const u32 addr = c.regs_[rs(i)] + simm(i);
+  const bool plain = (addr & (width - 1)) == 0 && !(c.cop0_.sr & (Cop0::kKUc | Cop0::kIsC)) &&
+                     !(c.cop0_.dcic & Cop0::kDcicDAE);
+  if (!plain || !c.bus_.write_io(addr, c.regs_[rt(i)] & mask, width)) c.execute(i);
 }
 
 // The checks at the top of CpuT::run()'s loop and CpuT::step(): whether the step can run the
@@ -267,7 +285,7 @@ BlockEmitter::StepFn RecompilerT<BusT>::step_for(u32 word) {
       PSXRL_REC_OP(Addiu) PSXRL_REC_OP(Slti) PSXRL_REC_OP(Sltiu) PSXRL_REC_OP(Andi) PSXRL_REC_OP(Ori)
       PSXRL_REC_OP(Xori) PSXRL_REC_OP(Lui) PSXRL_REC_OP(Sll) PSXRL_REC_OP(Srl) PSXRL_REC_OP(Sra)
       PSXRL_REC_OP(Addu) PSXRL_REC_OP(Subu) PSXRL_REC_OP(And) PSXRL_REC_OP(Or) PSXRL_REC_OP(Xor)
-      PSXRL_REC_OP(Nor) PSXRL_REC_OP(Slt) PSXRL_REC_OP(Sltu)
+      PSXRL_REC_OP(Nor) PSXRL_REC_OP(Slt) PSXRL_REC_OP(Sltu) PSXRL_REC_OP(Sb) PSXRL_REC_OP(Sh) PSXRL_REC_OP(Sw)
 #undef PSXRL_REC_OP
       default: return &step_fast<NativeOp::None>;  // CpuT::execute() without fetch and decode
     }

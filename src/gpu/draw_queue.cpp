@@ -101,7 +101,7 @@ void DrawQueue::write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m
   push(c);
 }
 
-void DrawQueue::push(DrawCommand c) {
+void DrawQueue::push(DrawCommand& c) {
   c.write = c.write_rect();
   if (!deferred_) return execute(c, true);
   queue_.push_back(c);

@@ -54,7 +54,7 @@ class DrawQueue {
   void drop();
 
  private:
-  void push(DrawCommand c);
+  void push(DrawCommand& c);  // fills in c.write, then draws c or queues a copy
   void execute(const DrawCommand& c, bool after_frame);
   void convert_frame();
   void prune(const Rect& cover, size_t end);

@@ -80,8 +80,8 @@ Rect DrawCommand::write_rect() const {
       return clip({r.x, r.y, r.x + static_cast<s32>(r.width), r.y + static_cast<s32>(r.height)}, area_rect(ds));
     }
     case Kind::Fill:
-    case Kind::Copy: return wrapped_block(x, y, width, height);
-    case Kind::Row: return wrapped_block(x, y, width, 1);
+    case Kind::Copy: return wrapped_block(block.x, block.y, block.width, block.height);
+    case Kind::Row: return wrapped_block(block.x, block.y, block.width, 1);
   }
   return {};
 }
@@ -102,11 +102,11 @@ u32 DrawCommand::read_rects(Rect out[3]) const {
       return n;
     case Kind::Fill: return 0;
     case Kind::Copy:
-      out[n++] = wrapped_block(sx, sy, width, height);
-      if (mask.check) out[n++] = write_rect();
+      out[n++] = wrapped_block(block.sx, block.sy, block.width, block.height);
+      if (block.mask.check) out[n++] = write_rect();
       return n;
     case Kind::Row:
-      if (mask.check) out[n++] = write_rect();
+      if (block.mask.check) out[n++] = write_rect();
       return n;
   }
   return n;
@@ -114,9 +114,9 @@ u32 DrawCommand::read_rects(Rect out[3]) const {
 
 Rect DrawCommand::overwrite_rect() const {
   if (kind == Kind::Fill) {
-    const Rect r = wrapped_block(x, y, width, height);
+    const Rect r = wrapped_block(block.x, block.y, block.width, block.height);
     // A fill that wraps covers two pieces, not the superset wrapped_block gives.
-    const bool whole = r.x1 - r.x0 == static_cast<s32>(width) && r.y1 - r.y0 == static_cast<s32>(height);
+    const bool whole = r.x1 - r.x0 == static_cast<s32>(block.width) && r.y1 - r.y0 == static_cast<s32>(block.height);
     return whole ? r : Rect{};
   }
   if (kind == Kind::Rectangle && !rectangle.textured && !rectangle.semi && !ds.check_mask && ds.skip_row_parity < 0)

@@ -28,24 +28,35 @@ struct Rect {
 // the whole VRAM where it wraps (a superset, for write and read rectangles).
 Rect wrapped_block(u32 x, u32 y, u32 width, u32 height);
 
-struct DrawCommand {
-  enum class Kind : u8 { Triangle, Line, Rectangle, Fill, Copy, Row };
-  Kind kind = Kind::Fill;
-  DrawState ds;  // Triangle, Line, Rectangle
-  Triangle triangle;
-  Line line;
-  Rectangle rectangle;
-  // Fill: x, y, width, height, pixel. Copy: src (sx, sy) to (x, y), width x height, mask.
-  // Row: width pixels at (x, y) from the queue's pixel store at `pixels`, mask.
+// The VRAM operations' parameters. Fill: x, y, width, height, pixel. Copy: src (sx, sy) to
+// (x, y), width x height, mask. Row: width pixels at (x, y) from the queue's pixel store at
+// `pixels`, mask.
+struct VramBlock {
   u32 x = 0, y = 0, width = 0, height = 0, sx = 0, sy = 0;
   u16 pixel = 0;
   MaskMode mask;
   u32 pixels = 0;
+};
+
+struct DrawCommand {
+  enum class Kind : u8 { Triangle, Line, Rectangle, Fill, Copy, Row };
+  Kind kind = Kind::Fill;
+  DrawState ds;  // Triangle, Line, Rectangle
+  // The call's parameters, by kind: queued calls are copied a lot (kept, compacted), so only one
+  // kind's take room, and every reader checks `kind` first.
+  union {
+    Triangle triangle;
+    Line line;
+    Rectangle rectangle;
+    VramBlock block;  // Fill, Copy, Row
+  };
   // Set by the queue: write_rect(), computed once (pruning asks for it often), and what this
   // call (with the next one, for a triangle pair) surely replaces.
   Rect write;
   Rect cover;
   bool cover_with_next = false;
+
+  DrawCommand() : block() {}
 
   Rect write_rect() const;
   // Up to three rectangles of VRAM whose contents change what the command writes; returns the count.

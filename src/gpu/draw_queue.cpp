@@ -76,27 +76,28 @@ void DrawQueue::rectangle(const Rectangle& r, const DrawState& ds) {
 
 void DrawQueue::fill(u32 x, u32 y, u32 width, u32 height, u16 pixel) {
   DrawCommand c;
-  c.kind = DrawCommand::Kind::Fill, c.x = x, c.y = y, c.width = width, c.height = height, c.pixel = pixel;
+  c.kind = DrawCommand::Kind::Fill, c.block.x = x, c.block.y = y, c.block.width = width, c.block.height = height;
+  c.block.pixel = pixel;
   push(c);
 }
 
 void DrawQueue::copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 height, MaskMode m) {
   DrawCommand c;
-  c.kind = DrawCommand::Kind::Copy, c.sx = src_x, c.sy = src_y, c.x = dst_x, c.y = dst_y;
-  c.width = width, c.height = height, c.mask = m;
+  c.kind = DrawCommand::Kind::Copy, c.block.sx = src_x, c.block.sy = src_y, c.block.x = dst_x, c.block.y = dst_y;
+  c.block.width = width, c.block.height = height, c.block.mask = m;
   push(c);
 }
 
 void DrawQueue::write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m) {
   DrawCommand c;
-  c.kind = DrawCommand::Kind::Row, c.x = x, c.y = y, c.width = count, c.mask = m;
+  c.kind = DrawCommand::Kind::Row, c.block.x = x, c.block.y = y, c.block.width = count, c.block.mask = m;
   if (!deferred_) {
     // Drawn now: the pixels need not be kept (execute reads them from `pixels`).
     if (frame_pending_ && c.write_rect().intersects(frame_rect_)) convert_frame();
     target_->write_row(x, y, pixels, count, m);
     return;
   }
-  c.pixels = static_cast<u32>(pixels_.size());
+  c.block.pixels = static_cast<u32>(pixels_.size());
   pixels_.insert(pixels_.end(), pixels, pixels + count);
   push(c);
 }
@@ -124,13 +125,14 @@ void DrawQueue::push(DrawCommand& c) {
 void DrawQueue::execute(const DrawCommand& c, bool after_frame) {
   if (frame_pending_ && after_frame && c.write.intersects(frame_rect_)) convert_frame();
   using Kind = DrawCommand::Kind;
+  const VramBlock& b = c.block;  // read only for the kinds that have one
   switch (c.kind) {
     case Kind::Triangle: return target_->draw_triangle(c.triangle, c.ds);
     case Kind::Line: return target_->draw_line(c.line, c.ds);
     case Kind::Rectangle: return target_->draw_rectangle(c.rectangle, c.ds);
-    case Kind::Fill: return target_->fill(c.x, c.y, c.width, c.height, c.pixel);
-    case Kind::Copy: return target_->copy(c.sx, c.sy, c.x, c.y, c.width, c.height, c.mask);
-    case Kind::Row: return target_->write_row(c.x, c.y, pixels_.data() + c.pixels, c.width, c.mask);
+    case Kind::Fill: return target_->fill(b.x, b.y, b.width, b.height, b.pixel);
+    case Kind::Copy: return target_->copy(b.sx, b.sy, b.x, b.y, b.width, b.height, b.mask);
+    case Kind::Row: return target_->write_row(b.x, b.y, pixels_.data() + b.pixels, b.width, b.mask);
   }
 }
 
@@ -201,9 +203,10 @@ void DrawQueue::compact() {
     DrawCommand& c = queue_[i];  // changed in place, then copied once, only if it moves
     if (c.cover_with_next && !keep_[i + 1]) c.cover = {}, c.cover_with_next = false;
     if (c.kind == DrawCommand::Kind::Row) {
-      std::copy(pixels_.begin() + c.pixels, pixels_.begin() + c.pixels + c.width, pixels_.begin() + pixels_out);
-      c.pixels = pixels_out;
-      pixels_out += c.width;
+      VramBlock& b = c.block;
+      std::copy(pixels_.begin() + b.pixels, pixels_.begin() + b.pixels + b.width, pixels_.begin() + pixels_out);
+      b.pixels = pixels_out;
+      pixels_out += b.width;
     }
     if (out != i) queue_[out] = c;
     ++out;

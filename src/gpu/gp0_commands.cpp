@@ -81,12 +81,12 @@ void Gpu::gp0_execute() {
   }
 }
 
-gpu::Vertex Gpu::decode_vertex(u32 xy) const {
-  gpu::Vertex v;
+// Sets v's position in place (filling a vertex field by field and then copying it whole would
+// read back the fresh stores at another width, which store forwarding cannot serve).
+void Gpu::set_position(gpu::Vertex& v, u32 xy) const {
   // Vertex coordinates are 11-bit signed (-1024..+1023); the drawing offset is added to them.
   v.x = sign_extend11(xy) + offset_x_;
   v.y = sign_extend11(xy >> 16) + offset_y_;
-  return v;
 }
 
 // GP0(20)-(3F): bit 4 Gouraud, 3 quad, 2 textured, 1 semi-transparent, 0 raw texture.
@@ -98,7 +98,7 @@ void Gpu::gp0_polygon() {
   u32 clut = 0, texpage = 0, i = 1;
   for (u32 k = 0; k < corners; ++k) {
     u32 colour = (shaded && k > 0) ? fifo_[i++] : fifo_[0];
-    v[k] = decode_vertex(fifo_[i++]);
+    set_position(v[k], fifo_[i++]);
     set_colour(v[k], colour);
     if (!textured) continue;
     u32 uv = fifo_[i++];
@@ -130,9 +130,9 @@ void Gpu::gp0_line() {
   const u32 c = fifo_[0] >> 24;
   gpu::Line l;
   l.shaded = c & 0x10, l.semi = c & 0x02;
-  l.v[0] = decode_vertex(fifo_[1]);
+  set_position(l.v[0], fifo_[1]);
   set_colour(l.v[0], fifo_[0]);
-  l.v[1] = decode_vertex(fifo_[l.shaded ? 3 : 2]);
+  set_position(l.v[1], fifo_[l.shaded ? 3 : 2]);
   set_colour(l.v[1], fifo_[l.shaded ? 2 : 0]);
   draw_.line(l, draw_state());
   if (!(c & 0x08)) return;
@@ -158,7 +158,7 @@ void Gpu::gp0_polyline_word(u32 word) {
   gpu::Line l;
   l.shaded = polyline_shaded_, l.semi = polyline_semi_;
   l.v[0] = polyline_last_;
-  l.v[1] = decode_vertex(word);
+  set_position(l.v[1], word);
   set_colour(l.v[1], polyline_colour_);
   draw_.line(l, draw_state());
   polyline_last_ = l.v[1];
@@ -168,7 +168,8 @@ void Gpu::gp0_polyline_word(u32 word) {
 void Gpu::gp0_rectangle() {
   const u32 c = fifo_[0] >> 24;
   gpu::Rectangle r;
-  gpu::Vertex p = decode_vertex(fifo_[1]);
+  gpu::Vertex p;
+  set_position(p, fifo_[1]);
   r.x = p.x, r.y = p.y;
   r.r = static_cast<u8>(fifo_[0]), r.g = static_cast<u8>(fifo_[0] >> 8), r.b = static_cast<u8>(fifo_[0] >> 16);
   r.textured = c & 0x04, r.semi = c & 0x02, r.raw = c & 0x01;

@@ -107,7 +107,7 @@ class Gpu final : public IoDevice, public DmaPort {
   void gp0_mask_bit(u32 word);
   void gp0_irq();
   void upload_pixels(const u16* pixels, u32 count);
-  gpu::Vertex decode_vertex(u32 xy) const;
+  void set_position(gpu::Vertex& v, u32 xy) const;
   void update_draw_state();
   const gpu::DrawState& draw_state();
 

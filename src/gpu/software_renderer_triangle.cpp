@@ -4,14 +4,12 @@
 // bottom edges are left out, so quads sharing an edge never overlap). Colours and texture
 // coordinates are affine planes over the screen, stepped with 12 fraction bits and a half-unit
 // bias at the top vertex like the hardware's interpolators; no perspective correction.
-#include <emmintrin.h>  // SSE2, part of x86-64 (the recompiler already requires that host)
-
 #include <algorithm>
-#include <cstring>
 #include <utility>
 
 #include "gpu/software_renderer.h"
 #include "gpu/software_renderer_pixel.h"
+#include "gpu/software_renderer_rows.h"
 #include "gpu/triangle_setup.h"
 
 namespace psx::gpu {
@@ -23,88 +21,6 @@ inline s32 attribute_at(s32 base, const Gradient& g, s32 dx, s32 dy) {
 }
 
 inline u32 channel(s32 fixed) { return static_cast<u32>(std::clamp(fixed >> kFrac, 0, 255)); }
-
-// The dither offsets (kDitherMatrix) of eight pixels in a row from x: [y & 3][x & 3][lane].
-struct DitherLanes {
-  alignas(16) s16 v[4][4][8];
-};
-constexpr DitherLanes make_dither_lanes() {
-  DitherLanes t{};
-  for (int y = 0; y < 4; ++y)
-    for (int x = 0; x < 4; ++x)
-      for (int i = 0; i < 8; ++i) t.v[y][x][i] = kDitherMatrix[y][(x + i) & 3];
-  return t;
-}
-inline constexpr DitherLanes kDitherLanes = make_dither_lanes();
-
-// channel() then dither_to_5() on eight pixels: clamp(clamp(v >> 12, 0, 255) + dither, 0, 255)
-// >> 3. Packing to 16 bits saturates, which leaves the clamp to 0..255 unchanged.
-inline __m128i channel5(__m128i lo, __m128i hi, __m128i dither) {
-  const __m128i zero = _mm_setzero_si128(), top = _mm_set1_epi16(255);
-  __m128i c = _mm_packs_epi32(_mm_srai_epi32(lo, kFrac), _mm_srai_epi32(hi, kFrac));
-  c = _mm_min_epi16(_mm_max_epi16(c, zero), top);
-  c = _mm_min_epi16(_mm_max_epi16(_mm_add_epi16(c, dither), zero), top);
-  return _mm_srli_epi16(c, 3);
-}
-
-// Rows of an opaque untextured polygon (flat or Gouraud), eight pixels per step: the pixels that
-// draw_pixel<kUntextured, false, false> gives one by one, mask check and dither included. A
-// channel's eight lanes hold value + i * step, wrapping in 32 bits as per-pixel additions do.
-class ColourRows {
- public:
-  // Steps per pixel of the 12-bit fixed-point red, green and blue (0 for a flat polygon).
-  ColourRows(const PixelContext& c, s32 dr, s32 dg, s32 db)
-      : ctx_(c), mask_or_(_mm_set1_epi16(static_cast<s16>(c.mask_or))) {
-    const s32 steps[3] = {dr, dg, db};
-    for (int k = 0; k < 3; ++k) {
-      const auto at = [&](u32 i) { return static_cast<s32>(i * static_cast<u32>(steps[k])); };
-      offset_lo_[k] = _mm_setr_epi32(at(0), at(1), at(2), at(3));
-      offset_hi_[k] = _mm_setr_epi32(at(4), at(5), at(6), at(7));
-      step8_[k] = _mm_set1_epi32(at(8));
-    }
-  }
-
-  // `count` pixels of row y from column x, whose first pixel has the channels r, g, b.
-  void draw(s32 x, s32 y, u32 count, s32 r, s32 g, s32 b) const {
-    const __m128i dither = ctx_.dither ? load(kDitherLanes.v[y & 3][x & 3]) : _mm_setzero_si128();
-    __m128i lo[3], hi[3];
-    const s32 first[3] = {r, g, b};
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = _mm_add_epi32(_mm_set1_epi32(first[k]), offset_lo_[k]);
-      hi[k] = _mm_add_epi32(_mm_set1_epi32(first[k]), offset_hi_[k]);
-    }
-    u16* dst = ctx_.vram + static_cast<u32>(y) * kVramWidth + static_cast<u32>(x);
-    const u32 room = kVramWidth - static_cast<u32>(x);  // pixels to the end of the VRAM row
-    for (u32 i = 0; i < count; i += 8) {
-      const __m128i out = _mm_or_si128(
-          _mm_or_si128(channel5(lo[0], hi[0], dither), _mm_slli_epi16(channel5(lo[1], hi[1], dither), 5)),
-          _mm_or_si128(_mm_slli_epi16(channel5(lo[2], hi[2], dither), 10), mask_or_));
-      store(dst + i, out, std::min(count - i, 8u), room - i);
-      for (int k = 0; k < 3; ++k) lo[k] = _mm_add_epi32(lo[k], step8_[k]), hi[k] = _mm_add_epi32(hi[k], step8_[k]);
-    }
-  }
-
- private:
-  static __m128i load(const void* p) { return _mm_loadu_si128(static_cast<const __m128i*>(p)); }
-
-  // Writes the first n of eight pixels where the mask check allows. Lanes past n keep the
-  // pixels there; past the end of the VRAM row (room < 8) the pixels go through a copy.
-  void store(u16* dst, __m128i out, u32 n, u32 room) const {
-    u16 part[8] = {};
-    u16* at = room >= 8 ? dst : part;
-    if (room < 8) std::memcpy(part, dst, n * sizeof(u16));
-    const __m128i old = load(at);
-    __m128i keep = _mm_cmplt_epi16(_mm_set_epi16(7, 6, 5, 4, 3, 2, 1, 0), _mm_set1_epi16(static_cast<s16>(n)));
-    keep = _mm_xor_si128(keep, _mm_set1_epi16(-1));  // all ones in lanes to leave as they are
-    if (ctx_.check_mask) keep = _mm_or_si128(keep, _mm_srai_epi16(old, 15));  // bit 15 set: kept
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_or_si128(_mm_and_si128(keep, old), _mm_andnot_si128(keep, out)));
-    if (room < 8) std::memcpy(dst, part, n * sizeof(u16));
-  }
-
-  const PixelContext& ctx_;
-  __m128i mask_or_;
-  __m128i offset_lo_[3], offset_hi_[3], step8_[3];
-};
 
 }  // namespace
 
@@ -135,7 +51,7 @@ void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds
   s32 y_end = std::min(c.y - 1, ds.area_bottom);
   if (y_begin > y_end) return;
   SpanWalk span(sorted, y_begin);
-  const ColourRows colour_rows(ctx, gr.dx, gg.dx, gb.dx);
+  const RowPainter rows(ctx, gr.dx, gg.dx, gb.dx);
   for (s32 y = y_begin; y <= y_end; ++y, span.next_row()) {
     if ((y & 1) == ds.skip_row_parity) continue;
     const s32 x_left = std::max(span.left(), ds.area_left);
@@ -154,10 +70,11 @@ void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds
       u = attribute_at(a.u, gu, dx, dy);
       v = attribute_at(a.v, gv, dx, dy);
     }
-    if constexpr (kTex == kUntextured && !kSemi) {
+    if constexpr (!kSemi) {  // opaque: eight pixels at a time
       const u32 count = static_cast<u32>(x_right - x_left + 1);
-      if constexpr (kGouraud) colour_rows.draw(x_left, y, count, r, g, bl);
-      else colour_rows.draw(x_left, y, count, s32(r8 << kFrac), s32(g8 << kFrac), s32(b8 << kFrac));
+      if constexpr (!kGouraud) r = s32(r8 << kFrac), g = s32(g8 << kFrac), bl = s32(b8 << kFrac);
+      if constexpr (kTex == kUntextured) rows.colour(x_left, y, count, r, g, bl);
+      else rows.textured<kTex, kRaw>(x_left, y, count, r, g, bl, u, v, gu.dx, gv.dx);
       continue;
     }
     const s8* dither = ctx.dither_row(y);

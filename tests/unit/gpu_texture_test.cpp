@@ -111,6 +111,55 @@ TEST_F(GpuTextureTest, ModulatedGouraudTriangleIsDithered) {
     }
 }
 
+TEST_F(GpuTextureTest, RawPolygonRowsSkipTransparentTexelsAndKeepMaskedPixels) {
+  // A raw 15-bit quad from x = 3 to 16 (13 pixels a row: a group of eight and five more) reading
+  // texels u = 0..12 one to one: texel 0000h (u = 4) is transparent and a raw texel keeps its bit
+  // 15 (u = 9). With the mask check on, a background pixel with bit 15 (x = 9) stays.
+  for (u32 v = 20; v < 22; ++v)
+    for (u32 u = 0; u < 13; ++u) poke(640 + u, v, u == 4 ? 0 : u == 9 ? 0x8123 : static_cast<u16>(0x100 + u));
+  poke_rect(0, 50, 20, 2, 0x1111);
+  poke(9, 50, 0x9999);
+  gp0({0xE6000002});
+  const u32 page = kPage | (2 << 7);
+  gp0({0x2D000000, xy(3, 50), uv(0, 20), xy(16, 50), uv(13, 20, page), xy(3, 52), uv(0, 22), xy(16, 52), uv(13, 22)});
+  for (u32 y = 50; y < 52; ++y) {
+    EXPECT_EQ(px(2, y), 0x1111);
+    for (u32 u = 0; u < 13; ++u) {
+      const u32 x = 3 + u;
+      const u16 want = (x == 9 && y == 50) ? 0x9999 : u == 4 ? 0x1111 : u == 9 ? 0x8123 : 0x100 + u;
+      EXPECT_EQ(px(x, y), want) << x << "," << y;
+    }
+    EXPECT_EQ(px(16, y), 0x1111);
+  }
+}
+
+TEST_F(GpuTextureTest, ModulatedClut8PolygonRows) {
+  // An 8-bit CLUT quad of colour (64, 128, 255) from x = 5 to 22 (17 pixels a row, from a column
+  // with x & 3 = 1), texel u = index u. CLUT entry k (k >= 1) is (k, 31 - k, b = min(31, 2k)),
+  // with bit 15 for k = 5; entry 0 is 0000h, transparent. Modulation (psx-spx): 5-bit channel =
+  // min(31, texel * colour / 128), so (k / 2, 31 - k, min(31, b * 255 / 128)), with the texel's
+  // bit 15 and no dither (E1.9 off). The mask check (GP0(E6) = 2) keeps the background's masked
+  // pixel at x = 14.
+  const auto blue = [](u32 k) { return std::min(31u, 2 * k); };
+  for (u32 k = 1; k < 17; ++k) poke(32 + k, 300, static_cast<u16>(rgb15(k, 31 - k, blue(k)) | (k == 5 ? 0x8000 : 0)));
+  poke(32, 300, 0);
+  for (u32 w = 0; w < 9; ++w) poke(640 + w, 30, static_cast<u16>((2 * w) | ((2 * w + 1) << 8)));
+  poke_rect(0, 60, 30, 1, rgb15(1, 1, 1));
+  poke(14, 60, 0x8000 | rgb15(2, 2, 2));
+  gp0({0xE6000002});
+  const u32 page = kPage | (1 << 7);
+  gp0({0x2CFF8040, xy(5, 60), uv(0, 30), xy(22, 60), uv(17, 30, page), xy(5, 61), uv(0, 31), xy(22, 61), uv(17, 31)});
+  EXPECT_EQ(px(4, 60), rgb15(1, 1, 1));
+  for (u32 k = 0; k < 17; ++k) {
+    const u32 x = 5 + k;
+    u32 want = (k == 5 ? 0x8000 : 0) | rgb15(k / 2, 31 - k, std::min(31u, blue(k) * 255 / 128));
+    if (k == 0) want = rgb15(1, 1, 1);          // transparent texel: background
+    if (x == 14) want = 0x8000 | rgb15(2, 2, 2);  // masked background kept
+    EXPECT_EQ(px(x, 60), want) << x;
+  }
+  EXPECT_EQ(px(22, 60), rgb15(1, 1, 1));
+}
+
 TEST_F(GpuTextureTest, SemiTransparencyEquations) {
   // Background (20, 10, 5); foreground colour (80, 160, 240) = 5-bit (10, 20, 30).
   const u16 back = rgb15(20, 10, 5);

@@ -75,11 +75,16 @@ void visual_planes(const std::uint8_t* rgb, int width, int height, int cx, int c
     int y0 = cy + oy * ch / out_h, y1 = std::max(y0 + 1, cy + (oy + 1) * ch / out_h);
     for (int ox = 0; ox < out_w; ++ox) {
       int x0 = cx + ox * cw / out_w, x1 = std::max(x0 + 1, cx + (ox + 1) * cw / out_w);
-      unsigned sum[3] = {0, 0, 0}, n = 0;
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x, ++n)
-          if (x < width && y < height)
-            for (int k = 0; k < 3; ++k) sum[k] += rgb[(static_cast<size_t>(y) * width + x) * 3 + k];
+      // The box's pixels outside the frame count as black.
+      const unsigned n = static_cast<unsigned>((y1 - y0) * (x1 - x0));
+      const int x_end = std::min(x1, width), y_end = std::min(y1, height);
+      unsigned sum[3] = {0, 0, 0};
+      for (int y = y0; y < y_end; ++y) {
+        const std::uint8_t* p = rgb + (static_cast<size_t>(y) * width + x0) * 3;
+        unsigned r = 0, g = 0, b = 0;  // in registers: the row's sums
+        for (int x = x0; x < x_end; ++x, p += 3) r += p[0], g += p[1], b += p[2];
+        sum[0] += r, sum[1] += g, sum[2] += b;
+      }
       size_t at = static_cast<size_t>(oy) * out_w + ox;
       if (gray) {
         // BT.601 luma in integer weights summing to 1000.

@@ -105,6 +105,12 @@ TEST(Observation, VisualPlanesAverageTheCropAndSplitChannels) {
   std::uint8_t gray;
   visual_planes(rgb.data(), 4, 2, 2, 0, 2, 2, 1, 1, true, &gray);
   EXPECT_EQ(gray, 58);
+  // A crop reaching past the frame's right and bottom edges: those pixels count as black, so the
+  // 2x3 box at (3, 0) averages two pixels of (50, 60, 70) over six: (16, 20, 23).
+  visual_planes(rgb.data(), 4, 2, 3, 0, 2, 3, 1, 1, false, out);
+  EXPECT_EQ(out[0], 100 / 6);
+  EXPECT_EQ(out[1], 120 / 6);
+  EXPECT_EQ(out[2], 140 / 6);
 }
 
 TEST(Observation, AudioMfccShapeAndSilenceCropping) {

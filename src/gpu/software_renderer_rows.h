@@ -94,7 +94,8 @@ class RowPainter {
   // Where a row's pixels go: from dst, with `room` pixels to the end of the VRAM row.
   struct Target {
     Target(const PixelContext& c, s32 x, s32 y)
-        : dst(c.vram + static_cast<u32>(y) * kVramWidth + static_cast<u32>(x)), room(kVramWidth - static_cast<u32>(x)) {}
+        : dst(c.vram + static_cast<u32>(y) * kVramWidth + static_cast<u32>(x)),
+          room(kVramWidth - static_cast<u32>(x)) {}
     u16* dst;
     u32 room;
   };
@@ -115,7 +116,10 @@ class RowPainter {
     return c;
   }
   void advance(Channels& c) const {
-    for (int k = 0; k < 3; ++k) c.lo[k] = _mm_add_epi32(c.lo[k], step8_[k]), c.hi[k] = _mm_add_epi32(c.hi[k], step8_[k]);
+    for (int k = 0; k < 3; ++k) {
+      c.lo[k] = _mm_add_epi32(c.lo[k], step8_[k]);
+      c.hi[k] = _mm_add_epi32(c.hi[k], step8_[k]);
+    }
   }
 
   // channel() on eight lanes: clamp(v >> 12, 0, 255). Packing to 16 bits saturates, which leaves
@@ -145,7 +149,8 @@ class RowPainter {
     const __m128i past = _mm_cmpgt_epi16(_mm_set_epi16(8, 7, 6, 5, 4, 3, 2, 1), _mm_set1_epi16(static_cast<s16>(n)));
     __m128i keep = _mm_or_si128(past, skip);
     if (ctx_.check_mask) keep = _mm_or_si128(keep, _mm_srai_epi16(old, 15));  // bit 15 set: kept
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_or_si128(_mm_and_si128(keep, old), _mm_andnot_si128(keep, out)));
+    const __m128i merged = _mm_or_si128(_mm_and_si128(keep, old), _mm_andnot_si128(keep, out));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(at), merged);
     if (room < 8) std::memcpy(t.dst + i, part, n * sizeof(u16));
   }
 

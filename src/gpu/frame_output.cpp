@@ -16,6 +16,24 @@ static inline void put15(u8* out, u16 p) {
   out[2] = expand5((p >> 10) & 0x1F);
 }
 
+// A 15-bit pixel's RGB888 in the low three bytes of a word: expand5() on the three channels at
+// once, each in its own byte.
+static inline u32 rgb_word(u16 p) {
+  const u32 v = (p & 0x1Fu) | ((p & 0x3E0u) << 3) | ((p & 0x7C00u) << 6);
+  return (v << 3) | ((v >> 2) & 0x070707);
+}
+
+// n (at least 1) 15-bit pixels to RGB888: one four-byte store per pixel, whose fourth byte the
+// next pixel overwrites (the bytes are in memory order on the little-endian x86-64 host), and the
+// last pixel's three bytes on their own.
+static void put15_row(u8* out, const u16* pixels, u32 n) {
+  for (u32 i = 0; i + 1 < n; ++i) {
+    const u32 w = rgb_word(pixels[i]);
+    std::memcpy(out + i * 3, &w, 4);
+  }
+  put15(out + (n - 1) * 3, pixels[n - 1]);
+}
+
 void FrameOutput::refresh(const u16* vram, const DisplayArea& area) {
   width_ = std::clamp<u32>(area.width, 1, kMaxWidth);
   height_ = std::clamp<u32>(area.height, 1, kMaxHeight);
@@ -28,7 +46,10 @@ void FrameOutput::refresh(const u16* vram, const DisplayArea& area) {
     const u16* line = vram + ((area.y + row) & (kVramHeight - 1)) * kVramWidth;
     u8* o = out + size_t{row} * width_ * 3;
     if (!area.rgb24) {
-      for (u32 col = 0; col < width_; ++col) put15(o + col * 3, line[(area.x + col) & (kVramWidth - 1)]);
+      // The row wraps at the VRAM's right edge.
+      const u32 x = area.x & (kVramWidth - 1), first = std::min(width_, kVramWidth - x);
+      put15_row(o, line + x, first);
+      if (first < width_) put15_row(o + first * 3, line, width_ - first);
       continue;
     }
     // 24-bit mode: the row is a byte stream (little-endian halfwords) starting at the display X,

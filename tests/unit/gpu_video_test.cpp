@@ -259,6 +259,30 @@ TEST_F(GpuTest, DisplayOutput15Bit) {
   EXPECT_EQ(rgb[319 * 3 + 1], 0);
 }
 
+TEST_F(GpuTest, DisplayOutput15BitWrapsAtTheVramEdge) {
+  // A 320-wide display from VRAM x = 1000 (GP1(05)) shows columns 1000..1023, then 0..295.
+  // 8-bit channels are the 5-bit ones expanded: (c << 3) | (c >> 2).
+  poke(1022, 0, rgb15(31, 0, 31));  // display column 22: (255, 0, 255)
+  poke(1023, 0, rgb15(1, 2, 3));    // column 23: (8, 16, 24)
+  poke(0, 0, rgb15(31, 16, 0));     // column 24: (255, 132, 0)
+  poke(294, 0, rgb15(4, 5, 6));     // column 318: (33, 41, 49)
+  poke(295, 0, 0x7FFF);             // column 319, the row's last: (255, 255, 255)
+  poke(296, 0, 0x001F);             // past the display
+  gp1(0x08000001);
+  gp1(0x05000000 | 1000);
+  gp1(0x03000000);
+  run(vblank_time(256, 263, 3413, 53693175, 0) + 1);
+  ASSERT_EQ(gpu.display_width(), 320u);
+  const u8* rgb = gpu.display_rgb();
+  const auto at = [&](u32 col) { return std::vector<int>{rgb[col * 3], rgb[col * 3 + 1], rgb[col * 3 + 2]}; };
+  EXPECT_EQ(at(22), (std::vector<int>{255, 0, 255}));
+  EXPECT_EQ(at(23), (std::vector<int>{8, 16, 24}));
+  EXPECT_EQ(at(24), (std::vector<int>{255, 132, 0}));
+  EXPECT_EQ(at(318), (std::vector<int>{33, 41, 49}));
+  EXPECT_EQ(at(319), (std::vector<int>{255, 255, 255}));
+  EXPECT_EQ(at(320), (std::vector<int>{0, 0, 0}));  // the next row's first pixel (VRAM (1000, 1))
+}
+
 TEST_F(GpuTest, DisplayOutput24BitAndDisabled) {
   gp0({0xA0000000, 0x00000000, 0x00010003, 0x44332211, 0x00006655});
   gp1(0x08000011);  // 320 wide, 24-bit

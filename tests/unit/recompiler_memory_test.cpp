@@ -149,8 +149,11 @@ TEST(RecompilerMemory, StreamsWithDataBreaks) {
       SCOPED_TRACE("seed " + std::to_string(seed) + (trap ? " trap" : ""));
       const u32 dcic = Cop0::kDcicDE | Cop0::kDcicDAE | Cop0::kDcicDR | Cop0::kDcicDW | Cop0::kDcicKD |
                        (trap ? Cop0::kDcicTR : 0);
+      // The break watches 64 bytes of the streams' RAM data, or (odd seeds) the timers' registers
+      // in KUSEG, which the streams' stores reach through their calls.
+      const u32 bda = seed % 2 ? 0x1F801100 : 0x80100040;
       std::vector<u32> code = {
-          itype(0x0F, 0, kAt, 0x8010), itype(0x0D, kAt, kAt, 0x40), itype(0x10, 4, kAt, 0) | 5 << 11,  // BDA
+          itype(0x0F, 0, kAt, bda >> 16), itype(0x0D, kAt, kAt, bda & 0xFFFF), itype(0x10, 4, kAt, 0) | 5 << 11,  // BDA
           itype(0x0F, 0, kAt, 0xFFFF), itype(0x0D, kAt, kAt, 0xFFC0), itype(0x10, 4, kAt, 0) | 9 << 11,  // BDAM
           itype(0x0F, 0, kAt, dcic >> 16), itype(0x0D, kAt, kAt, dcic & 0xFFFF),
           itype(0x10, 4, kAt, 0) | 7 << 11};  // DCIC

@@ -141,17 +141,20 @@ class RowPainter {
   // keeps the old one. Lanes past the count keep the pixels there; past the end of the VRAM row
   // (room < 8) the pixels go through a copy.
   void store(const Target& t, u32 i, u32 count, __m128i out, __m128i skip) const {
-    const u32 n = std::min(count - i, 8u), room = t.room - i;
-    u16 part[8] = {};
-    u16* at = room >= 8 ? t.dst + i : part;
-    if (room < 8) std::memcpy(part, t.dst + i, n * sizeof(u16));
-    const __m128i old = load(at);
+    const u32 n = std::min(count - i, 8u);
     const __m128i past = _mm_cmpgt_epi16(_mm_set_epi16(8, 7, 6, 5, 4, 3, 2, 1), _mm_set1_epi16(static_cast<s16>(n)));
-    __m128i keep = _mm_or_si128(past, skip);
-    if (ctx_.check_mask) keep = _mm_or_si128(keep, _mm_srai_epi16(old, 15));  // bit 15 set: kept
-    const __m128i merged = _mm_or_si128(_mm_and_si128(keep, old), _mm_andnot_si128(keep, out));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(at), merged);
-    if (room < 8) std::memcpy(t.dst + i, part, n * sizeof(u16));
+    const auto merge = [&](u16* at) {
+      const __m128i old = load(at);
+      __m128i keep = _mm_or_si128(past, skip);
+      if (ctx_.check_mask) keep = _mm_or_si128(keep, _mm_srai_epi16(old, 15));  // bit 15 set: kept
+      const __m128i merged = _mm_or_si128(_mm_and_si128(keep, old), _mm_andnot_si128(keep, out));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(at), merged);
+    };
+    if (t.room - i >= 8) return merge(t.dst + i);
+    u16 part[8] = {};
+    std::memcpy(part, t.dst + i, n * sizeof(u16));
+    merge(part);
+    std::memcpy(t.dst + i, part, n * sizeof(u16));
   }
 
   const PixelContext& ctx_;

@@ -189,6 +189,40 @@ TEST(SaveState, RefusedStateWithAFarLaterClockLeavesTheConsoleAsItWas) {
   EXPECT_TRUE(c.save_state() == good) << "the refused state changed the console";
 }
 
+// A GTE command ends at most 44 cycles after it starts (NCDT, psx-spx "GTE Command Summary"), so
+// a state whose GTE is busy until later than 44 cycles past its time cannot come from a console;
+// the recompiler's deadline budget (block_emitter.cpp) counts on that bound.
+TEST(SaveState, GteBusyBeyondItsLongestCommandIsRefused) {
+  Console c;
+  c.boot_exe(kProgram);
+  c.run_frames(2);
+  const std::vector<u8> good = c.save_state();
+  SaveStateHeader h;
+  h.bios_hash = u64(load_le32(&good[16])) | u64(load_le32(&good[20])) << 32;
+  h.program_hash = u64(load_le32(&good[24])) | u64(load_le32(&good[28])) << 32;
+  std::vector<u8> p = unpack_save_state(good.data(), good.size(), h.bios_hash, h.program_hash);
+  const size_t now_at = section_at(p, "SCHD") + 12;
+  const u64 now = u64(load_le32(&p[now_at])) | u64(load_le32(&p[now_at + 4])) << 32;
+  // The CPU section's fields: 32 registers, HI, LO, pc, next_pc, current_pc (148 bytes), two
+  // delay-slot flags (2), the load delay's four words (16), then the multiply's and the GTE's
+  // end times (u64 each).
+  const size_t gte_at = section_at(p, "CPU ") + 12 + 148 + 2 + 16 + 8;
+  for (const u64 busy_until : {now + 44, now + 45}) {
+    store_le32(&p[gte_at], u32(busy_until));
+    store_le32(&p[gte_at + 4], u32(busy_until >> 32));
+    if (busy_until == now + 44) {
+      EXPECT_NO_THROW(c.load_state(pack_save_state(h, p)));
+    } else {
+      try {
+        c.load_state(pack_save_state(h, p));
+        ADD_FAILURE() << "a GTE busy 45 cycles ahead was loaded";
+      } catch (const StateError& e) {
+        EXPECT_NE(std::string(e.what()).find("too far ahead"), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
 TEST_F(BadState, FilesAreWrittenAtomicallyAndReadBack) {
   std::string path = ::testing::TempDir() + "/psxrl_state_test.sav";
   c.save_state_file(path);

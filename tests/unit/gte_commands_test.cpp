@@ -104,6 +104,9 @@ TEST(GteCommands, CycleCounts) {
   EXPECT_EQ(g.execute(kNcdt | kSf), 44u);
   EXPECT_EQ(Gte::command_cycles(0x3F), 39u);  // NCCT
   EXPECT_EQ(Gte::command_cycles(0x28), 5u);   // SQR
+  // NCDT (44 cycles in psx-spx's summary) is the longest of all 64 opcodes.
+  EXPECT_EQ(Gte::kLongestCommandCycles, 44u);
+  for (u32 opcode = 0; opcode < 64; ++opcode) EXPECT_LE(Gte::command_cycles(opcode), 44u) << opcode;
 }
 
 }  // namespace

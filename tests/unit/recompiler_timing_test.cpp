@@ -158,4 +158,104 @@ TEST(RecompilerTiming, ProbedEveryFewCycles) {
   expect_same_trace(code, 3, 3, 1);
 }
 
+// Native code checks the deadline once per segment, against a bound on the cycles the segment's
+// instructions can take (BlockEmitter's budget_check): each load's issue and bus access, each
+// multiply's, divide's and GTE command's duration, the fill of each line, and the wait for a
+// load, a divide or a GTE command still under way when the segment starts. A bound that left
+// one of them out would let a segment run past a deadline that falls inside it. Loops of native
+// code only (back-to-back loads, loads to the same register, divides then MFLO, NCDT and NCCT
+// then MFC2, LWC2/SWC2, unaligned loads), longer than the 4 KiB i-cache so every pass refills
+// its lines, probed at random gaps up to about one pass of a block.
+std::vector<u32> budget_stream(u32 seed) {
+  std::mt19937 rng(seed);
+  auto pick = [&](u32 n) { return u32(rng() % n); };
+  auto reg = [&]() { return kT0 + pick(4); };
+  std::vector<u32> code;
+  while (code.size() < 1200) {
+    const u32 s = reg(), t = reg(), d = reg(), off = (rng() & 0x3FF) & ~3u, kind = pick(20);
+    if (kind < 6) {  // LW LB LH LHU, often two in a row (the second waits for the bus)
+      static constexpr u32 kLoads[] = {0x23, 0x20, 0x21, 0x25};
+      code.push_back(itype(kLoads[pick(4)], kS7, d, off));
+      if (pick(2)) code.push_back(itype(0x23, kS7, pick(2) ? d : t, off ^ 0x40));
+    } else if (kind < 7) {  // LWL / LWR
+      code.push_back(itype(pick(2) ? 0x22 : 0x26, kS7, d, off | pick(4)));
+    } else if (kind < 9) {  // SW to RAM
+      code.push_back(itype(0x2B, kS7, t, off));
+    } else if (kind < 13) {  // ALU
+      code.push_back(pick(2) ? itype(0x09, s, d, rng() & 0xFFFF) : rtype(0x21, s, t, d));
+    } else if (kind < 15) {  // DIV DIVU MULT MULTU, then (maybe later) MFLO
+      code.push_back(rtype(0x18 + pick(4), s, t, 0));
+      if (pick(2)) code.push_back(rtype(0x12, 0, 0, d));
+    } else if (kind < 16) {  // MFHI / MFLO on their own (a segment may start with the divide under way)
+      code.push_back(rtype(pick(2) ? 0x10 : 0x12, 0, 0, d));
+    } else if (kind < 18) {  // NCDT, NCCT, RTPT: 44, 39, 23 cycles; MFC2 waits for them
+      static constexpr u32 kLong[] = {0x4AF80016, 0x4AF8003F, 0x4A280030};
+      code.push_back(kLong[pick(3)]);
+      if (pick(2)) code.push_back(itype(0x12, 0, d, 0) | (pick(32) << 11));  // MFC2
+    } else {  // MFC2 (waits for a command under way), LWC2, SWC2
+      switch (pick(3)) {
+        case 0: code.push_back(itype(0x12, 0, d, 0) | (pick(32) << 11)); break;
+        case 1: code.push_back(itype(0x32, kS7, pick(32), off)); break;
+        default: code.push_back(itype(0x3A, kS7, pick(32), off)); break;
+      }
+    }
+  }
+  code.push_back(j(kBase));
+  code.push_back(kNop);
+  return code;
+}
+
+TEST(RecompilerTiming, ProbedNativeRuns) {
+  for (int seed = 1; seed <= test_scale::sized(6, 2); ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_trace(budget_stream(seed), seed, 40 + 30 * seed, 1);
+  }
+}
+
+// Blocks that branch back to their own start run pass after pass without their guard, checking
+// the deadline's budget where they branch back. Their bodies make the bound nearly tight, so that
+// a bound short of any one term shows: back-to-back loads (each waits for the last one's bus),
+// LWC2s after an NCDT left under way by the previous pass, or MULTs of a large value each read
+// back by MFLO after a divide left under way. t4 counts the passes down in the delay slot, and
+// each pass stores it (an idle loop would be skipped, not run).
+std::vector<u32> loop_stream(u32 seed) {
+  constexpr u32 kT4 = 12;
+  std::mt19937 rng(seed);
+  auto pick = [&](u32 n) { return u32(rng() % n); };
+  auto reg = [&]() { return kT0 + pick(4); };
+  std::vector<u32> code;
+  for (int unit = 0; unit < 9; ++unit) {
+    code.push_back(itype(0x0D, 0, kT4, 20 + pick(20)));  // ori t4, r0, passes
+    const size_t start = code.size();
+    code.push_back(itype(0x2B, kS7, kT4, 0x400 + 4 * u32(unit)));  // sw t4: not an idle loop
+    const u32 shape = pick(3), length = shape == 2 ? 4 + pick(10) : 8 + pick(14);  // at most 32 a block
+    for (u32 k = 0; k < length; ++k) {
+      const u32 off = (rng() & 0x3FF) & ~3u;
+      if (shape == 0) {
+        code.push_back(itype(0x23, kS7, reg(), off));  // LW
+      } else if (shape == 1) {
+        code.push_back(itype(0x32, kS7, pick(32), off));  // LWC2
+      } else {
+        code.push_back(rtype(0x12, 0, 0, kT1));                                // MFLO
+        if (k == 0) code.push_back(itype(0x0F, 0, kT0, 0x7000 + pick(0x1000)));  // lui t0: a large rs
+        code.push_back(rtype(0x18 + pick(2), kT0, reg(), 0));                  // MULT / MULTU
+      }
+    }
+    code.push_back(shape == 1 ? 0x4AF80016 : rtype(0x1A, reg(), reg(), 0));  // NCDT / DIV
+    const u32 back = u32(start) - u32(code.size() + 1);
+    code.push_back(itype(0x05, kT4, 0, back));      // bne t4, r0, start
+    code.push_back(itype(0x09, kT4, kT4, 0xFFFF));  // addiu t4, t4, -1
+  }
+  code.push_back(j(kBase));
+  code.push_back(kNop);
+  return code;
+}
+
+TEST(RecompilerTiming, ProbedNativeLoops) {
+  for (int seed = 1; seed <= test_scale::sized(6, 2); ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_trace(loop_stream(seed), seed, 200 + 100 * seed, 1);
+  }
+}
+
 }  // namespace

@@ -279,6 +279,12 @@ void CpuT<BusT>::do_state(StateIO& s) {
   s.pod_since(version, 2, shadow_reg_, u32{0});
   if (s.loading() && (load_reg_ > 31 || new_load_reg_ > 31 || shadow_reg_ > 31))
     s.fail("CPU load-delay register out of range");
+  // A load's access, a multiply or divide and a GTE command end at most this far after the
+  // scheduler's time (loaded before the CPU), which the recompiler's deadline budget relies on.
+  const Cycles now = sched_.now();
+  if (s.loading() && (load_done_at_ > now + kLoadBus + 1 || muldiv_ready_at_ > now + cpu_detail::kDivideCycles ||
+                      gte_ready_at_ > now + Gte::kLongestCommandCycles))
+    s.fail("CPU load, multiply/divide or GTE end time too far ahead of the scheduler's time");
   cop0_.do_state(s);
   s.end_section("CPU ");
 }

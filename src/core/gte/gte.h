@@ -37,8 +37,10 @@ class Gte {
     }
   }
 
-  // Cycles a command takes (psx-spx "GTE Command Summary"); unknown opcodes take 1.
+  // Cycles a command takes (psx-spx "GTE Command Summary"); unknown opcodes take 1. NCDT's are
+  // the most.
   static u32 command_cycles(u32 command);
+  static constexpr u32 kLongestCommandCycles = 44;
 
   // FLAG bits (psx-spx "GTE Saturation"). Bit 31 is the OR of kFlagErrorMask.
   static constexpr u32 kFlagMac1Pos = 1u << 30, kFlagMac2Pos = 1u << 29, kFlagMac3Pos = 1u << 28;

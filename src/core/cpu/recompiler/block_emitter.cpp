@@ -201,7 +201,8 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
 // checking it here), so that a run whose later lines miss runs natively up to them. Such a hit
 // also means the code is cached (Bus::cached_code), as the load-shadow model asks of a native
 // load.
-void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, Label* fill, Label* filled) {
+void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, std::optional<u32> budget, Label* fill,
+                 Label* filled) {
   const u32 first = run[0].pc, bytes = u32(run.size()) * 4;
   const auto any = [&](bool (*pred)(NativeOp)) {
     return std::any_of(run.begin(), run.end(), [&](const Step& s) { return pred(s.native); });
@@ -245,6 +246,7 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, Label* f
     jmp(fail, T_NEAR);
     return;
   }
+  if (budget) budget_check(*budget, fail);
   line_check(run, fail, fill, filled);
 }
 
@@ -340,12 +342,13 @@ Label& Impl::machine_routine(u32 needs) {
 // Instruction k of a native segment: CpuT::run()'s loop pass and execute_at_pc(). The guard
 // has checked what no instruction of the segment can change (stop, hooks, interrupts, loop
 // heads, debug breaks, i-cache hits, new_load_* zero), so only time needs a check before each
-// instruction after the first, and the i-cache where one starts a line the guard left to it. A
-// branch may arm a hook or name a loop head, but only its delay slot follows it in the segment,
-// and step() leaves an armed hook alone in a delay slot, and the loop head lies at or before the
-// branch. The guard has also seen that the first instruction is not in a delay slot, so where
-// each instruction is and goes is known (but for a delay slot's target), and the load delay
-// slot is as seg.pipe[k] says (unknown at the first instruction).
+// instruction after the first, which the guard's budget_check() has made for all of them, and
+// the i-cache where one starts a line the guard left to it. A branch may arm a hook or name a
+// loop head, but only its delay slot follows it in the segment, and step() leaves an armed hook
+// alone in a delay slot, and the loop head lies at or before the branch. The guard has also
+// seen that the first instruction is not in a delay slot, so where each instruction is and goes
+// is known (but for a delay slot's target), and the load delay slot is as seg.pipe[k] says
+// (unknown at the first instruction).
 // A branch's delay slot (after_branch) runs with in_delay_slot_ set and goes wherever the
 // branch set next_pc_. A load or store first checks, before changing anything, that it can make
 // its access natively; if not, it runs as a call (seg.fallback[k]; see emit() for what follows).
@@ -354,13 +357,9 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   const Step& s = rest[0];
   const NativeOp op = s.native;
   const Pipe& pipe = seg.pipe[k];
-  if (k > 0) {
-    cmp(now, deadline);
-    jae(seg.late[k], T_NEAR);
-    // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
-    // which fetches (and fills) it.
-    if ((s.pc & 15) == 0) line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
-  }
+  // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
+  // which fetches (and fills) it.
+  if (k > 0 && (s.pc & 15) == 0) line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   if (after_branch) {
     mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
@@ -506,7 +505,7 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
 // through it changes nothing the guard checked but what this chain checks (the time, a stop, a
 // hook, the loop head), and no i-cache line the block uses (a fill stub refills a line with the
 // words compiled; stores leave the i-cache alone).
-void Impl::chain(bool clean, Label* loop) {
+void Impl::chain(bool clean, Label* loop, u32 loop_budget) {
   Label back, no_loop_head;
   cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
@@ -529,9 +528,13 @@ void Impl::chain(bool clean, Label* loop) {
     Label other;
     cmp(eax, block_pc);
     jne(other);
-    if (loop) {
+    if (loop) {  // the segment's guard's deadline budget, then past the guard
+      Label guarded;
       cmp(byte[rsp], 0);
-      je(*loop, T_NEAR);
+      jne(guarded);
+      if (loop_budget > 0) budget_check(loop_budget, guarded);
+      jmp(*loop, T_NEAR);
+      L(guarded);
     }
     jmp(block_entry + kCleanEntry, T_NEAR);
     L(other);
@@ -612,11 +615,58 @@ void Impl::epilogue() {
   for (const Xbyak::Reg64& r : {rbp, r15, r14, r13, r12, rbx}) pop(r);
 }
 
+// The most cycles instruction j of a native run can add to the time and to when the loads,
+// multiplies and divides and GTE commands in flight end (its own cycle, a load's issue and bus
+// access, LWC2's read, a command's or a multiply's or divide's duration, and the fill of a line
+// it is the first of the run to reach), once it has waited for those in flight (longest_wait()).
+u32 Impl::most_cycles(std::span<const Step> run, size_t j) const {
+  using namespace cpu_detail;
+  const Step& s = run[j];
+  const NativeOp op = s.native;
+  u32 cycles = 1;
+  if ((j == 0 || (s.pc & 15) == 0) && fills_natively(s.pc)) cycles += 4 * lay.fetch_word_cycles;
+  if (is_load(op)) cycles += u32(lay.load_issue + lay.load_bus);
+  else if (op == NativeOp::Lwc2) cycles += u32(lay.ram_read);
+  else if (op == NativeOp::Gte) cycles += lay.gte_cycles(s.word & 0x1FFFFFF);
+  else if (op == NativeOp::Mult || op == NativeOp::Multu) cycles += kMultiplySlowCycles;
+  else if (op == NativeOp::Div || op == NativeOp::Divu) cycles += kDivideCycles;
+  return cycles;
+}
+
+// How far past the time a wait by one of `rest` can reach: a load's access ends at most
+// load_bus + 1 cycles after the load (CpuT::timed_read(); a fill waits for it too), a GTE
+// command at most gte_longest after it starts, a multiply or divide at most kDivideCycles, and
+// time only grows, so each stays within that of the time. Only the waits `rest` makes count.
+u32 Impl::longest_wait(std::span<const Step> rest) const {
+  u32 wait = u32(lay.load_bus + 1);
+  for (const Step& s : rest) {
+    if (is_cop2(s.native)) wait = std::max(wait, lay.gte_longest);
+    if (s.native == NativeOp::Mfhi || s.native == NativeOp::Mflo) wait = std::max(wait, cpu_detail::kDivideCycles);
+  }
+  return wait;
+}
+
+// The deadline checks before instructions k + 1 .. count - 1 of a segment (and before k itself
+// where it resumes after a call), made once before instruction k (and its line's fill): when the
+// time plus `budget` (Segment::budget[k]) is before the deadline, every one of them would pass,
+// so native code runs on without them; otherwise the instructions run as their calls (`fail`),
+// which check the deadline one by one. Each of those instructions adds at most most_cycles() to
+// the time, after waiting at most longest_wait(). Leaves rax changed.
+void Impl::budget_check(u32 budget, Label& fail) {
+  if (budget == 0) {
+    cmp(now, deadline);
+  } else {
+    lea(rax, ptr[now + int(budget)]);
+    cmp(rax, deadline);
+  }
+  jae(fail, T_NEAR);
+}
+
 // A segment's labels and what each instruction knows when it starts: the load delay slot
-// (Pipe) and the load shadow (Shadow).
+// (Pipe), the load shadow (Shadow) and the deadline's budget.
 void Impl::plan(std::span<const Step> run, Segment& seg) {
-  for (auto* v : {&seg.slow, &seg.fallback, &seg.resume, &seg.stall, &seg.stall_back, &seg.late, &seg.fill,
-                  &seg.filled, &seg.slow_native})
+  for (auto* v : {&seg.slow, &seg.fallback, &seg.resume, &seg.stall, &seg.stall_back, &seg.fill, &seg.filled,
+                  &seg.slow_native})
     *v = std::vector<Label>(seg.count);
   seg.pipe.assign(seg.count, Pipe{});
   for (size_t k = 1; k < seg.count; ++k)
@@ -628,6 +678,12 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
     seg.shadow[k] = since < reach ? Shadow::check : since == reach ? Shadow::clear : Shadow::none;
     since = is_load(run[k].native) ? 1 : since + 1;
   }
+  // budget[k]: waits and cycles of instructions k .. count - 2 (none for the last instruction).
+  seg.budget.assign(seg.count, 0);
+  for (size_t k = seg.count - 1, cycles = 0; k-- > 0;) {
+    cycles += most_cycles(run, k);
+    seg.budget[k] = u32(cycles) + longest_wait(run.subspan(k, seg.count - 1 - k));
+  }
 }
 
 // Off a segment's main path: an instruction the native code could not run (slow[k]: the guard
@@ -638,7 +694,8 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
 // native code (the segment's start, a line's start) re-guard: a refusal that outlasts one
 // instruction mostly outlasts the line, and each re-guard is code to emit. The call leaves the
 // pipeline as the native code would have (a load pending in rt, or none), so seg.pipe holds
-// after it too. Then the deadline exits, the shadow stalls and the i-cache fills.
+// after it too. Then the entries from a line check's refusal, the shadow stalls and the i-cache
+// fills.
 void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
   for (size_t k = 0; k < seg.count; ++k) {
     L(seg.slow[k]);
@@ -659,10 +716,6 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
     call_and_resume(run, k, seg);
   }
   for (size_t k = 1; k < seg.count; ++k) {
-    L(seg.late[k]);
-    add(instructions, int(k));
-    sync_pc(run, k - 1);
-    jmp(*exit, T_NEAR);
     if ((run[k].pc & 15) != 0) continue;  // a line check's or a fill's refusal
     L(seg.slow_native[k]);
     add(instructions, int(k));
@@ -681,7 +734,7 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
     jmp(seg.end, T_NEAR);
     return;
   }
-  guard(run.subspan(k + 1), seg.slow[k + 1], Checks::routine);
+  guard(run.subspan(k + 1), seg.slow[k + 1], Checks::routine, seg.budget[k + 1]);
   sub(instructions, int(k + 1));  // native code counts from where it resumes
   if (loops_natively) mov(byte[rsp], 1);  // a call since the block's guard (chain())
   // Instruction 0 may have been a delay slot whose branch went on to instruction 1, which then
@@ -740,7 +793,8 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
     g.plan(run, seg);
     g.guard(run, seg.slow[0], seg.first == 0 ? Impl::Checks::entry : Impl::Checks::all,
-            g.fill_entry(run[0].pc, seg, 0), &seg.filled[0]);
+            seg.count > 1 ? std::optional<u32>(seg.budget[0]) : std::nullopt, g.fill_entry(run[0].pc, seg, 0),
+            &seg.filled[0]);
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);
@@ -748,7 +802,8 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     }
     g.add(g.instructions, int(seg.count));
     g.sync_pc(run, seg.count - 1);
-    if (i == steps.size()) g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr);  // the block's native end
+    if (i == steps.size())  // the block's native end
+      g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, seg.count > 1 ? seg.budget[0] : 0);
     g.L(seg.end);
   }
   g.L(done);

@@ -89,6 +89,8 @@ class BlockEmitter {
     void (*gte_write_data)(void* gte, u32 r, u32 v);
     void (*gte_write_control)(void* gte, u32 r, u32 v);
     u32 (*gte_execute)(void* gte, u32 command);  // returns the command's cycles
+    u32 (*gte_cycles)(u32 command);              // the same cycles, known when compiling
+    u32 gte_longest;                             // the most cycles of any command
     // Going on to the next block without the dispatcher (RecompilerT::run): CodePages::
     // any_dirty_cell() and BlockCache::recent_table() (kRecent entries).
     const bool* any_dirty;

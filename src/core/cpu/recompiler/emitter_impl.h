@@ -17,6 +17,7 @@
 #include <array>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/cpu/recompiler/block_emitter.h"
@@ -43,13 +44,16 @@ enum class Shadow : u8 { check, clear, none };
 
 // One native segment's pieces emitted after the block's main path: its steps as calls (the slow
 // path; `slow[k]` enters it at instruction k), a load's or store's call when the native code
-// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`), the
-// shadow-stall stubs, and the exits when the deadline comes before instruction k (`late[k]`).
+// does not make the access (`fallback[k]`, back to the native code at `resume[k + 1]`) and the
+// shadow-stall stubs.
 struct Segment {
   size_t first, count;
   std::vector<Shadow> shadow;  // per instruction
+  // budget[k]: the most cycles from instruction k's start to the last instruction's start, on top
+  // of the time then (budget_check()).
+  std::vector<u32> budget;
   Xbyak::Label end;
-  std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back, late;
+  std::vector<Xbyak::Label> slow, fallback, resume, stall, stall_back;
   // An i-cache line the run reaches at instruction k missing: fill_stub() fills it natively at
   // `fill[k]` and goes on at `filled[k]` (past the line check), or sends k to its slow path.
   std::vector<Xbyak::Label> fill, filled;
@@ -116,8 +120,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   enum class Checks { all, routine, entry };
   // guard() and line_check() send a missing line to `fill` where given (a fill_stub()'s entry),
   // which comes back to `filled`.
-  void guard(std::span<const Step> run, Xbyak::Label& fail, Checks checks, Xbyak::Label* fill = nullptr,
-             Xbyak::Label* filled = nullptr);
+  // A guard with a `budget` makes budget_check() before the line check (and its fill).
+  void guard(std::span<const Step> run, Xbyak::Label& fail, Checks checks, std::optional<u32> budget,
+             Xbyak::Label* fill = nullptr, Xbyak::Label* filled = nullptr);
   static constexpr u32 kNeedsMemory = 1, kNeedsStores = 2, kNeedsCop2 = 4;
   void machine_checks(u32 needs, Xbyak::Label& fail);
   void state_checks(Xbyak::Label& fail);
@@ -142,10 +147,13 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void sync_pc(std::span<const Step> run, size_t j);
   void stall_stub(const Step& s, size_t k, Segment& seg);
+  u32 most_cycles(std::span<const Step> run, size_t j) const;
+  u32 longest_wait(std::span<const Step> rest) const;
+  void budget_check(u32 budget, Xbyak::Label& fail);
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
-  void chain(bool clean, Xbyak::Label* loop = nullptr);
+  void chain(bool clean, Xbyak::Label* loop = nullptr, u32 loop_budget = 0);
   // The block being emitted: its pc, its entry, and whether a branch of it goes back there (a
   // clean chain() then tries its own clean entry first).
   u32 block_pc = 0;

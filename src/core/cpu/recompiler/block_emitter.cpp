@@ -82,32 +82,63 @@ u32 Impl::dest(NativeOp op, u32 i) {
   return op >= NativeOp::Sll ? cpu_detail::rd(i) : cpu_detail::rt(i);
 }
 
-// eax = the instruction's result (CpuT::execute's value for write_reg).
+void Impl::read_pair(u32 a, u32 b) {
+  if (in_eax(b) && !in_eax(a)) {
+    mov(ecx, eax);
+    mov(eax, reg(a));
+    return;
+  }
+  read_eax(a);
+  if (b == a) mov(ecx, eax);
+  else mov(ecx, reg(b));
+}
+
+// eax = the instruction's result (CpuT::execute's value for write_reg). Sources come from eax
+// where it holds them (eax_reg).
 void Impl::alu(NativeOp op, u32 i) {
   using namespace cpu_detail;
+  const u32 s = rs(i), t = rt(i);
+  // A commutative operation: rs op rt, starting from whichever eax holds.
+  const auto both = [&](auto apply) {
+    if (in_eax(t) && !in_eax(s)) {
+      with_reg(s, [&](const Xbyak::Operand& o) { apply(o); });
+    } else {
+      const bool t_too = t == s;
+      read_eax(s);
+      if (t_too) apply(eax);
+      else apply(reg(t));
+    }
+  };
+  const auto set_if = [&](u32 x, auto cmp_y, bool is_signed) {  // eax = (x < y), y as cmp_y compares
+    with_reg(x, [&](const Xbyak::Operand& o) { mov(ecx, o); });
+    cmp_y();
+    if (is_signed) setl(al);
+    else setb(al);
+    movzx(eax, al);
+  };
   switch (op) {
-    case NativeOp::Addiu: mov(eax, reg(rs(i))); add(eax, simm(i)); break;
-    case NativeOp::Slti: xor_(eax, eax); cmp(reg(rs(i)), simm(i)); setl(al); break;
-    case NativeOp::Sltiu: xor_(eax, eax); cmp(reg(rs(i)), simm(i)); setb(al); break;
-    case NativeOp::Andi: mov(eax, reg(rs(i))); and_(eax, imm(i)); break;
-    case NativeOp::Ori: mov(eax, reg(rs(i))); or_(eax, imm(i)); break;
-    case NativeOp::Xori: mov(eax, reg(rs(i))); xor_(eax, imm(i)); break;
+    case NativeOp::Addiu: read_eax(s); add(eax, simm(i)); break;
+    case NativeOp::Slti: set_if(s, [&] { cmp(ecx, simm(i)); }, true); break;
+    case NativeOp::Sltiu: set_if(s, [&] { cmp(ecx, simm(i)); }, false); break;
+    case NativeOp::Andi: read_eax(s); and_(eax, imm(i)); break;
+    case NativeOp::Ori: read_eax(s); or_(eax, imm(i)); break;
+    case NativeOp::Xori: read_eax(s); xor_(eax, imm(i)); break;
     case NativeOp::Lui: mov(eax, imm(i) << 16); break;
-    case NativeOp::Sll: mov(eax, reg(rt(i))); shl(eax, u8(shamt(i))); break;
-    case NativeOp::Srl: mov(eax, reg(rt(i))); shr(eax, u8(shamt(i))); break;
-    case NativeOp::Sra: mov(eax, reg(rt(i))); sar(eax, u8(shamt(i))); break;
+    case NativeOp::Sll: read_eax(t); shl(eax, u8(shamt(i))); break;
+    case NativeOp::Srl: read_eax(t); shr(eax, u8(shamt(i))); break;
+    case NativeOp::Sra: read_eax(t); sar(eax, u8(shamt(i))); break;
     // x86 masks a shift count to 5 bits, as MIPS does (s & 31).
-    case NativeOp::Sllv: mov(eax, reg(rt(i))); mov(ecx, reg(rs(i))); shl(eax, cl); break;
-    case NativeOp::Srlv: mov(eax, reg(rt(i))); mov(ecx, reg(rs(i))); shr(eax, cl); break;
-    case NativeOp::Srav: mov(eax, reg(rt(i))); mov(ecx, reg(rs(i))); sar(eax, cl); break;
-    case NativeOp::Addu: mov(eax, reg(rs(i))); add(eax, reg(rt(i))); break;
-    case NativeOp::Subu: mov(eax, reg(rs(i))); sub(eax, reg(rt(i))); break;
-    case NativeOp::And: mov(eax, reg(rs(i))); and_(eax, reg(rt(i))); break;
-    case NativeOp::Or: mov(eax, reg(rs(i))); or_(eax, reg(rt(i))); break;
-    case NativeOp::Xor: mov(eax, reg(rs(i))); xor_(eax, reg(rt(i))); break;
-    case NativeOp::Nor: mov(eax, reg(rs(i))); or_(eax, reg(rt(i))); not_(eax); break;
-    case NativeOp::Slt: mov(ecx, reg(rs(i))); xor_(eax, eax); cmp(ecx, reg(rt(i))); setl(al); break;
-    case NativeOp::Sltu: mov(ecx, reg(rs(i))); xor_(eax, eax); cmp(ecx, reg(rt(i))); setb(al); break;
+    case NativeOp::Sllv: read_pair(t, s); shl(eax, cl); break;
+    case NativeOp::Srlv: read_pair(t, s); shr(eax, cl); break;
+    case NativeOp::Srav: read_pair(t, s); sar(eax, cl); break;
+    case NativeOp::Addu: both([&](const Xbyak::Operand& o) { add(eax, o); }); break;
+    case NativeOp::Subu: read_pair(s, t); sub(eax, ecx); break;
+    case NativeOp::And: both([&](const Xbyak::Operand& o) { and_(eax, o); }); break;
+    case NativeOp::Or: both([&](const Xbyak::Operand& o) { or_(eax, o); }); break;
+    case NativeOp::Xor: both([&](const Xbyak::Operand& o) { xor_(eax, o); }); break;
+    case NativeOp::Nor: both([&](const Xbyak::Operand& o) { or_(eax, o); }); not_(eax); break;
+    case NativeOp::Slt: set_if(s, [&] { with_reg(t, [&](const Xbyak::Operand& o) { cmp(ecx, o); }); }, true); break;
+    case NativeOp::Sltu: set_if(s, [&] { with_reg(t, [&](const Xbyak::Operand& o) { cmp(ecx, o); }); }, false); break;
     default: break;
   }
 }
@@ -158,18 +189,27 @@ void Impl::branch(NativeOp op, u32 pc, u32 i) {
   using namespace cpu_detail;
   Label not_taken;
   const u32 target = static_target(op, pc, i);
+  const auto with_rs_zero = [&] { with_reg(rs(i), [&](const Xbyak::Operand& o) { cmp(o, 0); }); };
   switch (op) {
-    case NativeOp::Beq: mov(eax, reg(rs(i))); cmp(eax, reg(rt(i))); jne(not_taken, T_NEAR); break;
-    case NativeOp::Bne: mov(eax, reg(rs(i))); cmp(eax, reg(rt(i))); je(not_taken, T_NEAR); break;
-    case NativeOp::Blez: cmp(reg(rs(i)), 0); jg(not_taken, T_NEAR); break;
-    case NativeOp::Bgtz: cmp(reg(rs(i)), 0); jle(not_taken, T_NEAR); break;
-    case NativeOp::Bltz: cmp(reg(rs(i)), 0); jge(not_taken, T_NEAR); break;
-    case NativeOp::Bgez: cmp(reg(rs(i)), 0); jl(not_taken, T_NEAR); break;
-    case NativeOp::Bltzal: mov(eax, pc + 8); cmp(reg(rs(i)), 0); jge(not_taken, T_NEAR); break;
-    case NativeOp::Bgezal: mov(eax, pc + 8); cmp(reg(rs(i)), 0); jl(not_taken, T_NEAR); break;
+    case NativeOp::Beq: case NativeOp::Bne:  // compared from whichever eax holds
+      if (in_eax(rt(i))) {
+        with_reg(rs(i), [&](const Xbyak::Operand& o) { cmp(eax, o); });
+      } else {
+        read_eax(rs(i));
+        cmp(eax, reg(rt(i)));
+      }
+      if (op == NativeOp::Beq) jne(not_taken, T_NEAR);
+      else je(not_taken, T_NEAR);
+      break;
+    case NativeOp::Blez: with_rs_zero(); jg(not_taken, T_NEAR); break;
+    case NativeOp::Bgtz: with_rs_zero(); jle(not_taken, T_NEAR); break;
+    case NativeOp::Bltz: with_rs_zero(); jge(not_taken, T_NEAR); break;
+    case NativeOp::Bgez: with_rs_zero(); jl(not_taken, T_NEAR); break;
+    case NativeOp::Bltzal: with_rs_zero(); mov(eax, pc + 8); jge(not_taken, T_NEAR); break;  // mov keeps the flags
+    case NativeOp::Bgezal: with_rs_zero(); mov(eax, pc + 8); jl(not_taken, T_NEAR); break;
     case NativeOp::Jal: mov(eax, pc + 8); break;  // the link, written by the caller
     case NativeOp::Jr: case NativeOp::Jalr:
-      mov(ecx, reg(rs(i)));  // the target, read before the link is written
+      with_reg(rs(i), [&](const Xbyak::Operand& o) { mov(ecx, o); });  // the target, read before the link is written
       mov(eax, pc + 8);
       mov(cpu32(lay.next_pc), ecx);
       arm_hook_ecx();
@@ -357,9 +397,14 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   const Step& s = rest[0];
   const NativeOp op = s.native;
   const Pipe& pipe = seg.pipe[k];
+  if (k == 0) eax_reg = 0;  // after the guard
+  seg.eax_at[k] = eax_reg;
   // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
   // which fetches (and fills) it.
-  if (k > 0 && (s.pc & 15) == 0) line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
+  if (k > 0 && (s.pc & 15) == 0) {
+    line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
+    eax_reg = 0;
+  }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   if (after_branch) {
     mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
@@ -381,6 +426,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
     mov(cpu32(lay.pc), eax);
     add(eax, 4);
     mov(cpu32(lay.next_pc), eax);
+    eax_reg = 0;
   } else if (is_branch(op)) {
     mov(cpu32(lay.next_pc), s.pc + 8);  // a branch not taken leaves it so; its delay slot reads it
   }
@@ -394,7 +440,8 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   else if (is_cop2(op)) cop2(op, s.word);
   else alu(op, s.word);
   if (d != 0) mov(reg(d), eax);
-  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word));
+  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word));  // leaves eax
+  eax_reg = d;
 }
 
 // current_pc_, pc_ and next_pc_ after instruction j of a segment, which native code writes only
@@ -464,19 +511,19 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
   mov(cpu32(lay.shadow_reg), 0);
   jmp(seg.stall_back[k], T_NEAR);
   L(stall);
-  mov(eax, cpu32(lay.shadow_reg));
+  mov(ecx, cpu32(lay.shadow_reg));  // eax may hold a register (eax_reg)
   // In the load's delay slot (load_reg_ is the shadowed register) the old value is read.
   if (pipe.dynamic) {
-    cmp(eax, cpu32(lay.load_reg));
+    cmp(ecx, cpu32(lay.load_reg));
     je(seg.stall_back[k], T_NEAR);
   } else if (pipe.after_load && pipe.load_reg != 0) {
-    cmp(eax, pipe.load_reg);
+    cmp(ecx, pipe.load_reg);
     je(seg.stall_back[k], T_NEAR);
   }
   bool any = false;
   for (u32 r : {rs(s.word), rt(s.word)}) {
     if (r == 0 || !reads_reg(s.word, r)) continue;
-    cmp(eax, r);
+    cmp(ecx, r);
     je(wait, T_NEAR);
     any = true;
   }
@@ -669,6 +716,7 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
                   &seg.slow_native})
     *v = std::vector<Label>(seg.count);
   seg.pipe.assign(seg.count, Pipe{});
+  seg.eax_at.assign(seg.count, 0);
   for (size_t k = 1; k < seg.count; ++k)
     seg.pipe[k] = {false, is_delayed(run[k - 1].native), cpu_detail::rt(run[k - 1].word)};
   // Instructions since the last that may have left a load shadowed, this one included.
@@ -735,6 +783,7 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
     return;
   }
   guard(run.subspan(k + 1), seg.slow[k + 1], Checks::routine, seg.budget[k + 1]);
+  if (seg.eax_at[k + 1] != 0) mov(eax, reg(seg.eax_at[k + 1]));  // as native code left it
   sub(instructions, int(k + 1));  // native code counts from where it resumes
   if (loops_natively) mov(byte[rsp], 1);  // a call since the block's guard (chain())
   // Instruction 0 may have been a delay slot whose branch went on to instruction 1, which then

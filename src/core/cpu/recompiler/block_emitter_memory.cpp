@@ -54,7 +54,7 @@ void Impl::memory_guard(bool stores, Label& fail) {
 void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   using namespace cpu_detail;
   const u32 width = width_of(op);
-  mov(r13d, reg(rs(i)));
+  with_reg(rs(i), [&](const Xbyak::Operand& o) { mov(r13d, o); });
   if (simm(i) != 0) add(r13d, simm(i));
   if (width > 1) {
     test(r13d, width - 1);
@@ -208,7 +208,7 @@ void Impl::store(NativeOp op, u32 i) {
     mov(esi, cpu_detail::rt(i));
     call_leaf(reinterpret_cast<const void*>(lay.gte_read_data));
   } else {
-    mov(eax, reg(cpu_detail::rt(i)));
+    read_eax(cpu_detail::rt(i));
   }
   mov(ecx, r13d);
   test(r13d, kNotRam);
@@ -277,7 +277,7 @@ void Impl::lwc2(u32 i) {
 void Impl::hilo(NativeOp op, u32 i) {
   const int field = op == NativeOp::Mfhi || op == NativeOp::Mthi ? lay.hi : lay.lo;
   if (op == NativeOp::Mthi || op == NativeOp::Mtlo) {
-    mov(eax, reg(cpu_detail::rs(i)));
+    read_eax(cpu_detail::rs(i));
     mov(cpu32(field), eax);
     return;
   }

@@ -28,8 +28,7 @@ void multiply_cycles(Impl& g) {
 
 void Impl::muldiv(NativeOp op, u32 i) {
   const u32 s = cpu_detail::rs(i), t = cpu_detail::rt(i);
-  mov(eax, reg(s));
-  mov(ecx, reg(t));
+  read_pair(s, t);
   if (op == NativeOp::Mult || op == NativeOp::Multu) {
     mov(edx, eax);
     if (op == NativeOp::Mult) {  // m = s < 0 ? ~s : s

@@ -61,6 +61,9 @@ struct Segment {
   // count of instructions 0..k-1 is added first (native()).
   std::vector<Xbyak::Label> slow_native;
   std::vector<Pipe> pipe;  // per instruction
+  // eax_at[k]: the general register whose value eax holds where instruction k starts (0: none),
+  // which a call resuming there (call_and_resume()) loads into eax.
+  std::vector<u32> eax_at;
 };
 
 struct BlockEmitter::Impl : Xbyak::CodeGenerator {
@@ -77,6 +80,22 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void emit_cold();
 
   Xbyak::Address reg(u32 r) { return dword[rbx + lay.regs + 4 * int(r)]; }
+  // The general register whose value eax holds as native code runs (0: none): the one an
+  // instruction has just written from eax. Reading it from eax instead of memory spares the
+  // store-to-load forwarding on a chain of dependent instructions.
+  u32 eax_reg = 0;
+  bool in_eax(u32 r) const { return r != 0 && r == eax_reg; }
+  // Register r as a source operand: eax where it holds r, else r's cell.
+  template <class F>
+  void with_reg(u32 r, F f) {
+    if (in_eax(r)) f(eax);
+    else f(reg(r));
+  }
+  void read_eax(u32 r) {
+    if (!in_eax(r)) mov(eax, reg(r));
+  }
+  // eax = register a, ecx = register b.
+  void read_pair(u32 a, u32 b);
   Xbyak::Address cpu32(int off) { return dword[rbx + off]; }
   Xbyak::Address cpu64(int off) { return qword[rbx + off]; }
   // Time lives in registers inside a block: `now` counts native instructions' cycles without a

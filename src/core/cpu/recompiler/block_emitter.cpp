@@ -415,8 +415,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   }
   inc(now);
   if (seg.shadow[k] == Shadow::check) {
-    cmp(cpu32(lay.shadow_reg), 0);
-    jne(seg.stall[k], T_NEAR);
+    shadow_check(s, seg.stall[k]);
     L(seg.stall_back[k]);
   } else if (seg.shadow[k] == Shadow::clear) {
     mov(cpu32(lay.shadow_reg), 0);
@@ -500,19 +499,43 @@ void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt) {
   }
 }
 
-// CpuT::shadow_stall() for instruction k (shadow_reg_ is nonzero), returning to its stall_back.
-void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
+// The registers instruction s reads that a load may shadow (none but r0 is never shadowed).
+static std::vector<u32> shadowable_reads(const BlockEmitter::Step& s) {
   using namespace cpu_detail;
+  std::vector<u32> regs;
+  for (u32 r : {rs(s.word), rt(s.word)})
+    if (r != 0 && reads_reg(s.word, r) && (regs.empty() || regs[0] != r)) regs.push_back(r);
+  return regs;
+}
+
+// CpuT::shadow_stall() where shadow_reg_ is nonzero, inline up to the wait: the shadow clears
+// once the access has ended, and only an instruction reading the shadowed register may wait
+// (`stall`: stall_stub(), with ecx = the register). Falls through where nothing waits.
+void Impl::shadow_check(const Step& s, Label& stall) {
+  Label &clear = cold_label(), &back = cold_label();
+  mov(ecx, cpu32(lay.shadow_reg));  // ecx: eax may hold a register (eax_reg)
+  test(ecx, ecx);
+  jz(back);
+  cmp(now, cpu64(lay.load_done_at));
+  jae(clear, T_NEAR);
+  for (u32 r : shadowable_reads(s)) {
+    cmp(ecx, r);
+    je(stall, T_NEAR);
+  }
+  L(back);
+  cold.push_back([this, &clear, &back] {
+    L(clear);
+    mov(cpu32(lay.shadow_reg), 0);
+    jmp(back, T_NEAR);
+  });
+}
+
+// The wait of CpuT::shadow_stall() for instruction k, which reads the register shadowed (ecx)
+// before its load's access has ended, returning to its stall_back: none in the load's delay slot
+// (load_reg_ is the shadowed register: the old value is read), else until the access ends.
+void Impl::stall_stub(size_t k, Segment& seg) {
   const Pipe& pipe = seg.pipe[k];
   L(seg.stall[k]);
-  Label stall, wait;
-  cmp(now, cpu64(lay.load_done_at));
-  jb(stall);  // not yet done: maybe wait
-  mov(cpu32(lay.shadow_reg), 0);
-  jmp(seg.stall_back[k], T_NEAR);
-  L(stall);
-  mov(ecx, cpu32(lay.shadow_reg));  // eax may hold a register (eax_reg)
-  // In the load's delay slot (load_reg_ is the shadowed register) the old value is read.
   if (pipe.dynamic) {
     cmp(ecx, cpu32(lay.load_reg));
     je(seg.stall_back[k], T_NEAR);
@@ -520,20 +543,9 @@ void Impl::stall_stub(const Step& s, size_t k, Segment& seg) {
     cmp(ecx, pipe.load_reg);
     je(seg.stall_back[k], T_NEAR);
   }
-  bool any = false;
-  for (u32 r : {rs(s.word), rt(s.word)}) {
-    if (r == 0 || !reads_reg(s.word, r)) continue;
-    cmp(ecx, r);
-    je(wait, T_NEAR);
-    any = true;
-  }
+  mov(now, cpu64(lay.load_done_at));
+  mov(cpu32(lay.shadow_reg), 0);
   jmp(seg.stall_back[k], T_NEAR);
-  L(wait);
-  if (any) {
-    mov(now, cpu64(lay.load_done_at));
-    mov(cpu32(lay.shadow_reg), 0);
-    jmp(seg.stall_back[k], T_NEAR);
-  }
 }
 
 // The block's end: RecompilerT::run()'s next loop pass. When it would call the block that
@@ -770,7 +782,7 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
     jmp(seg.slow[k], T_NEAR);
   }
   for (size_t k = 0; k < seg.count; ++k) {
-    if (seg.shadow[k] == Shadow::check) stall_stub(run[k], k, seg);
+    if (seg.shadow[k] == Shadow::check && !shadowable_reads(run[k]).empty()) stall_stub(k, seg);
     if ((k == 0 || (run[k].pc & 15) == 0) && fills_natively(run[k].pc)) fill_stub(run.subspan(k), k, seg);
   }
 }

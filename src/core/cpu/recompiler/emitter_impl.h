@@ -165,7 +165,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void sync_pc(std::span<const Step> run, size_t j);
-  void stall_stub(const Step& s, size_t k, Segment& seg);
+  void shadow_check(const Step& s, Xbyak::Label& stall);
+  void stall_stub(size_t k, Segment& seg);
   u32 most_cycles(std::span<const Step> run, size_t j) const;
   u32 longest_wait(std::span<const Step> rest) const;
   void budget_check(u32 budget, Xbyak::Label& fail);

@@ -1,7 +1,8 @@
 // Emits compiled blocks (block_emitter.h) with xbyak (System V x86-64 calling convention): a
 // block's frame, the segment guard, each native instruction's bookkeeping (CpuT::execute_at_pc),
 // the ALU operations and the branches. Loads, stores and HI/LO: block_emitter_memory.cpp; the
-// i-cache line checks and fills: block_emitter_icache.cpp.
+// i-cache line checks and fills: block_emitter_icache.cpp; the deadline's budget and the load
+// shadow: block_emitter_timing.cpp.
 #include "core/cpu/recompiler/block_emitter.h"
 
 #include <algorithm>
@@ -103,9 +104,8 @@ void Impl::alu(NativeOp op, u32 i) {
     if (in_eax(t) && !in_eax(s)) {
       with_reg(s, [&](const Xbyak::Operand& o) { apply(o); });
     } else {
-      const bool t_too = t == s;
       read_eax(s);
-      if (t_too) apply(eax);
+      if (t == s) apply(eax);
       else apply(reg(t));
     }
   };
@@ -499,55 +499,6 @@ void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt) {
   }
 }
 
-// The registers instruction s reads that a load may shadow (none but r0 is never shadowed).
-static std::vector<u32> shadowable_reads(const BlockEmitter::Step& s) {
-  using namespace cpu_detail;
-  std::vector<u32> regs;
-  for (u32 r : {rs(s.word), rt(s.word)})
-    if (r != 0 && reads_reg(s.word, r) && (regs.empty() || regs[0] != r)) regs.push_back(r);
-  return regs;
-}
-
-// CpuT::shadow_stall() where shadow_reg_ is nonzero, inline up to the wait: the shadow clears
-// once the access has ended, and only an instruction reading the shadowed register may wait
-// (`stall`: stall_stub(), with ecx = the register). Falls through where nothing waits.
-void Impl::shadow_check(const Step& s, Label& stall) {
-  Label &clear = cold_label(), &back = cold_label();
-  mov(ecx, cpu32(lay.shadow_reg));  // ecx: eax may hold a register (eax_reg)
-  test(ecx, ecx);
-  jz(back);
-  cmp(now, cpu64(lay.load_done_at));
-  jae(clear, T_NEAR);
-  for (u32 r : shadowable_reads(s)) {
-    cmp(ecx, r);
-    je(stall, T_NEAR);
-  }
-  L(back);
-  cold.push_back([this, &clear, &back] {
-    L(clear);
-    mov(cpu32(lay.shadow_reg), 0);
-    jmp(back, T_NEAR);
-  });
-}
-
-// The wait of CpuT::shadow_stall() for instruction k, which reads the register shadowed (ecx)
-// before its load's access has ended, returning to its stall_back: none in the load's delay slot
-// (load_reg_ is the shadowed register: the old value is read), else until the access ends.
-void Impl::stall_stub(size_t k, Segment& seg) {
-  const Pipe& pipe = seg.pipe[k];
-  L(seg.stall[k]);
-  if (pipe.dynamic) {
-    cmp(ecx, cpu32(lay.load_reg));
-    je(seg.stall_back[k], T_NEAR);
-  } else if (pipe.after_load && pipe.load_reg != 0) {
-    cmp(ecx, pipe.load_reg);
-    je(seg.stall_back[k], T_NEAR);
-  }
-  mov(now, cpu64(lay.load_done_at));
-  mov(cpu32(lay.shadow_reg), 0);
-  jmp(seg.stall_back[k], T_NEAR);
-}
-
 // The block's end: RecompilerT::run()'s next loop pass. When it would call the block that
 // find()'s table holds for the pc (no stop, time before the deadline, no idle-loop head to hand
 // to IdleSkip but one backing off, loop_head_routine(), no written code pages whose blocks must
@@ -672,53 +623,6 @@ void Impl::prologue(const Layout& layout) {
 void Impl::epilogue() {
   add(rsp, 8);
   for (const Xbyak::Reg64& r : {rbp, r15, r14, r13, r12, rbx}) pop(r);
-}
-
-// The most cycles instruction j of a native run can add to the time and to when the loads,
-// multiplies and divides and GTE commands in flight end (its own cycle, a load's issue and bus
-// access, LWC2's read, a command's or a multiply's or divide's duration, and the fill of a line
-// it is the first of the run to reach), once it has waited for those in flight (longest_wait()).
-u32 Impl::most_cycles(std::span<const Step> run, size_t j) const {
-  using namespace cpu_detail;
-  const Step& s = run[j];
-  const NativeOp op = s.native;
-  u32 cycles = 1;
-  if ((j == 0 || (s.pc & 15) == 0) && fills_natively(s.pc)) cycles += 4 * lay.fetch_word_cycles;
-  if (is_load(op)) cycles += u32(lay.load_issue + lay.load_bus);
-  else if (op == NativeOp::Lwc2) cycles += u32(lay.ram_read);
-  else if (op == NativeOp::Gte) cycles += lay.gte_cycles(s.word & 0x1FFFFFF);
-  else if (op == NativeOp::Mult || op == NativeOp::Multu) cycles += kMultiplySlowCycles;
-  else if (op == NativeOp::Div || op == NativeOp::Divu) cycles += kDivideCycles;
-  return cycles;
-}
-
-// How far past the time a wait by one of `rest` can reach: a load's access ends at most
-// load_bus + 1 cycles after the load (CpuT::timed_read(); a fill waits for it too), a GTE
-// command at most gte_longest after it starts, a multiply or divide at most kDivideCycles, and
-// time only grows, so each stays within that of the time. Only the waits `rest` makes count.
-u32 Impl::longest_wait(std::span<const Step> rest) const {
-  u32 wait = u32(lay.load_bus + 1);
-  for (const Step& s : rest) {
-    if (is_cop2(s.native)) wait = std::max(wait, lay.gte_longest);
-    if (s.native == NativeOp::Mfhi || s.native == NativeOp::Mflo) wait = std::max(wait, cpu_detail::kDivideCycles);
-  }
-  return wait;
-}
-
-// The deadline checks before instructions k + 1 .. count - 1 of a segment (and before k itself
-// where it resumes after a call), made once before instruction k (and its line's fill): when the
-// time plus `budget` (Segment::budget[k]) is before the deadline, every one of them would pass,
-// so native code runs on without them; otherwise the instructions run as their calls (`fail`),
-// which check the deadline one by one. Each of those instructions adds at most most_cycles() to
-// the time, after waiting at most longest_wait(). Leaves rax changed.
-void Impl::budget_check(u32 budget, Label& fail) {
-  if (budget == 0) {
-    cmp(now, deadline);
-  } else {
-    lea(rax, ptr[now + int(budget)]);
-    cmp(rax, deadline);
-  }
-  jae(fail, T_NEAR);
 }
 
 // A segment's labels and what each instruction knows when it starts: the load delay slot

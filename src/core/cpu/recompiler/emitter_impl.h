@@ -2,8 +2,9 @@
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
 // operations and branches), block_emitter_icache.cpp (i-cache line checks and fills),
 // block_emitter_memory.cpp (loads, stores, HI/LO moves), block_emitter_muldiv.cpp (multiplies
-// and divides) and block_emitter_cop2.cpp (GTE moves and commands). Only they include this
-// header (and with it xbyak). Registers while a block runs:
+// and divides), block_emitter_cop2.cpp (GTE moves and commands) and block_emitter_timing.cpp (the
+// deadline's budget, the load shadow). Only they include this header (and with it xbyak).
+// Registers while a block runs:
 // rbx = the context (the CPU) plus Layout::bias, r12 = the i-cache's tags (its words lie at a
 // fixed distance from them), r13d = a load's or store's address, r14 = the scheduler's time and
 // r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
@@ -165,11 +166,6 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);
   void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
   void sync_pc(std::span<const Step> run, size_t j);
-  void shadow_check(const Step& s, Xbyak::Label& stall);
-  void stall_stub(size_t k, Segment& seg);
-  u32 most_cycles(std::span<const Step> run, size_t j) const;
-  u32 longest_wait(std::span<const Step> rest) const;
-  void budget_check(u32 budget, Xbyak::Label& fail);
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
@@ -202,6 +198,13 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter_cop2.cpp
   void wait_gte();
   void cop2(NativeOp op, u32 i);
+  // block_emitter_timing.cpp
+  u32 most_cycles(std::span<const Step> run, size_t j) const;
+  u32 longest_wait(std::span<const Step> rest) const;
+  void budget_check(u32 budget, Xbyak::Label& fail);
+  static std::vector<u32> shadowable_reads(const Step& s);
+  void shadow_check(const Step& s, Xbyak::Label& stall);
+  void stall_stub(size_t k, Segment& seg);
 };
 
 }  // namespace psx

@@ -439,7 +439,10 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   else if (is_cop2(op)) cop2(op, s.word);
   else alu(op, s.word);
   if (d != 0) mov(reg(d), eax);
-  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word));  // leaves eax
+  // Only a store (into compiled code), LWC2/SWC2 and the GTE's instructions call out of the main
+  // path, which may change r10.
+  const bool r10_kept = !is_store_or_swc2(op) && op != NativeOp::Lwc2 && !is_cop2(op);
+  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), r10_kept);  // leaves eax
   eax_reg = d;
 }
 
@@ -458,10 +461,12 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 
 // execute_at_pc()'s load delay slot after the instruction: the previous instruction's load
 // lands unless this one wrote the register (write_reg and delayed_load clear load_reg_ for
-// `cleared`), and this one's load (`load`: eax to rt) becomes the pending one.
+// `cleared`), and this one's load (`load`: eax to rt) becomes the pending one. The value landing
+// comes from r10d, which the load left there, where this instruction has not called out
+// (`r10_kept`), else from load_val_.
 // Where it is not known (a segment's first instruction), an empty slot (load_reg_ and load_val_
 // both zero, which then stay so) is checked for and the rest left to the cold code.
-void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt) {
+void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept) {
   if (pipe.dynamic) {
     Label &pending = cold_label(), &back = cold_label();
     mov(ecx, cpu32(lay.load_reg));
@@ -487,12 +492,17 @@ void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt) {
       jmp(back, T_NEAR);
     });
   } else if (pipe.after_load && pipe.load_reg != 0 && pipe.load_reg != cleared) {
-    mov(edx, cpu32(lay.load_val));
-    mov(reg(pipe.load_reg), edx);
+    if (r10_kept) {
+      mov(reg(pipe.load_reg), r10d);
+    } else {
+      mov(edx, cpu32(lay.load_val));
+      mov(reg(pipe.load_reg), edx);
+    }
   }
   if (load) {
     mov(cpu32(lay.load_reg), rt);
     mov(cpu32(lay.load_val), eax);
+    mov(r10d, eax);
   } else if (pipe.after_load) {
     mov(cpu32(lay.load_reg), 0);
     mov(cpu32(lay.load_val), 0);
@@ -700,6 +710,7 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
   }
   guard(run.subspan(k + 1), seg.slow[k + 1], Checks::routine, seg.budget[k + 1]);
   if (seg.eax_at[k + 1] != 0) mov(eax, reg(seg.eax_at[k + 1]));  // as native code left it
+  if (seg.pipe[k + 1].after_load) mov(r10d, cpu32(lay.load_val));
   sub(instructions, int(k + 1));  // native code counts from where it resumes
   if (loops_natively) mov(byte[rsp], 1);  // a call since the block's guard (chain())
   // Instruction 0 may have been a delay slot whose branch went on to instruction 1, which then

@@ -6,7 +6,9 @@
 // deadline's budget, the load shadow). Only they include this header (and with it xbyak).
 // Registers while a block runs:
 // rbx = the context (the CPU) plus Layout::bias, r12 = the i-cache's tags (its words lie at a
-// fixed distance from them), r13d = a load's or store's address, r14 = the scheduler's time and
+// fixed distance from them), r10d = the value of the load the previous instruction made (load_val_,
+// which native() lands from r10d where nothing called out since), r13d = a load's or store's
+// address, r14 = the scheduler's time and
 // r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
 // native code runs: flush() writes the time and the count back before anything outside the
 // block can look, reload() reads all three after a call). Within a native segment rbp stays the
@@ -164,7 +166,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter.cpp
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);
-  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt);
+  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept);
   void sync_pc(std::span<const Step> run, size_t j);
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);

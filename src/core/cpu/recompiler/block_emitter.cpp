@@ -83,17 +83,6 @@ u32 Impl::dest(NativeOp op, u32 i) {
   return op >= NativeOp::Sll ? cpu_detail::rd(i) : cpu_detail::rt(i);
 }
 
-void Impl::read_pair(u32 a, u32 b) {
-  if (in_eax(b) && !in_eax(a)) {
-    mov(ecx, eax);
-    mov(eax, reg(a));
-    return;
-  }
-  read_eax(a);
-  if (b == a) mov(ecx, eax);
-  else mov(ecx, reg(b));
-}
-
 // eax = the instruction's result (CpuT::execute's value for write_reg). Sources come from eax
 // where it holds them (eax_reg).
 void Impl::alu(NativeOp op, u32 i) {
@@ -525,7 +514,7 @@ void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kep
 // through it changes nothing the guard checked but what this chain checks (the time, a stop, a
 // hook, the loop head), and no i-cache line the block uses (a fill stub refills a line with the
 // words compiled; stores leave the i-cache alone).
-void Impl::chain(bool clean, Label* loop, u32 loop_budget) {
+void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget) {
   Label back, no_loop_head;
   cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
@@ -552,7 +541,7 @@ void Impl::chain(bool clean, Label* loop, u32 loop_budget) {
       Label guarded;
       cmp(byte[rsp], 0);
       jne(guarded);
-      if (loop_budget > 0) budget_check(loop_budget, guarded);
+      if (loop_budget) budget_check(*loop_budget, guarded);
       jmp(*loop, T_NEAR);
       L(guarded);
     }
@@ -654,9 +643,10 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
   }
   // budget[k]: waits and cycles of instructions k .. count - 2 (none for the last instruction).
   seg.budget.assign(seg.count, 0);
-  for (size_t k = seg.count - 1, cycles = 0; k-- > 0;) {
+  for (u32 k = u32(seg.count) - 1, cycles = 0, wait = 0; k-- > 0;) {
     cycles += most_cycles(run, k);
-    seg.budget[k] = u32(cycles) + longest_wait(run.subspan(k, seg.count - 1 - k));
+    wait = std::max(wait, longest_wait(run[k]));
+    seg.budget[k] = cycles + wait;
   }
 }
 
@@ -768,9 +758,10 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     seg.count = i - seg.first;
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
     g.plan(run, seg);
-    g.guard(run, seg.slow[0], seg.first == 0 ? Impl::Checks::entry : Impl::Checks::all,
-            seg.count > 1 ? std::optional<u32>(seg.budget[0]) : std::nullopt, g.fill_entry(run[0].pc, seg, 0),
-            &seg.filled[0]);
+    // A run of one instruction checks no deadline within it.
+    const std::optional<u32> budget = seg.count > 1 ? std::optional<u32>(seg.budget[0]) : std::nullopt;
+    g.guard(run, seg.slow[0], seg.first == 0 ? Impl::Checks::entry : Impl::Checks::all, budget,
+            g.fill_entry(run[0].pc, seg, 0), &seg.filled[0]);
     for (size_t k = 0; k < seg.count; ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);
@@ -779,7 +770,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     g.add(g.instructions, int(seg.count));
     g.sync_pc(run, seg.count - 1);
     if (i == steps.size())  // the block's native end
-      g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, seg.count > 1 ? seg.budget[0] : 0);
+      g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, budget);
     g.L(seg.end);
   }
   g.L(done);

@@ -29,17 +29,16 @@ u32 Impl::most_cycles(std::span<const Step> run, size_t j) const {
   return cycles;
 }
 
-// How far past the time a wait by one of `rest` can reach: a load's access ends at most
-// load_bus + 1 cycles after the load (CpuT::timed_read(); a fill waits for it too), a GTE
-// command at most gte_longest after it starts, a multiply or divide at most kDivideCycles, and
-// time only grows, so each stays within that of the time. Only the waits `rest` makes count.
-u32 Impl::longest_wait(std::span<const Step> rest) const {
-  u32 wait = u32(lay.load_bus + 1);
-  for (const Step& s : rest) {
-    if (is_cop2(s.native)) wait = std::max(wait, lay.gte_longest);
-    if (s.native == NativeOp::Mfhi || s.native == NativeOp::Mflo) wait = std::max(wait, cpu_detail::kDivideCycles);
-  }
-  return wait;
+// How far past the time instruction s's wait for work already under way can reach: a load's
+// access ends at most load_bus + 1 cycles after the load (CpuT::timed_read(); every instruction
+// may wait for it, through the shadow or a fill), a GTE command (which s waits for if it is a
+// GTE instruction) at most gte_longest after it starts, a multiply or divide (MFHI/MFLO) at most
+// kDivideCycles; time only grows, so each stays within that of the time.
+u32 Impl::longest_wait(const Step& s) const {
+  const u32 load = u32(lay.load_bus + 1);
+  if (is_cop2(s.native)) return std::max(load, lay.gte_longest);
+  if (s.native == NativeOp::Mfhi || s.native == NativeOp::Mflo) return std::max(load, cpu_detail::kDivideCycles);
+  return load;
 }
 
 // The deadline checks before instructions k + 1 .. count - 1 of a segment (and before k itself
@@ -47,7 +46,7 @@ u32 Impl::longest_wait(std::span<const Step> rest) const {
 // time plus `budget` (Segment::budget[k]) is before the deadline, every one of them would pass,
 // so native code runs on without them; otherwise the instructions run as their calls (`fail`),
 // which check the deadline one by one. Each of those instructions adds at most most_cycles() to
-// the time, after waiting at most longest_wait(). Leaves rax changed.
+// the time, after a first wait of at most the longest of their longest_wait(). Leaves rax changed.
 void Impl::budget_check(u32 budget, Label& fail) {
   if (budget == 0) {
     cmp(now, deadline);

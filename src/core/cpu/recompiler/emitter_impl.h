@@ -6,14 +6,13 @@
 // deadline's budget, the load shadow). Only they include this header (and with it xbyak).
 // Registers while a block runs:
 // rbx = the context (the CPU) plus Layout::bias, r12 = the i-cache's tags (its words lie at a
-// fixed distance from them), r10d = the value of the load the previous instruction made (load_val_,
-// which native() lands from r10d where nothing called out since), r13d = a load's or store's
-// address, r14 = the scheduler's time and
-// r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale while
-// native code runs: flush() writes the time and the count back before anything outside the
-// block can look, reload() reads all three after a call). Within a native segment rbp stays the
-// count at the segment's start: instruction k adds nothing, and every way out of the segment
-// adds the k instructions run (its end, a deadline exit, a slow or fallback call).
+// fixed distance from them), r10d = the value of the load the previous instruction made
+// (load_val_, which native() lands from r10d where nothing called out since), r13d = a load's or
+// store's address, r14 = the scheduler's time and r15 = its deadline, rbp = the CPU's instruction
+// count (the cells in memory are stale while native code runs: flush() writes the time and the
+// count back before anything outside the block can look, reload() reads all three after a call).
+// Within a native segment rbp stays the count at the segment's start: instruction k adds nothing,
+// and every way out of the segment adds the k instructions run (its end, a slow or fallback call).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -98,7 +97,16 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
     if (!in_eax(r)) mov(eax, reg(r));
   }
   // eax = register a, ecx = register b.
-  void read_pair(u32 a, u32 b);
+  void read_pair(u32 a, u32 b) {
+    if (in_eax(b) && !in_eax(a)) {
+      mov(ecx, eax);
+      mov(eax, reg(a));
+      return;
+    }
+    read_eax(a);
+    if (b == a) mov(ecx, eax);
+    else mov(ecx, reg(b));
+  }
   Xbyak::Address cpu32(int off) { return dword[rbx + off]; }
   Xbyak::Address cpu64(int off) { return qword[rbx + off]; }
   // Time lives in registers inside a block: `now` counts native instructions' cycles without a
@@ -171,7 +179,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
-  void chain(bool clean, Xbyak::Label* loop = nullptr, u32 loop_budget = 0);
+  void chain(bool clean, Xbyak::Label* loop = nullptr, std::optional<u32> loop_budget = std::nullopt);
   // The block being emitted: its pc, its entry, and whether a branch of it goes back there (a
   // clean chain() then tries its own clean entry first).
   u32 block_pc = 0;
@@ -202,7 +210,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void cop2(NativeOp op, u32 i);
   // block_emitter_timing.cpp
   u32 most_cycles(std::span<const Step> run, size_t j) const;
-  u32 longest_wait(std::span<const Step> rest) const;
+  u32 longest_wait(const Step& s) const;
   void budget_check(u32 budget, Xbyak::Label& fail);
   static std::vector<u32> shadowable_reads(const Step& s);
   void shadow_check(const Step& s, Xbyak::Label& stall);

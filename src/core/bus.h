@@ -113,6 +113,8 @@ class Bus {
   // DMA moves whole words between RAM and devices; addresses wrap inside the 2 MiB RAM.
   void dma_write_ram(u32 addr, const u32* words, u32 count);
   void dma_read_ram(u32 addr, u32* words, u32 count) const;
+  // One word, as dma_read_ram() reads it (a linked list's node header, once per node).
+  u32 dma_read_word(u32 addr) const { return load_le32(&ram_[addr & (kRamSize - 4)]); }
 
   void load_bios(const std::vector<u8>& image);
   bool has_bios() const { return has_bios_; }

@@ -209,23 +209,31 @@ u32 Dma::run_block(u32 ch) {
   return size;
 }
 
+// may_run() can change only where words reach the device (its request follows the device's
+// state, which nothing else changes during the slice) or where the list ends (finish() clears
+// Busy): time only grows, and a channel once past its resume_at stays past it. So after an empty
+// node (an ordering table's unused entry, most of a frame's list) the answer last given still
+// holds, and only Busy is checked again.
 u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
   Channel& c = channels_[ch];
   c.chcr &= ~kChcrTrigger;
   u32 moved = 0;
+  bool vouched = false;  // may_run() held after the trigger's clearing, and no words moved since
   do {
     // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the
     // device.
     const u32 addr = c.madr & kAddressMask;
-    u32 header = 0;
-    bus_.dma_read_ram(addr, &header, 1);
+    const u32 header = bus_.dma_read_word(addr);
     const u32 count = header >> 24;
-    if (count) to_device(ch, addr + 4, count, false);
+    if (count) {
+      to_device(ch, addr + 4, count, false);
+      vouched = false;
+    }
     charge(ch, count + 1);
     moved += count + 1;
     c.madr = header & 0x00FFFFFF;
     if (c.madr & 0x00800000) finish(ch);  // end marker 0x00FFFFFF (hardware tests bit 23)
-  } while (alone && moved < budget && may_run(ch));
+  } while (alone && moved < budget && (vouched ? (c.chcr & kChcrBusy) != 0 : (vouched = may_run(ch))));
   return moved;
 }
 

@@ -351,6 +351,76 @@ TEST_F(DmaTest, LinkedListWaitsWhileTheDeviceStopsRequesting) {
   EXPECT_EQ(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
 }
 
+TEST_F(DmaTest, LinkedListTriggerForcesOneEmptyNodeOnly) {
+  // Start/Trigger forces one node without a request; the next one waits for the device even when
+  // the forced node delivered nothing (an ordering table's empty entry).
+  w(kDpcr, 0x00000800);
+  gpu.request = false;
+  set_ram32(0x100, 0x00000200);
+  set_ram32(0x200, 0x00000300);
+  set_ram32(0x300, 0x01FFFFFF);
+  set_ram32(0x304, 0x33333333);
+  w(reg(2, kMadr), 0x100);
+  w(reg(2, kChcr), 0x11000401);
+  EXPECT_EQ(r(reg(2, kMadr)), 0x200u);
+  EXPECT_TRUE(gpu.received.empty());
+  gpu.request = true;
+  run_for(65);
+  EXPECT_EQ(gpu.received, std::vector<u32>{0x33333333});
+  EXPECT_EQ(r(reg(2, kMadr)), 0x00FFFFFFu);
+}
+
+TEST_F(DmaTest, LinkedListOfEmptyNodesChargesEachHeader) {
+  // 100 empty nodes, then one of a word: 102 words at the GPU's 0110h clocks per 100h words
+  // (psx-spx), 102 * 272 / 256 = 108.375 -> 108 cycles.
+  w(kDpcr, 0x00000800);
+  for (u32 i = 0; i < 100; ++i) set_ram32(0x1000 + 4 * i, 0x1000 + 4 * (i + 1));
+  set_ram32(0x1000 + 400, 0x01FFFFFF);
+  set_ram32(0x1000 + 404, 0x44444444);
+  w(reg(2, kMadr), 0x1000);
+  const Cycles t0 = sched.now();
+  w(reg(2, kChcr), 0x01000401);
+  EXPECT_EQ(sched.now() - t0, 108u);
+  EXPECT_EQ(gpu.received, std::vector<u32>{0x44444444});
+  EXPECT_EQ(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
+}
+
+TEST_F(DmaTest, LinkedListStopsAfterTheNodeThatEndsTheRequest) {
+  // Empty nodes before and after a node whose word ends the device's request: the list waits at
+  // the node after it.
+  w(kDpcr, 0x00000800);
+  gpu.busy_word = 0xC0000000;
+  set_ram32(0x100, 0x00000200);
+  set_ram32(0x200, 0x01000300);
+  set_ram32(0x204, 0xC0000000);
+  set_ram32(0x300, 0x00000400);
+  set_ram32(0x400, 0x01FFFFFF);
+  set_ram32(0x404, 0x55555555);
+  w(reg(2, kMadr), 0x100);
+  w(reg(2, kChcr), 0x01000401);
+  EXPECT_EQ(gpu.received, std::vector<u32>{0xC0000000});
+  EXPECT_EQ(r(reg(2, kMadr)), 0x300u);
+}
+
+TEST_F(DmaTest, BurstIntoRamWrapsAtItsEndAndDropsCodeOnBothSides) {
+  // MADR 1FFFF8h, four words from the device: the last two land at 0 and 4 (RAM repeats every
+  // 2 MiB, psx-spx "Memory Map"), and compiled code on both pages is dropped.
+  CodePages pages;
+  bus.attach_code_pages(&pages);
+  pages.mark_compiled(0x001FFFFC, 0x001FFFFC);
+  pages.mark_compiled(0x00000004, 0x00000004);
+  w(kDpcr, 0x00008000);
+  w(reg(3, kMadr), 0x1FFFF8);
+  w(reg(3, kBcr), 4);
+  w(reg(3, kChcr), 0x11000000);  // CD-ROM to RAM, sync mode 0, start + trigger
+  EXPECT_EQ(ram32(0x1FFFF8), 0x100u);
+  EXPECT_EQ(ram32(0x1FFFFC), 0x101u);
+  EXPECT_EQ(ram32(0x0), 0x102u);
+  EXPECT_EQ(ram32(0x4), 0x103u);
+  EXPECT_EQ(pages.take_dirty(), (std::vector<u32>{0x1FFF, 0x0}));
+  bus.attach_code_pages(nullptr);
+}
+
 TEST_F(DmaTest, EndlessLinkedListDoesNotHangHost) {
   w(kDpcr, 0x00000800);
   set_ram32(0x100, 0x01000100);  // a node that points at itself

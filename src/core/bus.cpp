@@ -1,6 +1,7 @@
 // Bus: region decoding, access timing, I/O dispatch and the expansion-2 debug ports.
 #include "core/bus.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -290,11 +291,15 @@ void Bus::expansion2_write(u32 p, u32 v, u32 width) {
 }
 
 void Bus::dma_write_ram(u32 addr, const u32* words, u32 count) {
-  for (u32 i = 0; i < count; ++i) {
-    u32 off = (addr + i * 4) & (kRamSize - 4);
-    if (code_pages_) code_pages_->on_ram_write(off);
-    if (watches_ && watches_->ram_block_watched(off)) watched_store(&ram_[off], off, words[i], 4);
-    else store_le32(&ram_[off], words[i]);
+  // In runs up to RAM's end, where the address wraps; the code pages hear of a run at once.
+  for (u32 i = 0; i < count;) {
+    const u32 start = (addr + i * 4) & (kRamSize - 4);
+    const u32 run = std::min(count - i, (kRamSize - start) / 4);
+    if (code_pages_) code_pages_->on_ram_range(start, run * 4);
+    for (u32 off = start; off < start + run * 4; off += 4, ++i) {
+      if (watches_ && watches_->ram_block_watched(off)) watched_store(&ram_[off], off, words[i], 4);
+      else store_le32(&ram_[off], words[i]);
+    }
   }
 }
 

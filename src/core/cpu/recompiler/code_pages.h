@@ -41,6 +41,21 @@ class CodePages {
     dirty_.push_back(off >> kPageBits);
     any_dirty_ = true;
   }
+  // Writes to the `bytes` bytes from RAM offset `off` (word-aligned, not past RAM's end), as
+  // on_ram_write() for each word, a page at a time (a DMA into RAM).
+  void on_ram_range(u32 off, u32 bytes) {
+    for (const u32 end = off + bytes; off < end;) {
+      const u32 page = off >> kPageBits, page_end = std::min(end, (page + 1) << kPageBits);
+      const u32 words = (page_end - off) >> 2;
+      const u64 mask = (words == 64 ? ~u64{0} : (u64{1} << words) - 1) << ((off >> 2) & 63);
+      if (code_[page] & mask) {
+        code_[page] = 0;
+        dirty_.push_back(page);
+        any_dirty_ = true;
+      }
+      off = page_end;
+    }
+  }
   // The word bits in place (kPages u64s, never reallocated), for native stores, which call
   // on_ram_write() only for a word whose bit is set.
   const u64* bits() const { return code_.data(); }

@@ -115,11 +115,31 @@ void DrawQueue::push(DrawCommand& c) {
     DrawCommand& first = queue_[n - 2];
     const Rect a = first.write, b = last.write;
     const Rect bounds{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
-    const Rect pair = bounds.area() >= kMinCover ? triangle_pair_cover(first, last) : Rect{};
+    const Rect pair = bounds.area() >= kMinCover ? pair_cover(first, last) : Rect{};
     if (!pair.empty()) first.cover = pair, first.cover_with_next = true, end = n - 2;
   }
   if (queue_[end].cover.area() >= kMinCover) prune(queue_[end].cover, end);
   if (queue_.size() > kMaxCommands || pixels_.size() > kMaxPixels) flush();
+}
+
+Rect DrawQueue::pair_cover(const DrawCommand& first, const DrawCommand& second) {
+  using Kind = DrawCommand::Kind;
+  if (first.kind != Kind::Triangle || second.kind != Kind::Triangle) return {};
+  PairKey key;
+  const DrawCommand* pair[2] = {&first, &second};
+  for (u32 i = 0; i < 2; ++i) {
+    const Triangle& t = pair[i]->triangle;
+    const DrawState& ds = pair[i]->ds;
+    for (u32 v = 0; v < 3; ++v) key.xy[6 * i + 2 * v] = t.v[v].x, key.xy[6 * i + 2 * v + 1] = t.v[v].y;
+    const s32 state[5] = {ds.area_left, ds.area_top, ds.area_right, ds.area_bottom,
+                          t.textured | t.semi << 1 | ds.check_mask << 2 | (ds.skip_row_parity + 1) << 3};
+    std::copy(state, state + 5, key.state.begin() + 5 * i);
+  }
+  for (const PairMemo& m : pair_memo_)
+    if (m.used && m.key == key) return m.cover;
+  PairMemo& m = pair_memo_[pair_memo_next_++ % pair_memo_.size()];
+  m = {key, triangle_pair_cover(first, second), true};
+  return m.cover;
 }
 
 void DrawQueue::execute(const DrawCommand& c, bool after_frame) {

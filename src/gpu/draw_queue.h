@@ -12,6 +12,7 @@
 // that writes only inside it, unless a later kept call, or the frame due, may read what it wrote.
 // Past a size cap the queue is drawn.
 #pragma once
+#include <array>
 #include <vector>
 
 #include "gpu/draw_command.h"
@@ -59,6 +60,25 @@ class DrawQueue {
   void convert_frame();
   void prune(const Rect& cover, size_t end);
   void compact();
+  // triangle_pair_cover() through a memo of the last 32 pairs met, by all it depends on (the
+  // vertices' positions, the flags that let a triangle keep old pixels, the drawing areas): a
+  // game draws the same background quad every frame, and walking its rows costs more than the
+  // rest of its queueing. Fewer entries let the pairs that never cover (a small triangle and the
+  // quad's first half) push the quad out: Tumble's pairs cost 97 M host instructions in 100 moves
+  // without a memo, 90 M with 4 entries, 31 M with 16.
+  Rect pair_cover(const DrawCommand& first, const DrawCommand& second);
+  struct PairKey {
+    std::array<s32, 12> xy{};     // both triangles' vertices
+    std::array<s32, 10> state{};  // per triangle: its area (4), then textured, semi, check_mask, row parity
+    bool operator==(const PairKey&) const = default;
+  };
+  struct PairMemo {
+    PairKey key;
+    Rect cover;
+    bool used = false;
+  };
+  std::array<PairMemo, 32> pair_memo_{};
+  size_t pair_memo_next_ = 0;
 
   FrameOutput& output_;
   Renderer* target_ = nullptr;

@@ -275,6 +275,57 @@ TEST(GpuDeferred, QueueStaysBoundedWithoutObserver) {
   ASSERT_EQ(t.eager.state(), t.lazy.state());
 }
 
+// The queue remembers the last background quads it met (DrawQueue::pair_cover): the same
+// positions drawn semi-transparent, textured, under the mask check or in another drawing area
+// replace less or nothing, so the small triangles drawn before them must stay. Each variant
+// follows the opaque quad that was remembered, and VRAM after it is what eager drawing gave.
+TEST(GpuDeferred, RememberedBackgroundQuadsTellVariantsApart) {
+  Twins t;
+  t.gp1(0x08000001), t.gp1(0x03000000), t.gp1(0x05000000);
+  t.gp0(0xE1000200 | 8);  // dither, texture page x 512
+  // A four-point polygon over the whole 320x240 screen, of colours `c` and `c` ^ 0x3C3C3C.
+  const auto quad = [&](u32 command, u32 c) {
+    const bool textured = command & 0x04000000;
+    t.gp0(command | c), t.gp0(xy(0, 0));
+    if (textured) t.gp0(0x78000000);
+    t.gp0(c), t.gp0(xy(320, 0));
+    if (textured) t.gp0(0x00080010);
+    t.gp0(c ^ 0x3C3C3C), t.gp0(xy(0, 240));
+    if (textured) t.gp0(0x1000);
+    t.gp0(c ^ 0x3C3C3C), t.gp0(xy(320, 240));
+    if (textured) t.gp0(0x1010);
+  };
+  // Small flat triangles in the top and the bottom half, with the mask bit set (E6h bit 0).
+  const auto small = [&](u32 c) {
+    t.gp0(0xE6000001);
+    for (int i = 0; i < 8; ++i)
+      for (int y : {40, 180})
+        t.gp0(0x20000000 | c), t.gp0(xy(20 + 30 * i, y)), t.gp0(xy(40 + 30 * i, y)), t.gp0(xy(20 + 30 * i, y + 20));
+    t.gp0(0xE6000000);
+  };
+  constexpr u32 kQuad = 0x38000000;  // shaded four-point polygon, opaque
+  const std::vector<std::vector<u32>> variants = {
+      {0x3A000000},                                                       // semi-transparent
+      {0x3C000000},                                                       // textured (all texels 0)
+      {0xE6000002, kQuad, 0xE6000000},                                    // mask check
+      {0xE4000000 | 119u << 10 | 1023, kQuad, 0xE4000000 | 511u << 10 | 1023},  // area to row 119
+  };
+  t.gp0(0xE3000000), t.gp0(0xE4000000 | 511u << 10 | 1023);
+  u32 colour = 0x102030;
+  for (const auto& variant : variants) {
+    quad(kQuad, colour);
+    small(colour ^ 0x808080);
+    for (u32 w : variant) {
+      if ((w >> 24) >= 0x38 && (w >> 24) <= 0x3F) quad(w, colour ^ 0x204060);
+      else t.gp0(w);
+    }
+    // The next variant's opaque quad hides all of this: look now (which draws the queue).
+    ASSERT_EQ(std::memcmp(t.eager.gpu.vram(), t.lazy.gpu.vram(), psx::gpu::kVramPixels * 2), 0) << std::hex
+                                                                                                 << variant[0];
+    colour += 0x182838;
+  }
+}
+
 // Tumble, playing a level with the console's pixels unobserved, ends every move in the same
 // whole save state as with them observed.
 TEST(GpuDeferred, TumbleMovesSameStates) {

@@ -144,6 +144,40 @@ TEST(RecompilerTiming, ProbedRandomStreams) {
   }
 }
 
+// The shadow after a load of the segment is that load's register or has ended (every load waits
+// for the access before it), which native code takes as known (shadow_known()): a RAM load, then
+// a scratchpad load, a store or another RAM load, then a divide read back by MFLO (its wait
+// outlasts the access) or not, then one or two instructions reading the first load's register,
+// the second's, both or neither, and the block's end, where the saved shadow shows whether the
+// check cleared it and whether an instruction waited.
+TEST(RecompilerTiming, ShadowAfterLoadsOfEveryKind) {
+  constexpr u32 kT2 = 10;
+  std::vector<u32> code;
+  for (u32 second = 0; second < 3; ++second) {
+    for (u32 use = 0; use < 4; ++use) {
+      for (u32 wait = 0; wait < 2; ++wait) {
+        code.push_back(itype(0x23, kS7, kT0, 4 * (second + use)));  // LW t0 from RAM
+        switch (second) {
+          case 0: code.push_back(itype(0x23, kS6, kT1, 8)); break;     // LW t1 from the scratchpad
+          case 1: code.push_back(itype(0x2B, kS7, kT2, 0x100)); break;  // SW t2 to RAM
+          default: code.push_back(itype(0x20, kS7, kT1, 0x40)); break;  // LB t1 from RAM
+        }
+        if (wait) code.push_back(rtype(0x1A, kT2, kT2, 0)), code.push_back(rtype(0x12, 0, 0, kT3));  // DIV, MFLO
+        const u32 reads[4][2] = {{kT0, kT0}, {kT1, kT1}, {kT0, kT1}, {kT2, kT2}};
+        for (u32 n = 0; n <= use % 2; ++n) code.push_back(rtype(0x21, reads[use][0], reads[use][1], kT2));
+        code.push_back(j(kBase + 4 * (u32(code.size()) + 2)));  // on to the next block
+        code.push_back(kNop);
+      }
+    }
+  }
+  code.push_back(j(kBase));
+  code.push_back(kNop);
+  for (u32 seed = 1; seed <= 4; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_trace(code, seed, 20 + 15 * seed, 2);
+  }
+}
+
 // Straight ALU runs a whole block long, probed every 1 to 3 cycles: a return to the dispatcher
 // after nearly every native instruction, at every position within a segment.
 TEST(RecompilerTiming, ProbedEveryFewCycles) {

@@ -403,7 +403,9 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
   inc(now);
-  if (seg.shadow[k] == Shadow::check) {
+  if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
+    shadow_known(s, pipe, seg.shadowed[k]);
+  } else if (seg.shadow[k] == Shadow::check) {
     shadow_check(s, seg.stall[k]);
     L(seg.stall_back[k]);
   } else if (seg.shadow[k] == Shadow::clear) {
@@ -637,8 +639,12 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
   // Instructions since the last that may have left a load shadowed, this one included.
   const size_t reach = size_t(lay.load_issue + lay.load_bus - 1);
   seg.shadow.resize(seg.count);
-  for (size_t k = 0, since = 1; k < seg.count; ++k) {
+  seg.shadowed.assign(seg.count, Segment::kUnknownShadow);
+  for (size_t k = 0, since = 1, last = 0; k < seg.count; ++k) {
     seg.shadow[k] = since < reach ? Shadow::check : since == reach ? Shadow::clear : Shadow::none;
+    if (seg.shadow[k] == Shadow::check && k > 0 && is_load(run[last].native) && k - last < reach)
+      seg.shadowed[k] = cpu_detail::rt(run[last].word);
+    if (is_load(run[k].native)) last = k;
     since = is_load(run[k].native) ? 1 : since + 1;
   }
   // budget[k]: waits and cycles of instructions k .. count - 2 (none for the last instruction).
@@ -686,7 +692,9 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
     jmp(seg.slow[k], T_NEAR);
   }
   for (size_t k = 0; k < seg.count; ++k) {
-    if (seg.shadow[k] == Shadow::check && !shadowable_reads(run[k]).empty()) stall_stub(k, seg);
+    if (seg.shadow[k] == Shadow::check && seg.shadowed[k] == Segment::kUnknownShadow &&
+        !shadowable_reads(run[k]).empty())
+      stall_stub(k, seg);
     if ((k == 0 || (run[k].pc & 15) == 0) && fills_natively(run[k].pc)) fill_stub(run.subspan(k), k, seg);
   }
 }

@@ -88,6 +88,30 @@ void Impl::shadow_check(const Step& s, Label& stall) {
   });
 }
 
+// CpuT::shadow_stall() where a load of the segment, rt = r, is the last before instruction s
+// and within reach. Every load waits for the access before it (timed_read(): wait_load(), or
+// its own access starting after that one's end), so either the access in flight is that
+// load's, with shadow_reg_ = r, or it has ended (now >= load_done_at_), and then the check
+// clears shadow_reg_ whatever it holds. Which one is decided at run time, but whether s waits
+// is known now: when it reads r outside r's load delay slot. No stub and no register compare:
+// a waiting instruction moves time to the access's end (no earlier than now) and clears.
+void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r) {
+  const std::vector<u32> reads = shadowable_reads(s);
+  const bool delay_slot = pipe.after_load && pipe.load_reg == r;
+  if (r != 0 && !delay_slot && std::find(reads.begin(), reads.end(), r) != reads.end()) {
+    mov(rcx, cpu64(lay.load_done_at));
+    cmp(now, rcx);
+    cmovb(now, rcx);
+    mov(cpu32(lay.shadow_reg), 0);
+    return;
+  }
+  Label pending;
+  cmp(now, cpu64(lay.load_done_at));
+  jb(pending);
+  mov(cpu32(lay.shadow_reg), 0);
+  L(pending);
+}
+
 // The wait of CpuT::shadow_stall() for instruction k, which reads the register shadowed (ecx)
 // before its load's access has ended, returning to its stall_back: none in the load's delay slot
 // (load_reg_ is the shadowed register: the old value is read), else until the access ends.

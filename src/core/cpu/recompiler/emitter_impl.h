@@ -51,6 +51,10 @@ enum class Shadow : u8 { check, clear, none };
 struct Segment {
   size_t first, count;
   std::vector<Shadow> shadow;  // per instruction
+  // shadowed[k], where instruction k checks the shadow and a load of the segment lies within
+  // reach before it: that load's rt (see shadow_known()); kUnknownShadow elsewhere.
+  static constexpr u32 kUnknownShadow = ~0u;
+  std::vector<u32> shadowed;
   // budget[k]: the most cycles from instruction k's start to the last instruction's start, on top
   // of the time then (budget_check()).
   std::vector<u32> budget;
@@ -214,6 +218,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void budget_check(u32 budget, Xbyak::Label& fail);
   static std::vector<u32> shadowable_reads(const Step& s);
   void shadow_check(const Step& s, Xbyak::Label& stall);
+  void shadow_known(const Step& s, const Pipe& pipe, u32 r);
   void stall_stub(size_t k, Segment& seg);
 };
 

@@ -403,14 +403,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
   inc(now);
-  if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
-    shadow_known(s, pipe, seg.shadowed[k]);
-  } else if (seg.shadow[k] == Shadow::check) {
-    shadow_check(s, seg.stall[k]);
-    L(seg.stall_back[k]);
-  } else if (seg.shadow[k] == Shadow::clear) {
-    mov(cpu32(lay.shadow_reg), 0);
-  }
+  shadow(s, k, seg);
   if (after_branch) {
     mov(eax, cpu32(lay.next_pc));
     mov(cpu32(lay.pc), eax);

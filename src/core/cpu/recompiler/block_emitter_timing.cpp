@@ -88,6 +88,18 @@ void Impl::shadow_check(const Step& s, Label& stall) {
   });
 }
 
+// CpuT::shadow_stall() before instruction k, as seg.shadow[k] and seg.shadowed[k] say.
+void Impl::shadow(const Step& s, size_t k, Segment& seg) {
+  if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
+    shadow_known(s, seg.pipe[k], seg.shadowed[k]);
+  } else if (seg.shadow[k] == Shadow::check) {
+    shadow_check(s, seg.stall[k]);
+    L(seg.stall_back[k]);
+  } else if (seg.shadow[k] == Shadow::clear) {
+    mov(cpu32(lay.shadow_reg), 0);
+  }
+}
+
 // CpuT::shadow_stall() where a load of the segment, rt = r, is the last before instruction s
 // and within reach. Every load waits for the access before it (timed_read(): wait_load(), or
 // its own access starting after that one's end), so either the access in flight is that

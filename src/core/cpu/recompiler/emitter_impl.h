@@ -217,6 +217,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   u32 longest_wait(const Step& s) const;
   void budget_check(u32 budget, Xbyak::Label& fail);
   static std::vector<u32> shadowable_reads(const Step& s);
+  void shadow(const Step& s, size_t k, Segment& seg);
   void shadow_check(const Step& s, Xbyak::Label& stall);
   void shadow_known(const Step& s, const Pipe& pipe, u32 r);
   void stall_stub(size_t k, Segment& seg);

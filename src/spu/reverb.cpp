@@ -128,14 +128,14 @@ u32 Reverb::ticks_clear_of_capture() const {
   return ticks;
 }
 
-void Reverb::push_input(s32 in_left, s32 in_right) {
+inline void Reverb::push_input(s32 in_left, s32 in_right) {
   in_pos_ = (in_pos_ + 1) & (kRing - 1);
   in_history_[0][in_pos_] = static_cast<s16>(sat(in_left));
   in_history_[1][in_pos_] = static_cast<s16>(sat(in_right));
   zero_inputs_ = (in_left == 0 && in_right == 0) ? std::min(zero_inputs_ + 1, kRing) : 0;
 }
 
-void Reverb::end_tick() {
+inline void Reverb::end_tick() {
   if (phase_ == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
   phase_ ^= 1;
   if (clear_ticks_ > 0) --clear_ticks_;
@@ -147,10 +147,47 @@ void Reverb::skip_tick(s32 in_left, s32 in_right) {
   end_tick();
 }
 
+void Reverb::skip_quiet(u32 m) {
+  // Zero inputs: once kRing of them are in, every history entry is 0 and a push only moves in_pos_.
+  u32 pushed = 0;
+  for (; pushed < m && zero_inputs_ < kRing; ++pushed) push_input(0, 0);
+  in_pos_ = (in_pos_ + m - pushed) & (kRing - 1);
+  // The sides alternate, this tick's first; the buffer address moves after each right side.
+  const u32 first = (m + 1) / 2, second = m / 2;
+  const u32 right_ends = phase_ == 0 ? second : first;
+  out_pos_[phase_] = (out_pos_[phase_] + first) & (kRing - 1);
+  out_pos_[phase_ ^ 1] = (out_pos_[phase_ ^ 1] + second) & (kRing - 1);
+  for (u32 k = 0; k < right_ends; ++k) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
+  phase_ ^= m & 1;
+  clear_ticks_ = clear_ticks_ > m ? clear_ticks_ - m : 0;
+}
+
+bool Reverb::quiet_ticks(u32 n) {
+  if (clear_ticks_ == 0) clear_ticks_ = ticks_clear_of_capture();
+  if (clear_ticks_ < n) return false;
+  const u32 skipped = n > kTicksToOverwrite ? n - kTicksToOverwrite : 0;
+  skip_quiet(skipped);
+  for (u32 k = skipped; k < n; ++k) {
+    if (zero_inputs_ < kRing) push_input(0, 0);
+    else in_pos_ = (in_pos_ + 1) & (kRing - 1);
+    // owe() with clear_ticks_ > 0 (it counts down from n or more): the value is owed.
+    const u32 side = phase_;
+    const u32 pos = out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
+    owed_from_[side][pos] = {current_, downsample(side)};
+    owed_[side] |= u64{1} << pos;
+    end_tick();
+  }
+  return true;
+}
+
 void Reverb::owe_tick(s32 in_left, s32 in_right, u8* ram) {
   push_input(in_left, in_right);
   const u32 side = phase_;
-  const u32 pos = out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
+  owe(side, out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1), ram);
+  end_tick();
+}
+
+void Reverb::owe(u32 side, u32 pos, u8* ram) {
   const s32 input = downsample(side);
   if (clear_ticks_ == 0) clear_ticks_ = ticks_clear_of_capture();
   if (clear_ticks_ == 0) {
@@ -161,7 +198,6 @@ void Reverb::owe_tick(s32 in_left, s32 in_right, u8* ram) {
     owed_from_[side][pos] = {current_, input};
     owed_[side] |= u64{1} << pos;
   }
-  end_tick();
 }
 
 void Reverb::settle(u8* ram) {

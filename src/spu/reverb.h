@@ -59,6 +59,12 @@ class Reverb {
     if (later >= kTicksToOverwrite) skip_tick(in_left, in_right);
     else owe_tick(in_left, in_right, ram);
   }
+  // n unseen ticks of input 0 that end a catch-up (the k-th has n-1-k after it), as n
+  // unseen_tick() calls would make them, where none of them reads a capture buffer word (so
+  // every value is skipped or owed, and the capture buffers' writes meanwhile reach none):
+  // the skipped ones at once, the owed ones in a loop. Returns false, changing nothing, where
+  // one may read a capture buffer word.
+  bool quiet_ticks(u32 n);
   // Computes the owed values (tick() does it first; so must a save). Without writes (as owed)
   // process_side() only reads `ram`.
   void settle(u8* ram);
@@ -73,6 +79,11 @@ class Reverb {
   static_assert(kTicksToOverwrite == 2 * kRing);
   void push_input(s32 in_left, s32 in_right);
   void end_tick();
+  // What skip_tick(0, 0) does, m times.
+  void skip_quiet(u32 m);
+  // The value of this tick's slot `pos` on `side`: computed now where it reads a capture buffer,
+  // else owed.
+  void owe(u32 side, u32 pos, u8* ram);
   // The side's 22.05 kHz value, with the buffer address `current` (in halfwords).
   s16 process_side(u32 side, s32 input, u32 current, u8* ram, bool write_enable, IrqWatch& irq);
   // How many ticks from this one on (either side) surely read no capture buffer word, without

@@ -183,13 +183,24 @@ void Spu::quiet_samples(u32 n) {
     for (u32 k = 0; k < n; ++k) noise_.tick(attr_);
   // Holds for the whole catch-up: tested once here rather than by reverb_sample() per sample.
   const bool unseen = reverb_unseen();
-  for (u32 k = 0; k < n; ++k) {
-    // Sample by sample: the reverb work area may overlap the capture buffers.
-    const u32 off = capture_pos_ * 2;
-    for (u32 buffer = 0; buffer < 4; ++buffer) store_le16(ram_.data() + buffer * 0x400 + off, 0);
-    capture_pos_ = (capture_pos_ + 1) & 0x1FF;
-    if (unseen) reverb_.unseen_tick(0, 0, n - 1 - k, ram_.data());
-    else reverb_sample(0, 0, n - 1 - k);
+  if (unseen && reverb_.quiet_ticks(n)) {
+    // The reverb read none of the capture buffers: their writes may come after its ticks.
+    const u32 count = std::min(n, 0x200u), first = std::min(count, 0x200 - capture_pos_);
+    for (u32 buffer = 0; buffer < 4; ++buffer) {
+      u8* start = ram_.data() + buffer * 0x400;
+      std::fill(start + capture_pos_ * 2, start + (capture_pos_ + first) * 2, u8{0});
+      std::fill(start, start + (count - first) * 2, u8{0});
+    }
+    capture_pos_ = (capture_pos_ + n) & 0x1FF;
+  } else {
+    for (u32 k = 0; k < n; ++k) {
+      // Sample by sample: the reverb may read the capture buffers, or write them.
+      const u32 off = capture_pos_ * 2;
+      for (u32 buffer = 0; buffer < 4; ++buffer) store_le16(ram_.data() + buffer * 0x400 + off, 0);
+      capture_pos_ = (capture_pos_ + 1) & 0x1FF;
+      if (unseen) reverb_.unseen_tick(0, 0, n - 1 - k, ram_.data());
+      else reverb_sample(0, 0, n - 1 - k);
+    }
   }
   if (mixing()) push_output({}, n);
   if (!main_left_.latched())

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "spu/reverb.h"
+#include "spu_test_util.h"
 
 using namespace psx;
 using namespace psx::spu;
@@ -163,4 +164,78 @@ TEST(SpuReverb, EveryAccessWrapsInsideTheWorkArea) {
       if (side == 1) current = std::max(start, (current + 1) & 0x3FFFF);
     }
   }
+}
+
+namespace {
+
+std::vector<u8> saved(Reverb& rv, std::vector<u8>& ram) {
+  StateIO s;
+  rv.do_state(s, ram.data());  // settles the owed values first
+  return s.buffer();
+}
+
+}  // namespace
+
+TEST(SpuReverb, QuietTicksAreUnseenTicksOfSilence) {
+  // Reverb::quiet_ticks(n) is n calls of unseen_tick(0, 0, n-1-k): the first n-128 skipped, the
+  // rest owed. Both are compared by the saved state (which computes the owed values: every
+  // output history slot, position, the buffer address and the input history) and then by the
+  // output of 100 heard ticks of noise. Before, heard ticks of noise fill both histories with
+  // values the owed ones must replace, then 0 to 70 ticks of input 0 (from 39 on, the FIR input
+  // of an owed tick is 0). The work area (kTestReverbRegs: reads 80h..380h halfwords past the
+  // buffer address) lies above the capture buffers (halfwords 0..7FFh) at ESA 1000h and FE00h;
+  // at ESA 100h the reads start inside them, so quiet_ticks declines and changes nothing.
+  std::vector<u8> ram(512 * 1024);
+  test::Lcg noise{77};
+  for (u8& b : ram) b = static_cast<u8>(noise.next(256));
+  auto input = [&] { return static_cast<s32>(noise.next(0x10000)) - 0x8000; };
+  for (u16 esa : {0x1000, 0xFE00, 0x0100}) {
+    for (u32 n : {1u, 2u, 39u, 127u, 128u, 129u, 130u, 200u, 255u, 256u, 700u}) {
+      for (u32 zeros : {0u, 5u, 38u, 70u}) {
+        Reverb a;
+        a.regs = test::kTestReverbRegs;
+        a.write_base(esa);
+        Reverb::IrqWatch none;
+        for (u32 t = 0; t < 150 + n % 7; ++t) a.tick(input(), input(), ram.data(), false, true, none);
+        for (u32 t = 0; t < zeros; ++t) a.owe_tick(0, 0, ram.data());
+        Reverb b = a;
+        const std::string what = "ESA " + std::to_string(esa) + " n " + std::to_string(n) + " zeros " + std::to_string(zeros);
+        if (esa == 0x0100) {
+          Reverb before = a;
+          ASSERT_FALSE(a.quiet_ticks(n)) << what;
+          ASSERT_EQ(saved(a, ram), saved(before, ram)) << what;
+          continue;
+        }
+        ASSERT_TRUE(a.quiet_ticks(n)) << what;
+        for (u32 k = 0; k < n; ++k) b.unseen_tick(0, 0, n - 1 - k, ram.data());
+        ASSERT_EQ(saved(a, ram), saved(b, ram)) << what;
+        for (u32 t = 0; t < 100; ++t) {
+          const s32 l = t < 50 ? 0 : input(), r = t < 50 ? 0 : input();
+          const StereoSample x = a.tick(l, r, ram.data(), false, true, none), y = b.tick(l, r, ram.data(), false, true, none);
+          ASSERT_TRUE(x.left == y.left && x.right == y.right) << what << " tick " << t;
+        }
+      }
+    }
+  }
+}
+
+TEST(SpuReverb, QuietTicksDeclineWhereReadsReachTheCaptureBuffers) {
+  // ESA 100h: the work area is halfwords 400h..3FFFFh, over the capture buffers (0..7FFh). After
+  // 2 * 500h ticks the buffer address is 900h and kTestReverbRegs' reads (80h..380h past it) lie
+  // above them; mLCOMB1 = mRCOMB1 = FD80h puts one read at 900h + 3F600h = 3FF00h, which moves
+  // up a halfword every two ticks and wraps to 400h on tick 2 * 100h = 512. So 400 quiet ticks
+  // may be made at once, 600 may not, and after 400 only 112 more, made or not.
+  std::vector<u8> ram(512 * 1024, 0);
+  Reverb rv;
+  rv.regs = test::kTestReverbRegs;
+  rv.write_base(0x0100);
+  for (u32 t = 0; t < 2 * 0x500; ++t) rv.skip_tick(0, 0);
+  rv.regs[Reverb::mLCOMB1] = rv.regs[Reverb::mRCOMB1] = 0xFD80;
+  rv.settle(ram.data());  // as the SPU does when a register changes
+  Reverb copy = rv;
+  EXPECT_FALSE(copy.quiet_ticks(600));
+  EXPECT_TRUE(rv.quiet_ticks(400));
+  copy = rv;
+  EXPECT_FALSE(copy.quiet_ticks(200));
+  EXPECT_TRUE(rv.quiet_ticks(100));
 }

@@ -274,11 +274,12 @@ namespace {
 // Quiet stretches (Spu::quiet_samples): every voice silent, no CD input, nothing heard of the
 // reverb. Voices 1 and 3 play one End+Mute block (28 samples into the capture buffers, then
 // silent) and the CD input a few hundred frames, again every round, so that quiet samples write
-// zeros over sound; the other voices sit Off on a one-block loop. The reverb writes its work area
-// at ESA = FE00h (ATTR bit 7), filled with noise; EVOL is 0 for three rounds, so observed SPUs
-// go quiet too and their output is compared, then 3000h (heard: not quiet where observed); the
-// main volume sweeps down from 3FFFh.
-void quiet_workload(Rig& r, Lcg& steps) {
+// zeros over sound (600 at once after a stall: all 200h positions); the other voices sit Off on
+// a one-block loop. The reverb works at ESA (its area from FE00h filled with noise), writing it
+// where ATTR bit 7 is set; EVOL is 0 for three rounds, so observed SPUs go quiet too and their
+// output is compared, then `evol` (heard: not quiet where observed, and the values owed
+// meanwhile are heard); the main volume sweeps down from 3FFFh.
+void quiet_workload(Rig& r, Lcg& steps, u16 esa, u16 reverb_writes, u16 evol = 0x3000) {
   Lcg data{17};
   put_block(r.spu.ram(), kOneBlockLoop, 7, data);
   for (u32 a = kInReverbArea; a < Spu::kRamSize; a += 16) put_block(r.spu.ram(), a, 0, data);
@@ -287,12 +288,12 @@ void quiet_workload(Rig& r, Lcg& steps) {
   write_test_volumes_and_reverb(r);
   r.w16(0x1F801D84, 0);  // EVOLL/EVOLR
   r.w16(0x1F801D86, 0);
-  r.w16(0x1F801DA2, kReverbBase);
-  r.w16(kAttr, kAttrOn | kAttrReverb);
+  r.w16(0x1F801DA2, esa);
+  r.w16(kAttr, kAttrOn | reverb_writes);
   r.run_for(4 * Spu::kCyclesPerSample, steps);  // MVOLL 3FFFh (fixed) latched
   r.w16(0x1F801D80, 0xA000 | 10 << 2);           // then a linear sweep down from there
   for (u32 round = 0; round < 6; ++round) {
-    if (round == 3) r.w16(0x1F801D84, 0x3000), r.w16(0x1F801D86, 0x3000);
+    if (round == 3) r.w16(0x1F801D84, evol), r.w16(0x1F801D86, evol);
     for (u32 i = 0; i < 300; ++i) r.cd.push({static_cast<s16>(i * 37 + 1), static_cast<s16>(-static_cast<s32>(i) * 41 - 1)});
     for (u32 v : {1u, 3u}) {
       r.voice_w(v, 0x0, 0x3FFF);
@@ -307,6 +308,15 @@ void quiet_workload(Rig& r, Lcg& steps) {
     // Muted since sample 28; pitch 0 keeps them on their block (their End flag would set ENDX
     // every 28 samples, which a silent voice steps sample by sample).
     for (u32 v : {1u, 3u}) r.voice_w(v, 0x4, 0);
+    // A stall (a long DMA) ending in a SPUSTAT read makes 800 samples in one catch-up: the
+    // rest of the CD input, then quiet ones over it, across the capture buffers' end. The last
+    // round ends there, for the comparison to see the buffers as the stall left them.
+    if (round % 2 == 1) {
+      r.sched.advance(800 * Spu::kCyclesPerSample);
+      r.r16(0x1F801DAE);
+      r.sched.run_due_events();
+    }
+    if (round == 5) break;
     r.run_for(3 * Spu::kDefaultMaxBatch * Spu::kCyclesPerSample, steps);
     r.take();
   }
@@ -314,21 +324,51 @@ void quiet_workload(Rig& r, Lcg& steps) {
 
 }  // namespace
 
-TEST(SpuSilent, QuietStretchesAfterSoundMatchPerSample) {
+namespace {
+
+// The quiet workload on the reference (max batch 1, observed) and on batching SPUs observed and
+// not.
+void compare_quiet(u16 esa, u16 reverb_writes) {
   std::vector<std::unique_ptr<Rig>> rigs;
   rigs.push_back(std::make_unique<Rig>(1, true));
   rigs.push_back(std::make_unique<Rig>(Spu::kDefaultMaxBatch, true));
   rigs.push_back(std::make_unique<Rig>(Spu::kDefaultMaxBatch, false));
   for (auto& r : rigs) {
     Lcg steps{29};
-    quiet_workload(*r, steps);
+    quiet_workload(*r, steps, esa, reverb_writes);
   }
   for (size_t i = 1; i < rigs.size(); ++i) {
     expect_same(*rigs[0], *rigs[i], i == 1, "rig " + std::to_string(i));
-    if (HasFatalFailure()) return;
+    if (::testing::Test::HasFatalFailure()) return;
   }
   // The workload made sound: the capture buffers' quiet zeros overwrite something.
   bool sound = false;
   for (const StereoSample& s : rigs[0]->out) sound |= s.left != 0 && s.right != 0;
   EXPECT_TRUE(sound);
+  // The reverb was heard: without it (EVOL 0 throughout) the output differs.
+  Rig dry(1, true);
+  Lcg steps{29};
+  quiet_workload(dry, steps, esa, reverb_writes, 0);
+  dry.take();
+  ASSERT_EQ(dry.out.size(), rigs[0]->out.size());
+  bool wet = false;
+  for (size_t i = 0; i < dry.out.size(); ++i)
+    wet |= dry.out[i].left != rigs[0]->out[i].left || dry.out[i].right != rigs[0]->out[i].right;
+  EXPECT_TRUE(wet);
+}
+
+}  // namespace
+
+TEST(SpuSilent, QuietStretchesAfterSoundMatchPerSample) {
+  compare_quiet(kReverbBase, kAttrReverb);
+}
+
+TEST(SpuSilent, QuietStretchesWithUnseenReverbMatchPerSample) {
+  // ATTR bit 7 clear and EVOL 0: nothing sees the reverb's ticks, whose values are skipped or
+  // owed (Reverb::quiet_ticks), until EVOL makes them heard. At ESA = FE00h its reads never reach
+  // the capture buffers; at ESA = 0 (the whole of sound RAM) they start there, at its buffer
+  // address 0, and leave them 800h halfwords (4096 ticks) later.
+  compare_quiet(kReverbBase, 0);
+  if (HasFatalFailure()) return;
+  compare_quiet(0, 0);
 }

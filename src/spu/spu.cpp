@@ -21,14 +21,17 @@ void Spu::catch_up(Cycles horizon) {
   // until the catch-up ends, so silent voices can step through the rest at once. The reference
   // (max batch 1) makes every sample in full.
   const bool reference = max_batch_ <= 1;
+  // An unseen reverb that nothing feeds takes nothing from the samples: all its ticks at once,
+  // where none of them reads a capture buffer (Reverb::quiet_ticks).
+  const bool reverb_made = !reference && reverb_unfed() && reverb_unseen() && reverb_.quiet_ticks(due);
   u32 skip = 0;
   for (u32 k = 0; k < due; ++k) {
     if (k > 0 && !reference && quiet_from_here(skip)) {
-      quiet_samples(due - k);
+      quiet_samples(due - k, reverb_made);
       next_sample_ += (due - k) * kCyclesPerSample;
       return;
     }
-    generate_sample(skip, reference ? 0 : due - 1 - k);
+    generate_sample(skip, reference ? 0 : due - 1 - k, reverb_made);
     next_sample_ += kCyclesPerSample;
     if (k == 0 && due > 1 && !reference) skip = step_silent_voices(due - 1);
   }

@@ -175,12 +175,12 @@ class Spu final : public IoDevice, public DmaPort {
 
   // Sample generation (spu_mixer.cpp). Voices in `skip` were already stepped through this
   // sample (step_silent_voices); `later` samples follow in the same catch-up (0 where nothing
-  // may be left out).
-  void generate_sample(u32 skip, u32 later);
+  // may be left out); `reverb_made`: the catch-up made the reverb's ticks already.
+  void generate_sample(u32 skip, u32 later, bool reverb_made);
   // Whether the rest of a catch-up, after a sample that left the voices in `skip`, is silence
   // that changes only counters, and n such samples at once.
   bool quiet_from_here(u32 skip) const;
-  void quiet_samples(u32 n);
+  void quiet_samples(u32 n, bool reverb_made);
   // One reverb tick on the sample's reverb input (skipped, owed or made: see its body); the wet
   // output where heard, else 0.
   StereoSample reverb_sample(s32 in_left, s32 in_right, u32 later);
@@ -196,6 +196,8 @@ class Spu final : public IoDevice, public DmaPort {
   // Unheard, without writes (ATTR bit 7) or a possible IRQ9, a reverb tick's value matters only
   // if the output is heard before it is overwritten (Reverb::unseen_tick).
   bool reverb_unseen() const { return !reverb_heard() && !(attr_ & kAttrReverbEnable) && !irq_possible(); }
+  // Whether no voice (EON) and no CD input feed the reverb: its input is 0.
+  bool reverb_unfed() const { return reverb_on_ == 0 && !(attr_ & kAttrCdReverb); }
   // Voices (bit mask) whose output this sample is read by anything.
   u32 voices_needed() const;
   // One voice's sample: IRQ checks, envelope, pitch and block advance always; its output (into

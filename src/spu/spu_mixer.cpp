@@ -122,7 +122,7 @@ inline StereoSample Spu::reverb_sample(s32 in_left, s32 in_right, u32 later) {
   return wet;
 }
 
-void Spu::generate_sample(u32 skip, u32 later) {
+void Spu::generate_sample(u32 skip, u32 later, bool reverb_made) {
   apply_key_events();
   Mix mix;
   const bool enabled = (attr_ & kAttrEnable) != 0;
@@ -153,7 +153,7 @@ void Spu::generate_sample(u32 skip, u32 later) {
     }
   }
 
-  const StereoSample wet = reverb_sample(mix.reverb_left, mix.reverb_right, later);
+  const StereoSample wet = reverb_made ? StereoSample{} : reverb_sample(mix.reverb_left, mix.reverb_right, later);
   if (mixing) {
     mix.left += apply_volume(wet.left, reverb_volume_left_);
     mix.right += apply_volume(wet.right, reverb_volume_right_);
@@ -174,7 +174,7 @@ bool Spu::quiet_from_here(u32 skip) const {
   return skip == kAllVoices && cd_audio_.size() == 0 && !irq_possible() && !reverb_heard();
 }
 
-void Spu::quiet_samples(u32 n) {
+void Spu::quiet_samples(u32 n, bool reverb_made) {
   // What generate_sample() does for n samples when quiet_from_here() holds, stage by stage where
   // stages share nothing: the noise generator, the capture buffers (0: CD input and the silent
   // voices 1 and 3) with the reverb (input 0; its writes as ATTR says), the output (0) and the
@@ -183,7 +183,7 @@ void Spu::quiet_samples(u32 n) {
     for (u32 k = 0; k < n; ++k) noise_.tick(attr_);
   // Holds for the whole catch-up: tested once here rather than by reverb_sample() per sample.
   const bool unseen = reverb_unseen();
-  if (unseen && reverb_.quiet_ticks(n)) {
+  if (reverb_made || (unseen && reverb_.quiet_ticks(n))) {
     // The reverb read none of the capture buffers: their writes may come after its ticks.
     const u32 count = std::min(n, 0x200u), first = std::min(count, 0x200 - capture_pos_);
     for (u32 buffer = 0; buffer < 4; ++buffer) {

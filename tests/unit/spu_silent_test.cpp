@@ -275,11 +275,12 @@ namespace {
 // reverb. Voices 1 and 3 play one End+Mute block (28 samples into the capture buffers, then
 // silent) and the CD input a few hundred frames, again every round, so that quiet samples write
 // zeros over sound (600 at once after a stall: all 200h positions); the other voices sit Off on
-// a one-block loop. The reverb works at ESA (its area from FE00h filled with noise), writing it
-// where ATTR bit 7 is set; EVOL is 0 for three rounds, so observed SPUs go quiet too and their
-// output is compared, then `evol` (heard: not quiet where observed, and the values owed
-// meanwhile are heard); the main volume sweeps down from 3FFFh.
-void quiet_workload(Rig& r, Lcg& steps, u16 esa, u16 reverb_writes, u16 evol = 0x3000) {
+// a one-block loop. ATTR has `attr_bits` too. The reverb works at ESA (its area from FE00h
+// filled with noise), writing it where ATTR bit 7 is set; EVOL is 0 for three rounds and a
+// third, so observed SPUs go quiet too and their output is compared, then `evol` (heard: not
+// quiet where observed, and the values owed meanwhile are heard); the main volume sweeps down
+// from 3FFFh.
+void quiet_workload(Rig& r, Lcg& steps, u16 esa, u16 attr_bits, u16 evol = 0x3000) {
   Lcg data{17};
   put_block(r.spu.ram(), kOneBlockLoop, 7, data);
   for (u32 a = kInReverbArea; a < Spu::kRamSize; a += 16) put_block(r.spu.ram(), a, 0, data);
@@ -289,11 +290,10 @@ void quiet_workload(Rig& r, Lcg& steps, u16 esa, u16 reverb_writes, u16 evol = 0
   r.w16(0x1F801D84, 0);  // EVOLL/EVOLR
   r.w16(0x1F801D86, 0);
   r.w16(0x1F801DA2, esa);
-  r.w16(kAttr, kAttrOn | reverb_writes);
+  r.w16(kAttr, kAttrOn | attr_bits);
   r.run_for(4 * Spu::kCyclesPerSample, steps);  // MVOLL 3FFFh (fixed) latched
   r.w16(0x1F801D80, 0xA000 | 10 << 2);           // then a linear sweep down from there
   for (u32 round = 0; round < 6; ++round) {
-    if (round == 3) r.w16(0x1F801D84, evol), r.w16(0x1F801D86, evol);
     for (u32 i = 0; i < 300; ++i) r.cd.push({static_cast<s16>(i * 37 + 1), static_cast<s16>(-static_cast<s32>(i) * 41 - 1)});
     for (u32 v : {1u, 3u}) {
       r.voice_w(v, 0x0, 0x3FFF);
@@ -305,6 +305,8 @@ void quiet_workload(Rig& r, Lcg& steps, u16 esa, u16 reverb_writes, u16 evol = 0
     }
     r.w16(0x1F801D88, (1u << 1) | (1u << 3));  // KON
     r.run_for(100 * Spu::kCyclesPerSample, steps);
+    // Heard from here, with the CD input still playing (into the reverb, with ATTR bit 2).
+    if (round == 3) r.w16(0x1F801D84, evol), r.w16(0x1F801D86, evol);
     // Muted since sample 28; pitch 0 keeps them on their block (their End flag would set ENDX
     // every 28 samples, which a silent voice steps sample by sample).
     for (u32 v : {1u, 3u}) r.voice_w(v, 0x4, 0);
@@ -328,14 +330,14 @@ namespace {
 
 // The quiet workload on the reference (max batch 1, observed) and on batching SPUs observed and
 // not.
-void compare_quiet(u16 esa, u16 reverb_writes) {
+void compare_quiet(u16 esa, u16 attr_bits) {
   std::vector<std::unique_ptr<Rig>> rigs;
   rigs.push_back(std::make_unique<Rig>(1, true));
   rigs.push_back(std::make_unique<Rig>(Spu::kDefaultMaxBatch, true));
   rigs.push_back(std::make_unique<Rig>(Spu::kDefaultMaxBatch, false));
   for (auto& r : rigs) {
     Lcg steps{29};
-    quiet_workload(*r, steps, esa, reverb_writes);
+    quiet_workload(*r, steps, esa, attr_bits);
   }
   for (size_t i = 1; i < rigs.size(); ++i) {
     expect_same(*rigs[0], *rigs[i], i == 1, "rig " + std::to_string(i));
@@ -348,7 +350,7 @@ void compare_quiet(u16 esa, u16 reverb_writes) {
   // The reverb was heard: without it (EVOL 0 throughout) the output differs.
   Rig dry(1, true);
   Lcg steps{29};
-  quiet_workload(dry, steps, esa, reverb_writes, 0);
+  quiet_workload(dry, steps, esa, attr_bits, 0);
   dry.take();
   ASSERT_EQ(dry.out.size(), rigs[0]->out.size());
   bool wet = false;
@@ -371,4 +373,25 @@ TEST(SpuSilent, QuietStretchesWithUnseenReverbMatchPerSample) {
   compare_quiet(kReverbBase, 0);
   if (HasFatalFailure()) return;
   compare_quiet(0, 0);
+  if (HasFatalFailure()) return;
+  // ATTR bit 2: the CD input feeds the unseen reverb (and its values stay owed).
+  compare_quiet(kReverbBase, 0x0004);
+}
+
+TEST(SpuSilent, UnseenReverbKeepsTheInputHistoryItIsFed) {
+  // Unseen, the reverb's input history is still state (saved, and read once ATTR bit 7 lets it
+  // write): with ATTR bit 2 the CD input feeds it, so its ticks are not made ahead of the
+  // samples. Compared while the CD input plays.
+  Rig reference(1, false), batched(Spu::kDefaultMaxBatch, false);
+  for (Rig* r : {&reference, &batched}) {
+    Lcg steps{31};
+    write_test_volumes_and_reverb(*r);
+    r->w16(0x1F801D84, 0);  // EVOLL/EVOLR
+    r->w16(0x1F801D86, 0);
+    r->w16(0x1F801DA2, kReverbBase);
+    r->w16(kAttr, kAttrOn | 0x0004);
+    for (u32 i = 0; i < 600; ++i) r->cd.push({static_cast<s16>(i * 53 + 7), static_cast<s16>(-static_cast<s32>(i) * 29 - 3)});
+    r->run_for(300 * Spu::kCyclesPerSample, steps);
+  }
+  expect_same(reference, batched, false, "CD input into the reverb");
 }

@@ -91,22 +91,22 @@ u32 DrawCommand::read_rects(Rect out[3]) const {
   switch (kind) {
     case Kind::Triangle:
       if (triangle.textured) n = texture_reads(ds, triangle.clut_x, triangle.clut_y, out);
-      if (triangle.semi || ds.check_mask) out[n++] = write_rect();
+      if (triangle.semi || ds.check_mask) out[n++] = write;
       return n;
     case Kind::Line:
-      if (line.semi || ds.check_mask) out[n++] = write_rect();
+      if (line.semi || ds.check_mask) out[n++] = write;
       return n;
     case Kind::Rectangle:
       if (rectangle.textured) n = texture_reads(ds, rectangle.clut_x, rectangle.clut_y, out);
-      if (rectangle.semi || ds.check_mask) out[n++] = write_rect();
+      if (rectangle.semi || ds.check_mask) out[n++] = write;
       return n;
     case Kind::Fill: return 0;
     case Kind::Copy:
       out[n++] = wrapped_block(block.sx, block.sy, block.width, block.height);
-      if (block.mask.check) out[n++] = write_rect();
+      if (block.mask.check) out[n++] = write;
       return n;
     case Kind::Row:
-      if (block.mask.check) out[n++] = write_rect();
+      if (block.mask.check) out[n++] = write;
       return n;
   }
   return n;

@@ -55,11 +55,16 @@ struct DrawCommand {
   Rect write;
   Rect cover;
   bool cover_with_next = false;
+  // read_rects(), kept by the queue once pruning first asks (kReadsUnknown before).
+  static constexpr u8 kReadsUnknown = 0xFF;
+  u8 read_count = kReadsUnknown;
+  Rect reads[3];
 
   DrawCommand() : block() {}
 
   Rect write_rect() const;
-  // Up to three rectangles of VRAM whose contents change what the command writes; returns the count.
+  // Up to three rectangles of VRAM whose contents change what the command writes; returns the
+  // count. Reads `write` (set first).
   u32 read_rects(Rect out[3]) const;
   // What the command replaces whatever was there (fills, opaque untextured rectangles without
   // the mask check); triangles are handled in pairs by triangle_pair_cover.

@@ -38,8 +38,12 @@ class Readers {
     n_ = kept;
   }
   bool read(const Rect& w) const {
-    for (u32 i = 0; i < n_; ++i)
-      if (rects_[i].intersects(w)) return true;
+    // Rect::intersects without its emptiness tests: add() keeps no empty rectangle.
+    if (w.empty()) return false;
+    for (u32 i = 0; i < n_; ++i) {
+      const Rect& r = rects_[i];
+      if (r.x0 < w.x1 && w.x0 < r.x1 && r.y0 < w.y1 && w.y0 < r.y1) return true;
+    }
     return false;
   }
 
@@ -198,16 +202,16 @@ void DrawQueue::prune(const Rect& cover, size_t end) {
   bool any_dropped = false;
   for (size_t i = end; i-- > 0;) {
     if (!frame_added && i < frame_position_) readers.add(frame_rect_), frame_added = true;
-    const DrawCommand& c = queue_[i];
+    DrawCommand& c = queue_[i];
     const Rect& w = c.write;
     if (cover.contains(w) && !readers.read(w)) {
       keep_[i] = 0, any_dropped = true;
       continue;
     }
     if (!c.cover.empty() && (!c.cover_with_next || keep_[i + 1])) readers.forget_inside(c.cover);
-    Rect reads[3];
-    const u32 n = c.read_rects(reads);
-    for (u32 k = 0; k < n; ++k) readers.add(reads[k]);
+    // A kept call is walked again by every later prune: its reads are worked out once.
+    if (c.read_count == DrawCommand::kReadsUnknown) c.read_count = static_cast<u8>(c.read_rects(c.reads));
+    for (u32 k = 0; k < c.read_count; ++k) readers.add(c.reads[k]);
   }
   if (any_dropped) compact();
 }

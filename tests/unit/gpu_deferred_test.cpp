@@ -275,6 +275,21 @@ TEST(GpuDeferred, QueueStaysBoundedWithoutObserver) {
   ASSERT_EQ(t.eager.state(), t.lazy.state());
 }
 
+// A cover drops an earlier call inside it unless a kept call between them may read what it
+// wrote: four VRAM copies read the 16x16 blocks bordering a 16x16 fill at (96, 100) above,
+// below, left and right (none of its pixels) and write outside the full-screen fill that
+// follows, so the small fill goes and the copies and the cover stay.
+TEST(GpuDeferred, ReadsBesideADrawingDoNotKeepIt) {
+  Twins t;
+  t.gp0(0x02FF0000), t.gp0(xy(96, 100)), t.gp0(xy(16, 16));
+  const int sources[4][2] = {{96, 84}, {96, 116}, {80, 100}, {112, 100}};
+  for (int k = 0; k < 4; ++k)
+    t.gp0(0x80000000), t.gp0(xy(sources[k][0], sources[k][1])), t.gp0(xy(600 + 40 * k, 300)), t.gp0(xy(16, 16));
+  t.gp0(0x020000FF), t.gp0(xy(0, 0)), t.gp0(xy(320, 240));
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), 5u);
+  ASSERT_EQ(t.eager.state(), t.lazy.state());
+}
+
 // The queue remembers the last background quads it met (DrawQueue::pair_cover): the same
 // positions drawn semi-transparent, textured, under the mask check or in another drawing area
 // replace less or nothing, so the small triangles drawn before them must stay. Each variant

@@ -219,22 +219,33 @@ u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
   c.chcr &= ~kChcrTrigger;
   u32 moved = 0;
   bool vouched = false;  // may_run() held after the trigger's clearing, and no words moved since
-  do {
+  u32 uncharged = 0;     // header words of the empty nodes walked since the last charge
+  for (;;) {
     // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the
     // device.
     const u32 addr = c.madr & kAddressMask;
     const u32 header = bus_.dma_read_word(addr);
     const u32 count = header >> 24;
+    moved += count + 1;
+    c.madr = header & 0x00FFFFFF;
+    const bool end = (c.madr & 0x00800000) != 0;  // end marker 0x00FFFFFF (hardware tests bit 23)
+    // Vouched (so alone), an empty node that does not end the list changes only the time, which
+    // nothing reads before the next charge, and charges add up exactly: a run of them is charged
+    // at once.
+    if (count == 0 && vouched && !end && moved < budget) {
+      ++uncharged;
+      continue;
+    }
     if (count) {
+      if (uncharged) charge(ch, uncharged), uncharged = 0;
       to_device(ch, addr + 4, count, false);
       vouched = false;
     }
-    charge(ch, count + 1);
-    moved += count + 1;
-    c.madr = header & 0x00FFFFFF;
-    if (c.madr & 0x00800000) finish(ch);  // end marker 0x00FFFFFF (hardware tests bit 23)
-  } while (alone && moved < budget && (vouched ? (c.chcr & kChcrBusy) != 0 : (vouched = may_run(ch))));
-  return moved;
+    charge(ch, uncharged + count + 1);
+    uncharged = 0;
+    if (end) finish(ch);
+    if (!alone || moved >= budget || !(vouched ? (c.chcr & kChcrBusy) != 0 : (vouched = may_run(ch)))) return moved;
+  }
 }
 
 u32 Dma::run_otc(u32 ch) {

@@ -385,6 +385,36 @@ TEST_F(DmaTest, LinkedListOfEmptyNodesChargesEachHeader) {
   EXPECT_EQ(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
 }
 
+TEST_F(DmaTest, LinkedListOfEmptyNodesEndingWithAnEmptyOne) {
+  // 101 empty nodes, the last with the end marker: 101 * 272 / 256 = 107.3 -> 107 cycles, then
+  // the channel is done and its DICR flag set.
+  w(kDpcr, 0x00000800);
+  w(kDicr, 0x00840000);  // channel 2's interrupt enabled, master enable
+  for (u32 i = 0; i < 100; ++i) set_ram32(0x1000 + 4 * i, 0x1000 + 4 * (i + 1));
+  set_ram32(0x1000 + 400, 0x00FFFFFF);
+  w(reg(2, kMadr), 0x1000);
+  const Cycles t0 = sched.now();
+  w(reg(2, kChcr), 0x01000401);
+  EXPECT_EQ(sched.now() - t0, 107u);
+  EXPECT_TRUE(gpu.received.empty());
+  EXPECT_EQ(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
+  EXPECT_EQ(r(reg(2, kMadr)), 0x00FFFFFFu);
+  EXPECT_NE(r(kDicr) & (1u << 26), 0u);
+}
+
+TEST_F(DmaTest, EndlessListOfEmptyNodesYieldsAfterEachSlice) {
+  // An empty node pointing at itself: a slice walks 10000h header words (272 clocks per 256
+  // words: 69632 cycles) and the CHCR write returns with the channel still busy.
+  w(kDpcr, 0x00000800);
+  set_ram32(0x100, 0x00000100);
+  w(reg(2, kMadr), 0x100);
+  const Cycles t0 = sched.now();
+  w(reg(2, kChcr), 0x01000401);
+  EXPECT_EQ(sched.now() - t0, 0x10000u * 272 / 256);
+  EXPECT_NE(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
+  EXPECT_EQ(r(reg(2, kMadr)), 0x100u);
+}
+
 TEST_F(DmaTest, LinkedListStopsAfterTheNodeThatEndsTheRequest) {
   // Empty nodes before and after a node whose word ends the device's request: the list waits at
   // the node after it.

@@ -173,7 +173,7 @@ bool Reverb::quiet_ticks(u32 n) {
     // owe() with clear_ticks_ > 0 (it counts down from n or more): the value is owed.
     const u32 side = phase_;
     const u32 pos = out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
-    owed_from_[side][pos] = {current_, downsample(side)};
+    owed_at_[side][pos] = current_;
     owed_[side] |= u64{1} << pos;
     end_tick();
   }
@@ -188,14 +188,13 @@ void Reverb::owe_tick(s32 in_left, s32 in_right, u8* ram) {
 }
 
 void Reverb::owe(u32 side, u32 pos, u8* ram) {
-  const s32 input = downsample(side);
   if (clear_ticks_ == 0) clear_ticks_ = ticks_clear_of_capture();
   if (clear_ticks_ == 0) {
     IrqWatch none;
-    out_history_[side][pos] = process_side(side, input, current_, ram, false, none);
+    out_history_[side][pos] = process_side(side, 0, current_, ram, false, none);
     owed_[side] &= ~(u64{1} << pos);
   } else {
-    owed_from_[side][pos] = {current_, input};
+    owed_at_[side][pos] = current_;
     owed_[side] |= u64{1} << pos;
   }
 }
@@ -207,8 +206,7 @@ void Reverb::settle(u8* ram) {
   for (u32 side = 0; side < 2; ++side) {
     for (u64 left = owed_[side]; left != 0; left &= left - 1) {
       const u32 pos = static_cast<u32>(std::countr_zero(left));
-      const Owed& o = owed_from_[side][pos];
-      out_history_[side][pos] = process_side(side, o.input, o.current, ram, false, none);
+      out_history_[side][pos] = process_side(side, 0, owed_at_[side][pos], ram, false, none);
     }
     owed_[side] = 0;
   }

@@ -111,13 +111,11 @@ class Reverb {
   // Consecutive ticks whose inputs were both 0 (up to kRing; not state: a load restarts it at 0).
   // From 39 on, every tap downsample() reads is 0.
   u32 zero_inputs_ = 0;
-  // The owed values (owe_tick): a bit per output history slot, and what each is computed from.
-  struct Owed {
-    u32 current;
-    s32 input;
-  };
+  // The owed values (owe_tick): a bit per output history slot, and the buffer address each is
+  // computed at. Its input is not kept: without writes or an IRQ watch process_side() leaves
+  // out the reflections, the only part that reads it.
   std::array<u64, 2> owed_{};
-  std::array<std::array<Owed, kRing>, 2> owed_from_{};
+  std::array<std::array<u32, kRing>, 2> owed_at_{};
   // Ticks left of the last ticks_clear_of_capture() (counted down by every tick; reset where the
   // registers or ESA may change: settle(), write_base(), a load).
   u32 clear_ticks_ = 0;

@@ -135,8 +135,13 @@ inline void Reverb::push_input(s32 in_left, s32 in_right) {
   zero_inputs_ = (in_left == 0 && in_right == 0) ? std::min(zero_inputs_ + 1, kRing) : 0;
 }
 
+inline void Reverb::step_address() {
+  // psx-spx "SPU Reverb Formula": BufferAddress = MAX(mBASE, (BufferAddress+2) AND 7FFFEh).
+  current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
+}
+
 inline void Reverb::end_tick() {
-  if (phase_ == 1) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
+  if (phase_ == 1) step_address();
   phase_ ^= 1;
   if (clear_ticks_ > 0) --clear_ticks_;
 }
@@ -157,7 +162,7 @@ void Reverb::skip_quiet(u32 m) {
   const u32 right_ends = phase_ == 0 ? second : first;
   out_pos_[phase_] = (out_pos_[phase_] + first) & (kRing - 1);
   out_pos_[phase_ ^ 1] = (out_pos_[phase_ ^ 1] + second) & (kRing - 1);
-  for (u32 k = 0; k < right_ends; ++k) current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
+  for (u32 k = 0; k < right_ends; ++k) step_address();
   phase_ ^= m & 1;
   clear_ticks_ = clear_ticks_ > m ? clear_ticks_ - m : 0;
 }

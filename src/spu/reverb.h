@@ -78,6 +78,8 @@ class Reverb {
   static constexpr u32 kCaptureHalfwords = 0x800;  // the capture buffers, sound RAM 0..FFFh
   static_assert(kTicksToOverwrite == 2 * kRing);
   void push_input(s32 in_left, s32 in_right);
+  // The buffer address's move after each right-side tick, wrapping to ESA.
+  void step_address();
   void end_tick();
   // What skip_tick(0, 0) does, m times.
   void skip_quiet(u32 m);

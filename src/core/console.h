@@ -175,6 +175,11 @@ class Console : private CpuHooks {
   // gets none) and skips the mixing only they need; everything else it does stays exact
   // (spu/spu.h set_observed): for runs whose observations and move delimiting are not sound.
   void set_sound_observed(bool observed) { spu_.set_observed(observed); }
+  // Whether the sound got loud, for a listener that needs no samples (spu/spu.h watch_loudness):
+  // take_loud() tells whether a sample since its last call had a channel beyond `threshold` in
+  // magnitude; the SPU mixes only until one has.
+  void watch_loudness(std::optional<u16> threshold) { spu_.watch_loudness(threshold); }
+  bool take_loud() { return spu_.take_loud(); }
   // Untaken audio is capped at one minute (the oldest half is dropped) unless the whole run's
   // audio is to be kept, e.g. for a recording.
   void keep_all_audio() { spu_.set_output_limit(SIZE_MAX); }

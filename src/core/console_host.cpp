@@ -101,6 +101,7 @@ void Console::load_state(const std::vector<u8>& blob) {
 void Console::drop_stale_audio() {
   std::vector<StereoSample> stale;
   spu_.take_samples(stale);
+  spu_.take_loud();
 }
 
 void Console::snapshot(Snapshot& out) {

@@ -83,7 +83,7 @@ Env::Env(const EnvConfig& config) : config_(config) {
   // get every frame, exactly.
   console_->set_pixels_observed(false);
   // Likewise sound is mixed only when something hears it (re-checked each step for on_frame).
-  console_->set_sound_observed(sound_heard());
+  listen();
   boot();
 
   auto space = [&](std::string name, std::vector<std::int64_t> shape, DType d, double lo, double hi) {

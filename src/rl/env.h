@@ -135,7 +135,9 @@ class Env {
  private:
   void use_renderer();
   // Whether anything takes the console's sound (Console::set_sound_observed).
-  bool sound_heard() const;
+  bool samples_taken() const;
+  // Sets what the SPU mixes for: the samples, a loudness watch for the move delimiter, or neither.
+  void listen();
   void boot();
   void check_disc_identity(const std::string& path);
   std::uint64_t start_level(int level);  // returns the frames it ran

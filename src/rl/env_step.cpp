@@ -10,11 +10,19 @@
 
 namespace psxrl::rl {
 
-bool Env::sound_heard() const {
-  // The audio observations, a move delimiter that waits for silence, and a front end's on_frame
-  // (a window's speaker, a recording) take the samples; nothing else does.
-  bool delimiter = game_.mode == Integration::StepMode::Moves && game_.watch_audio;
-  return obs_kind_ == ObsKind::Audio || obs_kind_ == ObsKind::Multimodal || delimiter || on_frame != nullptr;
+bool Env::samples_taken() const {
+  // The audio observations and a front end's on_frame (a window's speaker, a recording) take the
+  // samples; nothing else does.
+  return obs_kind_ == ObsKind::Audio || obs_kind_ == ObsKind::Multimodal || on_frame != nullptr;
+}
+
+void Env::listen() {
+  // Sound is mixed only for what takes it. A move delimiter that waits for silence needs only to
+  // know whether each frame got loud: the SPU mixes a frame only until its first loud sample.
+  const bool samples = samples_taken();
+  console_->set_sound_observed(samples);
+  const bool delimiter = game_.mode == Integration::StepMode::Moves && game_.watch_audio;
+  console_->watch_loudness(delimiter && !samples ? std::optional<psx::u16>(game_.audio_threshold) : std::nullopt);
 }
 
 void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
@@ -24,7 +32,8 @@ void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
   if (!console_->fatal_error().empty())
     throw std::runtime_error("game '" + game_.name + "': the console stopped: " + console_->fatal_error());
   bool active = false;
-  if (game_.watch_audio) {
+  if (game_.watch_audio && !samples_taken()) active = console_->take_loud();
+  else if (game_.watch_audio) {
     for (const auto& s : frame_audio_)
       if (std::abs(s.left) > static_cast<int>(game_.audio_threshold) || std::abs(s.right) > static_cast<int>(game_.audio_threshold)) {
         active = true;
@@ -88,7 +97,7 @@ StepResult Env::step(int action) {
   const Variable* score = game_.score_variable.empty() ? nullptr : &game_.variable(game_.score_variable);
   std::int64_t score0 = score ? raw(*score) : 0;
   move_audio_.clear();
-  console_->set_sound_observed(sound_heard());
+  listen();
   bool hit_bound = false;
   std::uint32_t frames = game_.mode == Integration::StepMode::Moves
                              ? run_move(game_.actions[static_cast<size_t>(action)], hit_bound)

@@ -8,6 +8,8 @@
 // environment take the produced samples and control audio capture through the public API below.
 #pragma once
 #include <array>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/audio_fifo.h"
@@ -88,6 +90,21 @@ class Spu final : public IoDevice, public DmaPort {
     observed_ = observed;
   }
   bool observed() const { return observed_; }
+  // A listener that needs only to know whether the output got loud (a move delimiter waiting
+  // for silence) sets a threshold instead of observing: the SPU then mixes each sample only until
+  // one has a channel beyond the threshold in magnitude since the last take_loud(), and the rest
+  // as unheard; no output samples are made for it. Empty: no such listener.
+  void watch_loudness(std::optional<u16> threshold) {
+    sync();
+    loud_threshold_ = threshold;
+    loud_ = false;
+  }
+  // Whether a sample made since the last call was loud (the mix as observed would have made it).
+  bool take_loud() {
+    sync();
+    return std::exchange(loud_, false);
+  }
+  std::optional<u16> loudness_threshold() const { return loud_threshold_; }
 
   // --- Capture (seed §2.5) ----------------------------------------------------------------
   void start_capture(const spu::CaptureOptions& options) {
@@ -190,7 +207,10 @@ class Spu final : public IoDevice, public DmaPort {
   struct Mix {
     s32 left = 0, right = 0, reverb_left = 0, reverb_right = 0;
   };
-  bool mixing() const { return observed_ || capture_.active(); }
+  // Whether the output samples are kept (observed, or a capture running), and whether the mix is
+  // made at all (also while a loudness watch waits for a loud sample).
+  bool output_taken() const { return observed_ || capture_.active(); }
+  bool mixing() const { return output_taken() || (loud_threshold_ && !loud_); }
   // Whether the mix hears the reverb's output (EVOLL/EVOLR).
   bool reverb_heard() const { return mixing() && (reverb_volume_left_ != 0 || reverb_volume_right_ != 0); }
   // Unheard, without writes (ATTR bit 7) or a possible IRQ9, a reverb tick's value matters only
@@ -238,6 +258,8 @@ class Spu final : public IoDevice, public DmaPort {
   std::vector<StereoSample> output_;
   size_t output_limit_ = kSampleRate * 60;
   bool observed_ = true;
+  std::optional<u16> loud_threshold_;
+  bool loud_ = false;  // a loud sample since the last take_loud()
   spu::AudioCapture capture_;
 };
 

@@ -4,6 +4,7 @@
 // output are made only while something hears them (set_observed); the rest runs every sample.
 #include <algorithm>
 #include <bit>
+#include <cstdlib>
 
 #include "core/endian.h"
 #include "spu/spu.h"
@@ -160,7 +161,9 @@ void Spu::generate_sample(u32 skip, u32 later, bool reverb_made) {
     StereoSample out;
     out.left = static_cast<s16>(clamp16(apply_volume(clamp16(mix.left), main_left_.level())));
     out.right = static_cast<s16>(clamp16(apply_volume(clamp16(mix.right), main_right_.level())));
-    push_output(out, 1);
+    if (output_taken()) push_output(out, 1);
+    if (loud_threshold_ && (std::abs(out.left) > *loud_threshold_ || std::abs(out.right) > *loud_threshold_))
+      loud_ = true;
   }
   main_left_.tick();
   main_right_.tick();
@@ -202,7 +205,7 @@ void Spu::quiet_samples(u32 n, bool reverb_made) {
       else reverb_sample(0, 0, n - 1 - k);
     }
   }
-  if (mixing()) push_output({}, n);
+  if (output_taken()) push_output({}, n);
   if (!main_left_.latched())
     for (u32 k = 0; k < n; ++k) main_left_.tick();
   if (!main_right_.latched())

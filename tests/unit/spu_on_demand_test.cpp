@@ -3,7 +3,9 @@
 // exactly as with the mix: save-state bytes and IRQ counts are compared against an SPU that
 // mixes, on a register-driven workload (pitch-modulation chain, voices 1 and 3 in the capture
 // buffers, reverb writing its work area with the IRQ address inside it, noise, CD input, one-shot
-// voices setting ENDX, key off and on) and on Tumble's title and level play.
+// voices setting ENDX, key off and on) and on Tumble's title and level play. A loudness watch
+// (Spu::watch_loudness, for a move delimiter waiting for silence) mixes only until a loud sample:
+// its flag must say what the full mix's samples say, with the same state.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -360,9 +362,143 @@ TEST(SpuOnDemand, EnvironmentMixesSoundOnlyWhenSomethingTakesIt) {
     }
     return env.console().spu().observed();
   };
-  EXPECT_TRUE(heard("simple", true, false));
+  EXPECT_FALSE(heard("simple", true, false));  // the delimiter watches loudness only (below)
   EXPECT_FALSE(heard("simple", false, false));
   EXPECT_TRUE(heard("audio", false, false));
   EXPECT_TRUE(heard("multimodal", false, false));
   EXPECT_TRUE(heard("simple", false, true));
+}
+
+TEST(SpuOnDemand, EnvironmentDelimiterWatchesLoudnessOnly) {
+  // Tumble's move delimiter needs only whether a frame got louder than its audio_threshold (64):
+  // the SPU watches for that instead of handing over samples; with samples taken it needs none.
+  auto threshold = [](const std::string& obs, bool watch_audio) {
+    psxrl::rl::EnvConfig c;
+    c.obs = obs;
+    c.watch_audio = watch_audio;
+    psxrl::rl::Env env(c);
+    env.reset(1, 1, nullptr);
+    env.step(0);
+    return env.console().spu().loudness_threshold();
+  };
+  EXPECT_EQ(threshold("simple", true), std::optional<u16>(64));
+  EXPECT_EQ(threshold("simple", false), std::nullopt);
+  EXPECT_EQ(threshold("audio", true), std::nullopt);
+}
+
+TEST(SpuOnDemand, MovesEndAlikeWithSamplesTakenOrLoudnessWatched) {
+  // A listener on every frame (the samples are taken and the delimiter reads them) and none (the
+  // loudness watch): every move lasts the same frames and the consoles end in the same state. A
+  // third environment ignores sound, to show that the moves compared include one that sound
+  // kept going.
+  psxrl::rl::EnvConfig c;
+  c.obs = "simple";
+  psxrl::rl::EnvConfig deaf_config = c;
+  deaf_config.watch_audio = false;
+  psxrl::rl::Env taken(c), watched(c), deaf(deaf_config);
+  taken.on_frame = [](std::span<const StereoSample>) {};
+  for (psxrl::rl::Env* e : {&taken, &watched, &deaf}) e->reset(1, 1, nullptr);
+  bool sound_mattered = false;
+  Lcg actions{7};
+  int moves = 0;
+  for (; moves < 30 && !sound_mattered; ++moves) {
+    const int action = static_cast<int>(actions.next(4));
+    const auto a = taken.step(action), b = watched.step(action), d = deaf.step(action);
+    ASSERT_EQ(a.info.game_frames, b.info.game_frames) << "move " << moves;
+    sound_mattered = a.info.game_frames != d.info.game_frames;
+    if (a.terminated || a.truncated)
+      for (psxrl::rl::Env* e : {&taken, &watched, &deaf}) e->reset(1, 2 + moves, nullptr);
+  }
+  EXPECT_TRUE(sound_mattered) << "in " << moves << " moves no move lasted longer for its sound";
+  EXPECT_EQ(taken.console().save_state(false), watched.console().save_state(false));
+}
+
+TEST(SpuOnDemand, LoadingAStateDropsTheLoudFlag) {
+  // A loud sample before a load belongs to the abandoned timeline, as untaken samples do.
+  tumble_test::TumbleConsole t;
+  Console& c = t.console;
+  c.set_sound_observed(false);
+  c.watch_loudness(0);
+  const std::vector<u8> start = c.save_state(false);
+  tumble_test::play_level_one_moves(c);
+  c.load_state(start);
+  EXPECT_FALSE(c.take_loud());
+  tumble_test::play_level_one_moves(c);
+  EXPECT_TRUE(c.take_loud()) << "the same play again: it was loud";
+}
+
+namespace {
+
+// ATTR with the SPU on, unmuted and CD input mixed; AVOL and MVOL at 8000h (-1.0 as s16: CD
+// volume is used as written, a fixed main volume is bits 0-14 times two, psx-spx "SPU Volume and
+// ADSR Generator"), so each output sample is the CD sample negated twice: the input itself.
+void cd_passthrough(SpuRig& r) {
+  r.w16(0x1F801DB0, 0x8000);
+  r.w16(0x1F801DB2, 0x8000);
+  r.w16(0x1F801D80, 0x4000);
+  r.w16(0x1F801D82, 0x4000);
+  r.w16(0x1F801DAA, 0xC001);
+}
+
+// Pushes `samples` as CD input and runs them in one go (one late catch-up).
+void play(SpuRig& r, const std::vector<StereoSample>& samples) {
+  for (const StereoSample& s : samples) r.cd.push(s);
+  r.sched.advance(Spu::kCyclesPerSample * samples.size());
+  r.sched.run_due_events();
+}
+
+}  // namespace
+
+TEST(SpuOnDemand, LoudnessIsAChannelBeyondTheThresholdInMagnitude) {
+  SpuRig r;
+  cd_passthrough(r);
+  r.spu.set_observed(false);
+  r.spu.watch_loudness(1000);
+  play(r, std::vector<StereoSample>(10));  // the fixed main volume latches at the first tick
+  EXPECT_FALSE(r.spu.take_loud());
+  std::vector<StereoSample> quiet(300, {500, -500});
+  quiet[100] = {1000, -1000}, quiet[200] = {-1000, 1000};
+  play(r, quiet);
+  EXPECT_FALSE(r.spu.take_loud()) << "at the threshold is not beyond it";
+  for (StereoSample loud : {StereoSample{1001, 0}, StereoSample{0, -1001}, StereoSample{-1001, 0}}) {
+    std::vector<StereoSample> v(300);
+    v[150] = loud;
+    play(r, v);
+    EXPECT_TRUE(r.spu.take_loud()) << loud.left << "," << loud.right;
+    EXPECT_FALSE(r.spu.take_loud()) << "taken: cleared";
+  }
+  EXPECT_TRUE(r.take().empty()) << "a loudness watch takes no samples";
+}
+
+TEST(SpuOnDemand, LoudnessWatchMatchesTheMixAndKeepsTheStateExact) {
+  // The workload's mix (voices, pitch modulation, noise, reverb heard and writing, CD input, and
+  // muted stretches) against an SPU that watches loudness: after each stretch (run late, in one catch-up, so that
+  // the watch stops mixing inside it) the loud flag is what the heard samples say, and the state
+  // bytes are the same.
+  bool seen_loud = false, seen_quiet = false;
+  for (u16 threshold : {u16{0}, u16{3000}, u16{9000}}) {
+    auto p = std::make_unique<Pair>();
+    p->unheard.spu.watch_loudness(threshold);
+    u32 sample = 0;
+    for (u32 block = 0; block < 40; ++block) {
+      const u32 n = 1 + (block * 7919u) % 700;
+      for (SpuRig* r : {&p->heard, &p->unheard}) {
+        events(*r, block == 10 ? 3000 : block == 20 ? 6000 : 0);
+        // Muted stretches (ATTR bit 14 clear): the CD input and the reverb's tail only.
+        const u16 attr = r->r16(0x1F801DAA);
+        r->w16(0x1F801DAA, block % 10 >= 6 ? attr & ~0x4000 : attr | 0x4000);
+        std::vector<StereoSample> cd(n);
+        for (u32 i = 0; i < n; ++i) cd[i] = {static_cast<s16>(((sample + i) * 97) % 2000 * 8 - 8000), 0};
+        play(*r, cd);
+      }
+      sample += n;
+      bool expected = false;
+      for (const StereoSample& s : p->heard.take()) expected |= std::abs(s.left) > threshold || std::abs(s.right) > threshold;
+      ASSERT_EQ(p->unheard.spu.take_loud(), expected) << "threshold " << threshold << " block " << block;
+      (expected ? seen_loud : seen_quiet) = true;
+      ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << "threshold " << threshold << " block " << block;
+    }
+    EXPECT_TRUE(p->unheard.take().empty());
+  }
+  EXPECT_TRUE(seen_loud && seen_quiet) << "the thresholds did not cover both outcomes";
 }

@@ -18,7 +18,7 @@ Spu::Spu(Scheduler& sched, InterruptController& irq, AudioFifo& cd_audio)
 void Spu::catch_up(Cycles horizon) {
   const u32 due = static_cast<u32>((horizon - next_sample_) / kCyclesPerSample) + 1;
   // The first sample applies the pending key events; from the second on no register changes
-  // until the catch-up ends, so silent voices can step through the rest at once. The reference
+  // until the catch-up ends, so voices nothing reads can step through the rest at once. The reference
   // (max batch 1) makes every sample in full.
   const bool reference = max_batch_ <= 1;
   // An unseen reverb that nothing feeds takes nothing from the samples: all its ticks at once,
@@ -31,33 +31,35 @@ void Spu::catch_up(Cycles horizon) {
       next_sample_ += (due - k) * kCyclesPerSample;
       return;
     }
+    const bool mixed = mixing();
     generate_sample(skip, reference ? 0 : due - 1 - k, reverb_made);
     next_sample_ += kCyclesPerSample;
-    if (k == 0 && due > 1 && !reference) skip = step_silent_voices(due - 1);
+    // Voices nothing reads step through the rest at once: from the second sample on, and again
+    // where a loud sample ends a loudness watch's mix (no voice is read for the mix from then).
+    if (!reference && k + 1 < due && (k == 0 || (mixed && !mixing()))) skip |= step_unheard_voices(due - 1 - k, skip);
   }
 }
 
-u32 Spu::step_silent_voices(u32 samples) {
-  // A silent voice's output is 0 (capture buffers, pitch modulation, mix) and its envelope and
-  // volumes stand still; what remains is its pitch counter and block fetches. Not with IRQ9
-  // possible (every block header and sample read is checked against IRQA), not while the voices
-  // do not run (SPU disabled).
+u32 Spu::step_unheard_voices(u32 samples, u32 stepped) {
+  // A voice nothing reads (voices_needed) is its pitch counter, its block fetches, its envelope
+  // and its volume sweeps; a silent one (Voice::silent: output 0, so it may be needed) only the
+  // first two. Not with IRQ9 possible (every block header and sample read is checked against
+  // IRQA), not while the voices do not run (SPU disabled).
   if (!(attr_ & kAttrEnable) || irq_possible()) return 0;
   // The SPU writes the capture buffers (0..FFFh) every sample and, with ATTR bit 7, the reverb
   // work area (ESA*8..7FFFFh, psx-spx "SPU Reverb Registers").
   const spu::Voice::RamWindow unwritten{0x1000, (attr_ & kAttrReverbEnable) ? reverb_.base() * 8u : kRamSize};
   const u32 needed = voices_needed();
-  u32 stepped = 0;
   for (u32 i = 0; i < kNumVoices; ++i) {
     spu::Voice& v = voices_[i];
     const u32 bit = 1u << i;
-    if (!v.silent()) continue;
+    if ((stepped & bit) || ((needed & bit) && !v.silent())) continue;
     // psx-spx "Pitch Counter": modulation by a silent voice (output 0) leaves the pitch as is.
     if ((pitch_mod_ & bit) && !voices_[i - 1].silent()) continue;
     const spu::Voice before = v;
     bool loop_end = false;
-    if (!v.step_silent(ram_.data(), std::min<u32>(v.pitch, 0x4000), (noise_on_ & bit) != 0, samples, unwritten,
-                       loop_end)) {
+    if (!v.step_unheard(ram_.data(), std::min<u32>(v.pitch, 0x4000), (noise_on_ & bit) != 0, samples, unwritten,
+                        loop_end)) {
       v = before;
       continue;
     }

@@ -179,9 +179,10 @@ class Spu final : public IoDevice, public DmaPort {
   // Lazy generation (spu.cpp). next_sample_ is when the first sample not yet made is due.
   void on_sample();
   void catch_up(Cycles horizon);
-  // Steps the silent voices (Voice::silent) through the `samples` samples after the one just
-  // made, where that is exact; returns them (bit mask) for the sample-by-sample loop to skip.
-  u32 step_silent_voices(u32 samples);
+  // Steps the voices not yet `stepped` whose output nothing reads (voices_needed) or is 0
+  // (Voice::silent) through the `samples` samples after the one just made, where that is exact;
+  // returns them with `stepped` (bit mask) for the sample-by-sample loop to skip.
+  u32 step_unheard_voices(u32 samples, u32 stepped);
   // Whether a sample could raise IRQ9: both enables set and the flag not already up (a raised
   // flag stays until ATTR acknowledges it, so further hits change nothing).
   bool irq_possible() const {
@@ -191,7 +192,7 @@ class Spu final : public IoDevice, public DmaPort {
   void book();
 
   // Sample generation (spu_mixer.cpp). Voices in `skip` were already stepped through this
-  // sample (step_silent_voices); `later` samples follow in the same catch-up (0 where nothing
+  // sample (step_unheard_voices); `later` samples follow in the same catch-up (0 where nothing
   // may be left out); `reverb_made`: the catch-up made the reverb's ticks already.
   void generate_sample(u32 skip, u32 later, bool reverb_made);
   // Whether the rest of a catch-up, after a sample that left the voices in `skip`, is silence

@@ -55,10 +55,19 @@ Voice::BlockEvent Voice::advance(u32 step, bool noise) {
   return BlockEvent::LoopEnd;
 }
 
-bool Voice::step_silent(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end) {
+bool Voice::step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end) {
   // psx-spx "SPU ADPCM Pitch": the counter moves by `step` each sample and a block is left when
   // bits 12+ reach 28, so the crossings fall every ceil(remaining / step) samples.
   constexpr u32 kBlockEnd = kAdpcmBlockSamples << 12;
+  const bool ticking = !silent();
+  const auto tick = [&](u32 n) {
+    if (!ticking) return;
+    for (u32 k = 0; k < n; ++k) adsr.tick();
+    if (!volume_left.latched())
+      for (u32 k = 0; k < n; ++k) volume_left.tick();
+    if (!volume_right.latched())
+      for (u32 k = 0; k < n; ++k) volume_right.tick();
+  };
   u32 done = 0;  // samples stepped so far
   while (true) {
     if (!has_block_) {
@@ -70,9 +79,12 @@ bool Voice::step_silent(const u8* ram, u32 step, bool noise, u32 samples, RamWin
     const u32 left = samples - done;
     const u32 to_cross = step == 0 ? left + 1 : (kBlockEnd - counter_ + step - 1) / step;
     if (to_cross > left) {
+      tick(left);
       counter_ += left * step;  // stays inside the block
       return true;
     }
+    // The envelope ticks of these samples come before the crossing's End+Mute (advance()).
+    tick(to_cross);
     // counter_ + to_cross * step < kBlockEnd + step: advance() leaves the block exactly once.
     if (advance(to_cross * step, noise) == BlockEvent::LoopEnd) loop_end = true;
     done += to_cross;

@@ -50,13 +50,15 @@ class Voice {
   struct RamWindow {
     u32 begin = 0, end = 0;
   };
-  // Steps a silent voice over `samples` (>= 1) samples at a constant, already clipped `step`,
-  // crossing by crossing instead of sample by sample: each block crossed into is decoded as the
-  // sample-by-sample loop would (the ADPCM history and LSAX stay exact), LoopEnd jumps and sets
-  // `loop_end`. Blocks are read from `ram` as it is at the run's first sample; one read later
-  // that lies outside `unwritten` could have changed in between: then it returns false and the
-  // voice is left half-stepped (the caller restores it and steps it sample by sample).
-  bool step_silent(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end);
+  // Steps a voice whose output nothing reads over `samples` (>= 1) samples at a constant, already
+  // clipped `step`, crossing by crossing instead of sample by sample: between crossings the
+  // envelope and the volume sweeps tick (nothing for a silent voice), each block crossed into is
+  // decoded as the sample-by-sample loop would (the ADPCM history and LSAX stay exact), LoopEnd
+  // jumps and sets `loop_end`, and End+Mute turns the envelope off after that sample's tick.
+  // Blocks are read from `ram` as it is at the run's first sample; one read later that lies
+  // outside `unwritten` could have changed in between: then it returns false and the voice is
+  // left half-stepped (the caller restores it and steps it sample by sample).
+  bool step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end);
 
   u16 current_address() const { return current_address_; }
   // Byte address of the halfword holding the current sample (for the IRQ address check).

@@ -1,15 +1,17 @@
-// Silent voices stepped a batch at a time (Spu::step_silent_voices, Voice::step_silent) and reverb
-// ticks whose value is overwritten unread (Reverb::skip_tick) must leave the SPU exactly as the
-// per-sample reference (max batch 1) does: the same save-state bytes (sound RAM, voices with
-// their ADPCM history, LSAX, ENDX, reverb histories), the same register reads, IRQ9 at the same
-// cycles, and the same output samples where the SPU is observed. The workloads have voices that
-// are Off at level 0 while their pitch counters cross blocks with LoopStart, LoopEnd and Repeat
-// flags (psx-spx "SPU ADPCM Samples"), pitches from 0 to above 4000h (clipped, psx-spx "Pitch
-// Counter"), blocks in the capture buffers (0..FFFh, written every sample) and in a reverb work
-// area that ATTR bit 7 lets the reverb write, ENVX written on Off voices (their ADPCM history is
-// heard then), PMON and NON on silent voices, key events at any cycle, and IRQA on the blocks
-// silent voices cross, with IRQ9 enabled and with its flag left up. Quiet stretches (every voice
-// silent, no CD input: Spu::quiet_samples) follow sound in the capture buffers.
+// Voices nothing reads stepped a batch at a time (Spu::step_unheard_voices, Voice::step_unheard:
+// silent ones, and sounding ones while nothing mixes, their envelopes and sweeps ticking between
+// block crossings) and reverb ticks whose value is overwritten unread (Reverb::skip_tick) must
+// leave the SPU exactly as the per-sample reference (max batch 1) does: the same save-state bytes
+// (sound RAM, voices with their ADPCM history, LSAX, ENDX, reverb histories), the same register
+// reads, IRQ9 at the same cycles, and the same output samples where the SPU is observed. The
+// workloads have voices that are Off at level 0 while their pitch counters cross blocks with
+// LoopStart, LoopEnd and Repeat flags (psx-spx "SPU ADPCM Samples"), pitches from 0 to above 4000h
+// (clipped, psx-spx "Pitch Counter"), blocks in the capture buffers (0..FFFh, written every
+// sample) and in a reverb work area that ATTR bit 7 lets the reverb write, ENVX written on Off
+// voices (their ADPCM history is heard then), PMON and NON on silent voices, key events at any
+// cycle, volume sweeps, and IRQA on the blocks silent voices cross, with IRQ9 enabled and with its
+// flag left up. Quiet stretches (every voice silent, no CD input: Spu::quiet_samples) follow sound
+// in the capture buffers.
 #include <gtest/gtest.h>
 
 #include <memory>

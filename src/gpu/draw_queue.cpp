@@ -15,11 +15,15 @@ Rect display_source(const DisplayArea& area) {
   return wrapped_block(area.x, area.y, area.rgb24 ? (width * 3 + 1) / 2 : width, height);
 }
 
-// Rectangles some kept later call may read, merged into their bounding box past a few (a
-// superset, so the pruning stays on the safe side).
+// Rectangles some kept later call may read inside the cover being pruned (no read outside it can
+// meet a call that writes only inside it), merged into their bounding box past a few (a superset,
+// so the pruning stays on the safe side).
 class Readers {
  public:
-  void add(const Rect& r) {
+  explicit Readers(const Rect& cover) : cover_(cover) {}
+  void add(const Rect& read) {
+    const Rect r{std::max(read.x0, cover_.x0), std::max(read.y0, cover_.y0), std::min(read.x1, cover_.x1),
+                 std::min(read.y1, cover_.y1)};
     if (r.empty()) return;
     for (u32 i = 0; i < n_; ++i)
       if (rects_[i].contains(r)) return;
@@ -49,6 +53,7 @@ class Readers {
 
  private:
   static constexpr u32 kMax = 16;
+  Rect cover_;
   Rect rects_[kMax];
   u32 n_ = 0;
 };
@@ -197,7 +202,7 @@ void DrawQueue::drop() {
 // call that itself replaces a rectangle hides the reads inside it from the calls before it.
 void DrawQueue::prune(const Rect& cover, size_t end) {
   keep_.assign(queue_.size(), 1);  // reuses its storage: no allocation per frame
-  Readers readers;
+  Readers readers(cover);
   bool frame_added = !frame_pending_;
   bool any_dropped = false;
   for (size_t i = end; i-- > 0;) {

@@ -172,16 +172,23 @@ bool Reverb::quiet_ticks(u32 n) {
   if (clear_ticks_ < n) return false;
   const u32 skipped = n > kTicksToOverwrite ? n - kTicksToOverwrite : 0;
   skip_quiet(skipped);
-  for (u32 k = skipped; k < n; ++k) {
-    if (zero_inputs_ < kRing) push_input(0, 0);
-    else in_pos_ = (in_pos_ + 1) & (kRing - 1);
-    // owe() with clear_ticks_ > 0 (it counts down from n or more): the value is owed.
-    const u32 side = phase_;
+  // The last ticks, whose values a later tick could still read: their zero inputs as
+  // skip_quiet() takes them, then owe() with clear_ticks_ > 0 (it counts down from n or more),
+  // side by side as end_tick() alternates them.
+  const u32 owed = n - skipped;
+  u32 pushed = 0;
+  for (; pushed < owed && zero_inputs_ < kRing; ++pushed) push_input(0, 0);
+  in_pos_ = (in_pos_ + owed - pushed) & (kRing - 1);
+  u32 side = phase_;
+  for (u32 k = 0; k < owed; ++k) {
     const u32 pos = out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
     owed_at_[side][pos] = current_;
     owed_[side] |= u64{1} << pos;
-    end_tick();
+    if (side == 1) step_address();
+    side ^= 1;
   }
+  phase_ = side;
+  clear_ticks_ -= owed;
   return true;
 }
 

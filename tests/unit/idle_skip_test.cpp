@@ -7,11 +7,13 @@
 // Tumble's disc, and test ROMs.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "core/console.h"
+#include "core/cpu/register_line.h"
 #include "tumble_console_util.h"
 
 namespace {
@@ -330,3 +332,30 @@ TEST(IdleSkipPrograms, TestRoms) {
 }
 
 }  // namespace
+
+// A proof is reused for a loop met again j iterations along its line (RegisterLine): registers
+// with a step lie at from + j*step, and the others must be as they were unless the loop never
+// names them (`any`). The arithmetic below is the expected answer.
+TEST(RegisterLine, IterationsAlongTheLineAndFixedRegisters) {
+  std::array<u32, 32> before{}, after{};
+  for (u32 r = 1; r < 32; ++r) before[r] = after[r] = 0x1000 * r;
+  after[kT0] += 3;           // a counter stepping by 3
+  after[kS0] -= 8;           // a pointer walking down by 8 (tz 3: j is fixed modulo 2^29)
+  const psx::RegisterLine line(before, after);
+  EXPECT_TRUE(line.same_steps(before, after));
+  std::array<u32, 32> to = before;
+  to[kT0] += 3 * 1000, to[kS0] -= 8 * 1000;
+  u32 j = 0;
+  ASSERT_TRUE(line.iterations(before, to, j));
+  EXPECT_EQ(j, 1000u);
+  to[kT0] += 1;  // off the line
+  EXPECT_FALSE(line.iterations(before, to, j));
+  to[kT0] -= 1;
+  for (u32 r : {1u, 2u, 29u, 31u}) {  // a register the loop leaves as it is, changed since
+    std::array<u32, 32> moved = to;
+    moved[r] ^= 0x40;
+    EXPECT_FALSE(line.iterations(before, moved, j)) << "r" << r;
+    EXPECT_TRUE(line.iterations(before, moved, j, 1u << r)) << "r" << r << " not named by the loop";
+    EXPECT_EQ(j, 1000u);
+  }
+}

@@ -15,8 +15,10 @@ class RegisterLine {
   RegisterLine(const std::array<u32, 32>& before, const std::array<u32, 32>& after) {
     for (u32 r = 0; r < 32; ++r) {
       steps_[r] = after[r] - before[r];
-      fixed_[r] = steps_[r] == 0 ? ~0u : 0;
-      if (steps_[r] == 0) continue;
+      if (steps_[r] == 0) {
+        fixed_ |= 1u << r;
+        continue;
+      }
       moving_[moving_count_++] = r;
       // j is solved with the step that has the fewest trailing zero bits, t: it fixes j modulo
       // 2^(32-t) (a multiple of an odd number is invertible modulo a power of two).
@@ -35,9 +37,10 @@ class RegisterLine {
   // The smallest j with from + j*step == to, if there is one (0 when no register moves); the
   // registers in `any` (bit r for register r) may differ where their step is zero.
   bool iterations(const std::array<u32, 32>& from, const std::array<u32, 32>& to, u32& j, u32 any = 0) const {
-    u32 differ = 0;
-    for (u32 r = 0; r < 32; ++r) differ |= (from[r] ^ to[r]) & fixed_[r] & ((any >> r & 1) - 1);
-    if (differ) return false;
+    for (u32 compare = fixed_ & ~any; compare != 0; compare &= compare - 1) {
+      const u32 r = static_cast<u32>(__builtin_ctz(compare));
+      if (from[r] != to[r]) return false;
+    }
     j = 0;
     if (moving_count_ == 0) return true;
     const u32 diff = to[pick_] - from[pick_];
@@ -61,7 +64,7 @@ class RegisterLine {
   }
 
   std::array<u32, 32> steps_{};
-  std::array<u32, 32> fixed_{};   // ~0 for the registers the loop leaves as they are
+  u32 fixed_ = 0;                 // bit r: the loop leaves register r as it is
   std::array<u32, 32> moving_{};  // the others, moving_count_ of them
   u32 moving_count_ = 0;
   u32 pick_ = 0, zeros_ = 32, inverse_ = 0;

@@ -18,8 +18,8 @@ Spu::Spu(Scheduler& sched, InterruptController& irq, AudioFifo& cd_audio)
 void Spu::catch_up(Cycles horizon) {
   const u32 due = static_cast<u32>((horizon - next_sample_) / kCyclesPerSample) + 1;
   // The first sample applies the pending key events; from the second on no register changes
-  // until the catch-up ends, so voices nothing reads can step through the rest at once. The reference
-  // (max batch 1) makes every sample in full.
+  // until the catch-up ends, so voices nothing reads can step through the rest at once. The
+  // reference (max batch 1) makes every sample in full.
   const bool reference = max_batch_ <= 1;
   // An unseen reverb that nothing feeds takes nothing from the samples: all its ticks at once,
   // where none of them reads a capture buffer (Reverb::quiet_ticks).
@@ -36,7 +36,8 @@ void Spu::catch_up(Cycles horizon) {
     next_sample_ += kCyclesPerSample;
     // Voices nothing reads step through the rest at once: from the second sample on, and again
     // where a loud sample ends a loudness watch's mix (no voice is read for the mix from then).
-    if (!reference && k + 1 < due && (k == 0 || (mixed && !mixing()))) skip |= step_unheard_voices(due - 1 - k, skip);
+    if (!reference && k + 1 < due && (k == 0 || (mixed && !mixing())))
+      skip |= step_unheard_voices(due - 1 - k, skip);
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "rl/env.h"
@@ -493,10 +494,12 @@ TEST(SpuOnDemand, LoudnessWatchMatchesTheMixAndKeepsTheStateExact) {
       }
       sample += n;
       bool expected = false;
-      for (const StereoSample& s : p->heard.take()) expected |= std::abs(s.left) > threshold || std::abs(s.right) > threshold;
-      ASSERT_EQ(p->unheard.spu.take_loud(), expected) << "threshold " << threshold << " block " << block;
+      for (const StereoSample& s : p->heard.take())
+        expected |= std::abs(s.left) > threshold || std::abs(s.right) > threshold;
+      const std::string where = "threshold " + std::to_string(threshold) + " block " + std::to_string(block);
+      ASSERT_EQ(p->unheard.spu.take_loud(), expected) << where;
       (expected ? seen_loud : seen_quiet) = true;
-      ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << "threshold " << threshold << " block " << block;
+      ASSERT_EQ(state_bytes(p->heard.spu), state_bytes(p->unheard.spu)) << where;
     }
     EXPECT_TRUE(p->unheard.take().empty());
   }

@@ -152,11 +152,14 @@ void Reverb::skip_tick(s32 in_left, s32 in_right) {
   end_tick();
 }
 
-void Reverb::skip_quiet(u32 m) {
-  // Zero inputs: once kRing of them are in, every history entry is 0 and a push only moves in_pos_.
+void Reverb::push_zero_inputs(u32 m) {
+  // Once kRing of them are in, every history entry is 0 and a push only moves in_pos_.
   u32 pushed = 0;
   for (; pushed < m && zero_inputs_ < kRing; ++pushed) push_input(0, 0);
   in_pos_ = (in_pos_ + m - pushed) & (kRing - 1);
+}
+
+void Reverb::skip_quiet(u32 m) {
   // The sides alternate, this tick's first; the buffer address moves after each right side.
   const u32 first = (m + 1) / 2, second = m / 2;
   const u32 right_ends = phase_ == 0 ? second : first;
@@ -170,15 +173,13 @@ void Reverb::skip_quiet(u32 m) {
 bool Reverb::quiet_ticks(u32 n) {
   if (clear_ticks_ == 0) clear_ticks_ = ticks_clear_of_capture();
   if (clear_ticks_ < n) return false;
+  // No tick reads the input history (owed values leave it out): all n inputs go in first.
+  push_zero_inputs(n);
   const u32 skipped = n > kTicksToOverwrite ? n - kTicksToOverwrite : 0;
   skip_quiet(skipped);
-  // The last ticks, whose values a later tick could still read: their zero inputs as
-  // skip_quiet() takes them, then owe() with clear_ticks_ > 0 (it counts down from n or more),
-  // side by side as end_tick() alternates them.
+  // The last ticks, whose values a later tick could still read: owe() with clear_ticks_ > 0 (it
+  // counts down from n or more), side by side as end_tick() alternates them.
   const u32 owed = n - skipped;
-  u32 pushed = 0;
-  for (; pushed < owed && zero_inputs_ < kRing; ++pushed) push_input(0, 0);
-  in_pos_ = (in_pos_ + owed - pushed) & (kRing - 1);
   u32 side = phase_;
   for (u32 k = 0; k < owed; ++k) {
     const u32 pos = out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);

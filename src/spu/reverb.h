@@ -81,7 +81,9 @@ class Reverb {
   // The buffer address's move after each right-side tick, wrapping to ESA.
   void step_address();
   void end_tick();
-  // What skip_tick(0, 0) does, m times.
+  // m zero inputs, as push_input(0, 0) m times.
+  void push_zero_inputs(u32 m);
+  // What skip_tick(0, 0) does m times, after its inputs (push_zero_inputs).
   void skip_quiet(u32 m);
   // The value of this tick's slot `pos` on `side`: computed now where it reads a capture buffer,
   // else owed.

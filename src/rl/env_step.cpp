@@ -1,7 +1,6 @@
 // Env::step: running a move (delimited, seed §3.2.4) or a frame-skip step (ALE style), the
 // reward (seed Table 3.3 or raw score), the outcome, and encoding the observation.
 #include <chrono>
-#include <cstdlib>
 #include <stdexcept>
 
 #include "core/console.h"
@@ -18,11 +17,11 @@ bool Env::samples_taken() const {
 
 void Env::listen() {
   // Sound is mixed only for what takes it. A move delimiter that waits for silence needs only to
-  // know whether each frame got loud: the SPU mixes a frame only until its first loud sample.
-  const bool samples = samples_taken();
-  console_->set_sound_observed(samples);
+  // know whether each frame got loud: the SPU watches for that, and where nothing takes the
+  // samples it mixes a frame only until its first loud sample.
+  console_->set_sound_observed(samples_taken());
   const bool delimiter = game_.mode == Integration::StepMode::Moves && game_.watch_audio;
-  console_->watch_loudness(delimiter && !samples ? std::optional<psx::u16>(game_.audio_threshold) : std::nullopt);
+  console_->watch_loudness(delimiter ? std::optional<psx::u16>(game_.audio_threshold) : std::nullopt);
 }
 
 void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
@@ -31,15 +30,7 @@ void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
   if (on_frame) on_frame(frame_audio_);
   if (!console_->fatal_error().empty())
     throw std::runtime_error("game '" + game_.name + "': the console stopped: " + console_->fatal_error());
-  bool active = false;
-  if (game_.watch_audio && !samples_taken()) active = console_->take_loud();
-  else if (game_.watch_audio) {
-    for (const auto& s : frame_audio_)
-      if (std::abs(s.left) > static_cast<int>(game_.audio_threshold) || std::abs(s.right) > static_cast<int>(game_.audio_threshold)) {
-        active = true;
-        break;
-      }
-  }
+  bool active = console_->take_loud();  // false without a loudness watch (listen())
   if (obs_kind_ == ObsKind::Audio || obs_kind_ == ObsKind::Multimodal)
     move_audio_.insert(move_audio_.end(), frame_audio_.begin(), frame_audio_.end());
   if (watched) {

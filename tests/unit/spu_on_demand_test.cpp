@@ -363,16 +363,16 @@ TEST(SpuOnDemand, EnvironmentMixesSoundOnlyWhenSomethingTakesIt) {
     }
     return env.console().spu().observed();
   };
-  EXPECT_FALSE(heard("simple", true, false));  // the delimiter watches loudness only (below)
+  EXPECT_FALSE(heard("simple", true, false));  // the delimiter watches loudness (below)
   EXPECT_FALSE(heard("simple", false, false));
   EXPECT_TRUE(heard("audio", false, false));
   EXPECT_TRUE(heard("multimodal", false, false));
   EXPECT_TRUE(heard("simple", false, true));
 }
 
-TEST(SpuOnDemand, EnvironmentDelimiterWatchesLoudnessOnly) {
+TEST(SpuOnDemand, EnvironmentDelimiterWatchesLoudness) {
   // Tumble's move delimiter needs only whether a frame got louder than its audio_threshold (64):
-  // the SPU watches for that instead of handing over samples; with samples taken it needs none.
+  // the SPU watches for that, whether or not something (an audio observation) takes the samples.
   auto threshold = [](const std::string& obs, bool watch_audio) {
     psxrl::rl::EnvConfig c;
     c.obs = obs;
@@ -384,12 +384,13 @@ TEST(SpuOnDemand, EnvironmentDelimiterWatchesLoudnessOnly) {
   };
   EXPECT_EQ(threshold("simple", true), std::optional<u16>(64));
   EXPECT_EQ(threshold("simple", false), std::nullopt);
-  EXPECT_EQ(threshold("audio", true), std::nullopt);
+  EXPECT_EQ(threshold("audio", true), std::optional<u16>(64));
+  EXPECT_EQ(threshold("audio", false), std::nullopt);
 }
 
 TEST(SpuOnDemand, MovesEndAlikeWithSamplesTakenOrLoudnessWatched) {
-  // A listener on every frame (the samples are taken and the delimiter reads them) and none (the
-  // loudness watch): every move lasts the same frames and the consoles end in the same state. A
+  // A listener on every frame (the samples are taken, so every sample is mixed) and none (the
+  // SPU mixes a frame only until its first loud sample): every move lasts the same frames and the consoles end in the same state. A
   // third environment ignores sound, to show that the moves compared include one that sound
   // kept going.
   psxrl::rl::EnvConfig c;

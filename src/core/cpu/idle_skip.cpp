@@ -123,8 +123,15 @@ void IdleSkip::at_loop_head(Cpu& cpu) {
   } else {
     if (b.head != head) b = Backoff{head, 0, 0};
     ++stats_.examinations;
-    if (examine(cpu)) {
+    const Examined e = examine(cpu);
+    if (e != Examined::refused) {
       b.failures = 0;
+      // The recorded iteration's back branch left the loop head set, so the head is met again
+      // at once, at the iteration after the skip. Where the proof's bound ended the skip, that
+      // is one the proof could not show to repeat, most often the loop's last: examining it
+      // would only record the loop's exit and the code after it until something disqualifies
+      // (Tumble's pad delays ran 23 and 47 instructions so every frame). It runs as usual.
+      b.visits = e == Examined::skipped_to_bound ? 1 : 0;
     } else {
       b.failures = std::min<u32>(b.failures + 1, kMaxBackoff);
       b.visits = (1u << b.failures) - 1;
@@ -134,13 +141,13 @@ void IdleSkip::at_loop_head(Cpu& cpu) {
   // cleared the loop head, goes on from the head as usual (the recompiler with the head's block).
 }
 
-bool IdleSkip::examine(Cpu& cpu) {
+IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
   Bus& bus = cpu.bus_;
   Scheduler& sched = cpu.sched_;
   const u32 head = cpu.pc_;
   if (cpu.next_in_delay_ || cpu.hook_armed_ || bus.dcache_mode() || cpu.interrupt_pending() ||
       (cpu.cop0_.dcic & (Cop0::kDcicPCE | Cop0::kDcicDAE)))
-    return false;
+    return Examined::refused;
 
   // 1. Execute one iteration, vetting each instruction before it runs.
   const Cycles deadline = sched.next_deadline();
@@ -154,28 +161,28 @@ bool IdleSkip::examine(Cpu& cpu) {
   path_len_ = 0;
   cells_.count = 0;
   do {
-    if (cpu.stop_ || sched.now() >= deadline) return false;
-    if (path_len_ == kMaxPath) return false;
+    if (cpu.stop_ || sched.now() >= deadline) return Examined::refused;
+    if (path_len_ == kMaxPath) return Examined::refused;
     u32 instr;
-    if (!bus.peek_code(cpu.pc_, instr)) return false;  // the word the fetch will execute
+    if (!bus.peek_code(cpu.pc_, instr)) return Examined::refused;  // the word the fetch will execute
     IdleStep& st = path_[path_len_++];
     st = {cpu.pc_, instr, 0, 0, 0};
     tags_[path_len_ - 1] = icache.tag(ICache::line(cpu.pc_));
     const IdleProof::Kind kind = IdleProof::classify(instr);
-    if (kind == IdleProof::Kind::Other) return false;
-    if (kind == IdleProof::Kind::Branch && cpu.next_in_delay_) return false;
+    if (kind == IdleProof::Kind::Other) return Examined::refused;
+    if (kind == IdleProof::Kind::Branch && cpu.next_in_delay_) return Examined::refused;
     const u32 width = load_width(instr);
     if (width || kind == IdleProof::Kind::Store)
       st.addr = cpu.regs_[(instr >> 21) & 31] + static_cast<u32>(static_cast<s16>(instr & 0xFFFF));
     if (width) {
       const bool sign = (instr >> 26) == 0x20 || (instr >> 26) == 0x21;  // LB, LH
       st.load_bits = pure_load_bits(cpu.cop0_.sr, st.addr, width, sign);
-      if (st.load_bits == 0) return false;
+      if (st.load_bits == 0) return Examined::refused;
     }
-    if (kind == IdleProof::Kind::Store && !note_store(cpu, st)) return false;
+    if (kind == IdleProof::Kind::Store && !note_store(cpu, st)) return Examined::refused;
     cpu.step();
     st.load_value = cpu.load_val_;
-    if (cpu.hook_armed_) return false;
+    if (cpu.hook_armed_) return Examined::refused;
   } while (cpu.pc_ != head || cpu.next_in_delay_);
 
   // The iteration ran without an event falling due (events only run at or after the deadline),
@@ -183,23 +190,23 @@ bool IdleSkip::examine(Cpu& cpu) {
   // cannot restore it: both would be for addresses the iteration fetches, with one tag), and left
   // the load pipeline as it was.
   const Cycles t1 = sched.now();
-  if (t1 >= deadline) return false;
+  if (t1 >= deadline) return Examined::refused;
   for (u32 i = 0; i < path_len_; ++i)
-    if (icache.tag(ICache::line(path_[i].pc)) != tags_[i]) return false;
+    if (icache.tag(ICache::line(path_[i].pc)) != tags_[i]) return Examined::refused;
   const u32 load1[4] = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
-  if (!std::equal(load0, load0 + 4, load1)) return false;
+  if (!std::equal(load0, load0 + 4, load1)) return Examined::refused;
   // A load in flight shapes the iteration's timing (cpu.h, load shadow): it must be in flight
   // for as long, into the same register, at the end as at the start.
   const Cycles shadow0 = shadow_left(done0, t0), shadow1 = shadow_left(cpu.load_done_at_, t1);
-  if (shadow0 != shadow1 || (shadow0 && shadow_reg0 != cpu.shadow_reg_)) return false;
-  if (!name_cells(bus)) return false;
+  if (shadow0 != shadow1 || (shadow0 && shadow_reg0 != cpu.shadow_reg_)) return Examined::refused;
+  if (!name_cells(bus)) return Examined::refused;
 
   // 2. Prove the following iterations repeat it, each adding the same step to the registers (and
   // to the words it stores to).
   u64 max_k;
   if (cells_.count > 0 || !reuse_proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_, max_k)) {
     IdleProof proof(regs0, cpu.regs_, cpu.load_reg_, cpu.load_val_, cells_);
-    if (!proof.run(path_.data(), path_len_)) return false;
+    if (!proof.run(path_.data(), path_len_)) return Examined::refused;
     max_k = proof.max_k();
     ++stats_.proofs;
     Proven* p = &proven_[proven_next_++ % kProofs];
@@ -220,7 +227,7 @@ bool IdleSkip::examine(Cpu& cpu) {
   const u64 n = max_k < by_time ? max_k + 1 : by_time;
   last_head_ = head;
   last_cost_ = cost;
-  if (n == 0) return false;
+  if (n == 0) return Examined::refused;
   for (u32 i = 1; i < 32; ++i) cpu.regs_[i] += static_cast<u32>(n) * (cpu.regs_[i] - regs0[i]);
   // As the last skipped iteration's store leaves it (through the bus: a word of compiled code
   // drops its blocks).
@@ -232,7 +239,7 @@ bool IdleSkip::examine(Cpu& cpu) {
   ++stats_.skips;
   stats_.iterations += n;
   stats_.cycles += n * cost;
-  return true;
+  return max_k < by_time ? Examined::skipped_to_bound : Examined::skipped_to_event;
 }
 
 // A store the loop may make (before it runs): a word to RAM or the scratchpad that reaches memory

@@ -77,8 +77,10 @@ class IdleSkip {
   static BackoffCells backoff_cells();
 
  private:
-  // Records and proves one iteration from the loop head; skips and returns true when it can.
-  bool examine(CpuT<Bus>& cpu);
+  // Records and proves one iteration from the loop head; skips when it can, as many iterations
+  // as end before the next event (skipped_to_event) or as the proof covers (skipped_to_bound).
+  enum class Examined { refused, skipped_to_event, skipped_to_bound };
+  Examined examine(CpuT<Bus>& cpu);
   bool note_store(CpuT<Bus>& cpu, IdleStep& st);
   bool name_cells(Bus& bus);
 

@@ -170,6 +170,17 @@ bool Bus::read(u32 vaddr, u32& v, u32 width, bool time_ram) {
   return false;
 }
 
+bool Bus::peek_data(u32 vaddr, u32 width, u32& v) {
+  const u32 p = physical(vaddr);
+  if (p < 0x00800000) v = load_width(&ram_[p & (kRamSize - 1)], width);
+  else if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000 && !dcache_mode_)
+    v = load_width(&scratch_[p - kScratchBase], width);
+  else if (p >= kIoBase && p < kIoEnd) v = io_read(p, width);
+  else if (p >= kBiosBase && p < kBiosBase + kBiosSize) v = load_width(&bios_[p - kBiosBase], width);
+  else return false;
+  return true;
+}
+
 void Bus::watched_store(u8* mem, u32 phys, u32 v, u32 width) {
   u32 old = load_width(mem, width);
   store_width(mem, v, width);

@@ -94,6 +94,13 @@ class Bus {
   bool read32(u32 vaddr, u32& v) { return read(vaddr, v, 4); }
   bool read16(u32 vaddr, u32& v) { return read(vaddr, v, 2); }
   bool read8(u32 vaddr, u32& v) { return read(vaddr, v, 1); }
+  // The value a load of `width` bytes at vaddr would read now, without the load's time, from RAM,
+  // the scratchpad (outside D-cache mode), the BIOS ROM or an I/O register; false elsewhere. An
+  // I/O register is read through its device, so only for registers whose read has no side
+  // effect (idle skipping's pure loads, idle_skip.cpp).
+  bool peek_data(u32 vaddr, u32 width, u32& v);
+  // Memory Control 1 (1F801000h-1F801020h): it times reads on the external bus and some I/O.
+  const std::array<u32, 9>& memory_control() const { return memctrl_; }
   // A read whose RAM access time the caller charges itself (the CPU's load shadow, cpu.h);
   // other regions are charged as by read().
   bool read_ram_untimed(u32 vaddr, u32& v, u32 width) { return read(vaddr, v, width, false); }

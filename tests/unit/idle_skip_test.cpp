@@ -22,7 +22,7 @@ using psx::u32;
 using psx::Console;
 
 // MIPS I encodings (psx-spx "CPU Opcode Encoding"); registers by number.
-constexpr u32 kT0 = 8, kT1 = 9, kT2 = 10, kT3 = 11, kT4 = 12, kS0 = 16, kS1 = 17;
+constexpr u32 kT0 = 8, kT1 = 9, kT2 = 10, kT3 = 11, kT4 = 12, kT5 = 13, kS0 = 16, kS1 = 17;
 u32 itype(u32 op, u32 rs, u32 rt, u32 imm) { return op << 26 | rs << 21 | rt << 16 | (imm & 0xFFFF); }
 u32 lui(u32 rt, u32 imm) { return itype(0x0F, 0, rt, imm); }
 u32 ori(u32 rt, u32 rs, u32 imm) { return itype(0x0D, rs, rt, imm); }
@@ -126,6 +126,63 @@ TEST(IdleSkip, LoopEnteredWithAnotherBoundIsProvenAgain) {
   EXPECT_EQ(on.s1, 4u);
 }
 
+// After each event that ends a skip the loop is met again, further along its line; the proof made
+// the first time shows the iteration about to start repeats, so it is skipped from the head
+// without recording one (IdleSkip::repeat). Each VBlank the loop is entered anew with its spin
+// counter at 0, before the proof's recorded start: the same path is proven again from there.
+TEST(IdleSkip, IterationsAfterAnEventRepeatWithoutRecording) {
+  Outcome on = compare(vblank_wait(), 0x80010000, true);
+  EXPECT_GT(on.stats.skips, 4400u);
+  EXPECT_GT(on.stats.repeats * 10, on.stats.skips * 9);
+}
+
+// What a repeat takes from the proof must be what the iteration does now. Each program below
+// changes, between rounds of its loop, something that shapes the loop's iterations but not its
+// registers or loads, so that only that check keeps a repeat from taking the old proof's steps
+// or cycles (compare() then finds the states differ). The SPU books every sample, so that events
+// end skips and repeats are tried.
+
+// The loop's own code, uncached so that the fetch sees each new word: the counter steps by 1 in
+// one round and by 2 in the next, to 65536.
+TEST(IdleSkip, RewrittenLoopIsNotRepeatedFromTheOldCode) {
+  const u32 xori_t4 = itype(0x0E, kT4, kT4, 3);  // 1 <-> 2
+  std::vector<u32> code = {lui(kT5, 0xA001), addiu(kT1, 0, 0), lui(kT3, 1),
+                           addiu(kT1, kT1, 1), bne(kT1, kT3, -2), kNop,  // 3: the loop
+                           addiu(kS1, kS1, 1), lw(kT4, 12, kT5), kNop, xori_t4, sw(kT4, 12, kT5),
+                           j(0xA0010004), kNop};
+  Outcome on = compare(code, 0xA0010000, true);
+  // 65536 + 32768 iterations of 3 uncached instructions (5 cycles each at least, at most 25
+  // with a slow fetch) take under 2.5 M of the six frames' 3.39 M cycles.
+  EXPECT_GE(on.s1, 2u);
+  EXPECT_GT(on.stats.repeats, 0u);
+}
+
+// The BIOS ROM's read delay (Memory Control, 1F801010h bits 4-7), which times the loop's load
+// from the ROM: 3 in one round, 12 in the next.
+TEST(IdleSkip, LoopIsNotRepeatedAfterItsLoadsDelayChanges) {
+  const u32 xori_t5 = itype(0x0E, kT5, kT5, 0xF0);
+  std::vector<u32> code = {lui(kT0, 0xBFC0), lui(kT2, 0x1F80), addiu(kT1, 0, 0), ori(kT3, 0, 0x4000),
+                           lw(kT4, 0, kT0), addiu(kT1, kT1, 1), bne(kT1, kT3, -3), kNop,  // 4: the loop
+                           addiu(kS1, kS1, 1), lw(kT5, 0x1010, kT2), kNop, xori_t5,
+                           sw(kT5, 0x1010, kT2), j(0x80010008), kNop};
+  Outcome on = compare(code, 0x80010000, true);
+  EXPECT_GE(on.s1, 2u);
+  EXPECT_GT(on.stats.repeats, 0u);
+}
+
+// The i-cache (cache control FFFE0130h bit 11): on in one round, off in the next, while the lines
+// the loop filled stay valid.
+TEST(IdleSkip, LoopIsNotRepeatedAfterTheICacheIsSwitched) {
+  const u32 xori_t5 = itype(0x0E, kT5, kT5, 0x800);
+  std::vector<u32> code = {lui(kT2, 0xFFFE), addiu(kT1, 0, 0), ori(kT3, 0, 0x4000),
+                           addiu(kT1, kT1, 1), bne(kT1, kT3, -2), kNop,  // 3: the loop
+                           addiu(kS1, kS1, 1), lw(kT5, 0x130, kT2), kNop, xori_t5, sw(kT5, 0x130, kT2),
+                           j(0x80010004), kNop};
+  Outcome on = compare(code, 0x80010000, true);
+  EXPECT_GE(on.s1, 2u);
+  EXPECT_GT(on.stats.repeats, 0u);
+}
+
 // Two countdowns taking turns, as a pad transfer's loops polling for each byte and for its
 // acknowledgement do (Tumble's), re-examined after every SPU sample event. Between rounds each
 // meets the other's proof last, and registers neither names have moved on (s1 counts the rounds,
@@ -220,8 +277,8 @@ TEST(IdleSkip, JoystatPollReusesItsProofWhileTheBaudTimerCounts) {
 TEST(IdleSkip, LoopKeepingTheBaudTimerIsNotSkipped) {
   std::vector<u32> code = vblank_wait();
   code[4] = lw(kT2, 0x1044, kT0);
-  code[6] = andi(kT4 + 1, kT2, 0x200);  // t5 = bit 9, t2 keeps the whole word, timer included
-  code[7] = bne(kT4 + 1, 0, 5);
+  code[6] = andi(kT5, kT2, 0x200);  // t5 = bit 9, t2 keeps the whole word, timer included
+  code[7] = bne(kT5, 0, 5);
   EXPECT_EQ(compare(code).stats.skips, 0u);
 }
 

@@ -143,11 +143,15 @@ class CpuT {
     if (taken && target <= current_pc_ && current_pc_ - target < kIdleLoopBytes) loop_head_ = target;
   }
   void arm_hook(u32 target) {
-    u32 p = target & 0x1FFFFFFF;
-    if (hooks_ && (p == 0xA0 || p == 0xB0 || p == 0xC0 || target == extra_hook_pc_)) {
+    if (hooked(target)) {
       hook_armed_ = true;
       hook_pc_ = target;
     }
+  }
+  // Whether a jump to target arms a hook: the BIOS's A0h/B0h/C0h function vectors, extra_hook_pc_.
+  bool hooked(u32 target) const {
+    const u32 p = target & 0x1FFFFFFF;
+    return hooks_ && (p == 0xA0 || p == 0xB0 || p == 0xC0 || target == extra_hook_pc_);
   }
   void wait_muldiv();
   void wait_gte();

@@ -123,7 +123,8 @@ void IdleSkip::at_loop_head(Cpu& cpu) {
   } else {
     if (b.head != head) b = Backoff{head, 0, 0};
     ++stats_.examinations;
-    const Examined e = examine(cpu);
+    Examined e = repeat(cpu);
+    if (e == Examined::refused) e = examine(cpu);
     if (e != Examined::refused) {
       b.failures = 0;
       // The recorded iteration's back branch left the loop head set, so the head is met again
@@ -218,6 +219,7 @@ IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
     p->load_reg = cpu.load_reg_;
     p->load_val = cpu.load_val_;
     p->max_k = max_k;
+    note_context(cpu, *p, shadow0, shadow_reg0, t0, done0, cpu.instructions_ - i0);
   }
 
   // 3. Skip whole iterations, ending before the deadline so the event's iteration is interpreted.
@@ -240,6 +242,110 @@ IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
   stats_.iterations += n;
   stats_.cycles += n * cost;
   return max_k < by_time ? Examined::skipped_to_bound : Examined::skipped_to_event;
+}
+
+// What repeat() needs of the proof just made, recorded from t0 to now with `steps` instructions;
+// examine() has checked that the iteration left the pipeline and the load shadow as it found
+// them, and it ran no instruction that changes SR or the cache or memory control registers.
+void IdleSkip::note_context(Cpu& cpu, Proven& p, Cycles shadow0, u32 shadow_reg0, Cycles t0, Cycles done0,
+                            u64 steps) const {
+  Bus& bus = cpu.bus_;
+  std::copy(tags_.begin(), tags_.begin() + path_len_, p.at.tags.begin());
+  p.at.pipeline = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
+  p.at.sr = cpu.cop0_.sr;
+  p.at.cache_control = *bus.cache_control_cell();
+  p.at.memory_control = bus.memory_control();
+  p.at.shadow = shadow0;
+  p.at.shadow_reg = shadow_reg0;
+  p.stores = cells_.count > 0;
+  p.named = 1;
+  for (u32 i = 0; i < path_len_; ++i) p.named |= named_registers(path_[i].instr);
+  p.cost = cpu.sched_.now() - t0;
+  p.steps = steps;
+  p.current_pc = cpu.current_pc_;
+  p.in_delay_slot = cpu.in_delay_slot_;
+  p.shadow_reg = cpu.shadow_reg_;
+  p.load_done_moved = cpu.load_done_at_ != done0;
+  p.load_done = cpu.load_done_at_ - t0;
+}
+
+// An iteration about to start at the head where everything that routed and timed a proven
+// iteration is as it was and every load reads what it read (the bits the proof knew) follows the
+// same path in the same cycles if its registers lead it there. When they lie on the proof's line
+// within its bound (j iterations on from the recorded start, 1 <= j <= max_k + 1), it is the
+// proof's iteration j - 1; otherwise (the loop entered again from an earlier spin count, say) the
+// same path is proven again from here, which shows it as well, and the proof is kept from here.
+// The iterations it covers are then skipped as examine() skips them, up to the next event.
+IdleSkip::Examined IdleSkip::repeat(Cpu& cpu) {
+  if (cpu.stop_ || cpu.next_in_delay_ || cpu.hook_armed_ || cpu.bus_.dcache_mode() || cpu.interrupt_pending() ||
+      (cpu.cop0_.dcic & (Cop0::kDcicPCE | Cop0::kDcicDAE)))
+    return Examined::refused;
+  for (Proven& p : proven_) {
+    u64 n;
+    if (p.head != cpu.pc_ || p.stores || !repeats(cpu, p, n)) continue;
+    const Cycles now = cpu.sched_.now();
+    p.line.advance(cpu.regs_, static_cast<u32>(n));
+    cpu.current_pc_ = p.current_pc;
+    cpu.in_delay_slot_ = p.in_delay_slot;
+    cpu.shadow_reg_ = p.shadow_reg;
+    if (p.load_done_moved) cpu.load_done_at_ = now + (n - 1) * p.cost + p.load_done;
+    cpu.sched_.advance(n * p.cost);
+    cpu.instructions_ += n * p.steps;
+    last_head_ = p.head;
+    last_cost_ = p.cost;
+    ++stats_.skips;
+    ++stats_.repeats;
+    stats_.iterations += n;
+    stats_.cycles += n * p.cost;
+    return Examined::repeated;
+  }
+  return Examined::refused;
+}
+
+// Whether the iteration about to start is one p proves (repeat()); n: how many iterations from
+// it on to skip.
+bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
+  Bus& bus = cpu.bus_;
+  const std::array<u32, 4> pipeline = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
+  const Cycles now = cpu.sched_.now(), deadline = cpu.sched_.next_deadline();
+  if (now >= deadline || pipeline != p.at.pipeline || cpu.cop0_.sr != p.at.sr ||
+      *bus.cache_control_cell() != p.at.cache_control || bus.memory_control() != p.at.memory_control ||
+      shadow_left(cpu.load_done_at_, now) != p.at.shadow || cpu.shadow_reg_ != p.at.shadow_reg)
+    return false;
+  const ICache& icache = bus.icache();
+  for (u32 i = 0; i < p.len; ++i) {
+    const IdleStep& st = p.path[i];
+    u32 word;
+    if (!bus.peek_code(st.pc, word) || word != st.instr || icache.tag(ICache::line(st.pc)) != p.at.tags[i])
+      return false;
+    const u32 next = i + 1 < p.len ? p.path[i + 1].pc : p.head;
+    if (next != st.pc + 4 && cpu.hooked(next)) return false;  // a jump's target
+    const u32 width = load_width(st.instr);
+    u32 v;
+    if (width == 0) continue;
+    if (!bus.peek_data(st.addr, width, v)) return false;
+    if ((st.instr >> 26) == 0x20) v = static_cast<u32>(static_cast<s32>(static_cast<s8>(v)));  // LB
+    if ((st.instr >> 26) == 0x21) v = static_cast<u32>(static_cast<s32>(static_cast<s16>(v)));  // LH
+    if ((v ^ st.load_value) & st.load_bits) return false;
+  }
+  u64 covered;  // iterations from this one on that a proof covers (~0: no end)
+  u32 j;
+  if (!p.line.iterations(p.before, cpu.regs_, j, ~p.named)) return false;
+  if (j == 0 && p.line.still()) j = 1;  // then every iteration starts as the recorded one did
+  if (j >= 1 && (p.max_k == ~u64{0} || j <= p.max_k + 1)) {
+    covered = p.max_k == ~u64{0} ? p.max_k : p.max_k + 2 - j;
+  } else {
+    std::array<u32, 32> before = cpu.regs_;
+    p.line.advance(before, ~0u);  // one step back
+    IdleProof proof(before, cpu.regs_, cpu.load_reg_, cpu.load_val_, IdleCells{});
+    if (!proof.run(p.path.data(), p.len)) return false;
+    covered = proof.max_k() == ~u64{0} ? proof.max_k() : proof.max_k() + 1;
+    p.before = before;  // the proof now starts here, for the loop's next entry from here
+    p.max_k = proof.max_k();
+  }
+  // Whole iterations that end before the next event.
+  n = std::min<u64>(covered, (deadline - 1 - now) / p.cost);
+  return n > 0;
 }
 
 // A store the loop may make (before it runs): a word to RAM or the scratchpad that reaches memory

@@ -31,6 +31,11 @@
 // on), and that proof is reused instead of redone: step 2 is most of the cost of an examination.
 // The last few proofs are kept, for loops that take turns. (Not for loops that store: a counter
 // in memory shows in the loads' values, which then differ.)
+// Most often not even the recording is needed (repeat()): where everything that shaped a proven
+// iteration's path and time is as it was when it was recorded (the code and its i-cache lines,
+// the pipeline and load shadow, SR, the cache and memory control registers) and every load
+// would read what it read then, the iteration about to start follows the same path, so the
+// proof, or one made again from here for the same path, covers it and those after it.
 #pragma once
 #include <array>
 
@@ -54,7 +59,8 @@ class IdleSkip {
     u64 iterations = 0;  // loop iterations skipped in all
     u64 cycles = 0;      // CPU cycles they took
     u64 proofs = 0;      // proofs made (the other skips reused one)
-    u64 examinations = 0;  // iterations recorded to try a loop (examine())
+    u64 examinations = 0;  // visits to a loop head that tried to skip (the rest back off)
+    u64 repeats = 0;       // skips made from the head without recording an iteration (repeat())
   };
 
   // Called by the CPU's run loop with pc at a loop head (and the loop head cleared); skips
@@ -79,7 +85,8 @@ class IdleSkip {
  private:
   // Records and proves one iteration from the loop head; skips when it can, as many iterations
   // as end before the next event (skipped_to_event) or as the proof covers (skipped_to_bound).
-  enum class Examined { refused, skipped_to_event, skipped_to_bound };
+  // repeat() skips from the head (repeated), where the head is not met again at once.
+  enum class Examined { refused, skipped_to_event, skipped_to_bound, repeated };
   Examined examine(CpuT<Bus>& cpu);
   bool note_store(CpuT<Bus>& cpu, IdleStep& st);
   bool name_cells(Bus& bus);
@@ -94,8 +101,10 @@ class IdleSkip {
     u32 failures = 0;
   };
   std::array<Backoff, kBackoffEntries> backoff_{};
-  // The last proof made: the iteration recorded, the registers it started from and added, the
-  // load in flight at its end, and its bound.
+  // A proof made: the iteration recorded, the registers it started from and added, the load in
+  // flight at its end, and its bound; and for repeat(), what else shaped the iteration (`at`:
+  // the i-cache tag of each step's line, the pipeline, SR, the cache and memory control
+  // registers, the load shadow when it started), what it cost and what it left.
   struct Proven {
     u32 head = 1;
     u32 len = 0;
@@ -104,14 +113,38 @@ class IdleSkip {
     RegisterLine line;
     u32 load_reg = 0, load_val = 0;
     u64 max_k = 0;
+    struct Context {
+      std::array<u32, kMaxPath> tags{};
+      std::array<u32, 4> pipeline{};  // load_reg_, load_val_, new_load_reg_, new_load_val_
+      u32 sr = 0, cache_control = 0;
+      std::array<u32, 9> memory_control{};
+      Cycles shadow = 0;  // cycles of the load shadow left
+      u32 shadow_reg = 0;
+    } at;
+    bool stores = false;  // the iteration stores (repeat() leaves those loops to examine())
+    u32 named = 0;        // the registers its instructions name (bit r for register r)
+    Cycles cost = 0;
+    u64 steps = 0;
+    u32 current_pc = 0;   // what it left: CpuT's current_pc_, in_delay_slot_, shadow_reg_,
+    bool in_delay_slot = false;
+    u32 shadow_reg = 0;
+    bool load_done_moved = false;  // ... and load_done_at_ at `load_done` cycles from its start
+    Cycles load_done = 0;
   };
+  // Skips from the head when an iteration starting here is one that a proof covers (repeated).
+  Examined repeat(CpuT<Bus>& cpu);
+  bool repeats(CpuT<Bus>& cpu, Proven& p, u64& count);
+  void note_context(CpuT<Bus>& cpu, Proven& p, Cycles shadow0, u32 shadow_reg0, Cycles t0, Cycles done0,
+                    u64 steps) const;
   // The bound for the iteration just recorded (path_, from `before` to `after`) taken from the
   // proofs made before, when one covers it; false when the proof must be made.
   bool reuse_proof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg,
                    u32 load_val, u64& max_k) const;
   // The proofs last made, replaced in turn: a pad transfer's loops polling for each byte and
-  // for its acknowledgement take turns, each with two proofs (reuse_proof()).
-  static constexpr size_t kProofs = 8;
+  // for its acknowledgement take turns, each with two proofs (reuse_proof()). With 8, Tumble
+  // made 80 proofs a move; with 16, 62 (most of them for its pad delays, loops that store);
+  // with 32, 54.
+  static constexpr size_t kProofs = 16;
   std::array<Proven, kProofs> proven_{};
   size_t proven_next_ = 0;
   // The loop last proven and what one iteration of it costs.

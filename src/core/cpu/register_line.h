@@ -34,6 +34,14 @@ class RegisterLine {
     return differ == 0;
   }
 
+  // Whether no register moves (every iteration starts from the same registers).
+  bool still() const { return moving_count_ == 0; }
+
+  // regs + n*step, in place.
+  void advance(std::array<u32, 32>& regs, u32 n) const {
+    for (u32 r = 0; r < 32; ++r) regs[r] += n * steps_[r];
+  }
+
   // The smallest j with from + j*step == to, if there is one (0 when no register moves); the
   // registers in `any` (bit r for register r) may differ where their step is zero.
   bool iterations(const std::array<u32, 32>& from, const std::array<u32, 32>& to, u32& j, u32 any = 0) const {

@@ -257,7 +257,7 @@ void IdleSkip::note_context(Cpu& cpu, Proven& p, Cycles shadow0, u32 shadow_reg0
   p.at.memory_control = bus.memory_control();
   p.at.shadow = shadow0;
   p.at.shadow_reg = shadow_reg0;
-  p.stores = cells_.count > 0;
+  p.cells = cells_;
   p.named = 1;
   for (u32 i = 0; i < path_len_; ++i) p.named |= named_registers(path_[i].instr);
   p.cost = cpu.sched_.now() - t0;
@@ -282,7 +282,7 @@ IdleSkip::Examined IdleSkip::repeat(Cpu& cpu) {
     return Examined::refused;
   for (Proven& p : proven_) {
     u64 n;
-    if (p.head != cpu.pc_ || p.stores || !repeats(cpu, p, n)) continue;
+    if (p.head != cpu.pc_ || !repeats(cpu, p, n)) continue;
     const Cycles now = cpu.sched_.now();
     p.line.advance(cpu.regs_, static_cast<u32>(n));
     cpu.current_pc_ = p.current_pc;
@@ -291,6 +291,10 @@ IdleSkip::Examined IdleSkip::repeat(Cpu& cpu) {
     if (p.load_done_moved) cpu.load_done_at_ = now + (n - 1) * p.cost + p.load_done;
     cpu.sched_.advance(n * p.cost);
     cpu.instructions_ += n * p.steps;
+    for (u32 c = 0; c < p.cells.count; ++c) {  // as the last iteration's store leaves it
+      const u32 now_value = word_at(cpu.bus_, p.cells.location[c]);
+      cpu.bus_.write32(p.cells.vaddr[c], now_value + static_cast<u32>(n) * (p.cells.after[c] - p.cells.before[c]));
+    }
     last_head_ = p.head;
     last_cost_ = p.cost;
     ++stats_.skips;
@@ -308,7 +312,8 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
   Bus& bus = cpu.bus_;
   const std::array<u32, 4> pipeline = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
   const Cycles now = cpu.sched_.now(), deadline = cpu.sched_.next_deadline();
-  if (now >= deadline || pipeline != p.at.pipeline || cpu.cop0_.sr != p.at.sr ||
+  if (now >= deadline || (p.cells.count > 0 && *bus.watches_cell() != nullptr) || pipeline != p.at.pipeline ||
+      cpu.cop0_.sr != p.at.sr ||
       *bus.cache_control_cell() != p.at.cache_control || bus.memory_control() != p.at.memory_control ||
       shadow_left(cpu.load_done_at_, now) != p.at.shadow || cpu.shadow_reg_ != p.at.shadow_reg)
     return false;
@@ -322,7 +327,7 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
     if (next != st.pc + 4 && cpu.hooked(next)) return false;  // a jump's target
     const u32 width = load_width(st.instr);
     u32 v;
-    if (width == 0) continue;
+    if (width == 0 || st.cell) continue;  // a stored word's load: the proof follows its value
     if (!bus.peek_data(st.addr, width, v)) return false;
     if ((st.instr >> 26) == 0x20) v = static_cast<u32>(static_cast<s32>(static_cast<s8>(v)));  // LB
     if ((st.instr >> 26) == 0x21) v = static_cast<u32>(static_cast<s32>(static_cast<s16>(v)));  // LH
@@ -332,16 +337,23 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
   u32 j;
   if (!p.line.iterations(p.before, cpu.regs_, j, ~p.named)) return false;
   if (j == 0 && p.line.still()) j = 1;  // then every iteration starts as the recorded one did
-  if (j >= 1 && (p.max_k == ~u64{0} || j <= p.max_k + 1)) {
+  if (p.cells.count == 0 && j >= 1 && (p.max_k == ~u64{0} || j <= p.max_k + 1)) {
     covered = p.max_k == ~u64{0} ? p.max_k : p.max_k + 2 - j;
   } else {
     std::array<u32, 32> before = cpu.regs_;
     p.line.advance(before, ~0u);  // one step back
-    IdleProof proof(before, cpu.regs_, cpu.load_reg_, cpu.load_val_, IdleCells{});
+    IdleCells cells = p.cells;  // the stored words now, and a step back
+    for (u32 c = 0; c < cells.count; ++c) {
+      cells.after[c] = word_at(bus, cells.location[c]);
+      cells.before[c] = cells.after[c] - (p.cells.after[c] - p.cells.before[c]);
+    }
+    IdleProof proof(before, cpu.regs_, cpu.load_reg_, cpu.load_val_, cells);
     if (!proof.run(p.path.data(), p.len)) return false;
     covered = proof.max_k() == ~u64{0} ? proof.max_k() : proof.max_k() + 1;
-    p.before = before;  // the proof now starts here, for the loop's next entry from here
-    p.max_k = proof.max_k();
+    if (cells.count == 0) {  // the proof now starts here, for the loop's next entry from here
+      p.before = before;
+      p.max_k = proof.max_k();
+    }
   }
   // Whole iterations that end before the next event.
   n = std::min<u64>(covered, (deadline - 1 - now) / p.cost);

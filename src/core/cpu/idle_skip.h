@@ -35,7 +35,8 @@
 // iteration's path and time is as it was when it was recorded (the code and its i-cache lines,
 // the pipeline and load shadow, SR, the cache and memory control registers) and every load
 // would read what it read then, the iteration about to start follows the same path, so the
-// proof, or one made again from here for the same path, covers it and those after it.
+// proof, or one made again from here for the same path, covers it and those after it (always
+// made again for a loop that stores, from the words' values now).
 #pragma once
 #include <array>
 
@@ -121,7 +122,7 @@ class IdleSkip {
       Cycles shadow = 0;  // cycles of the load shadow left
       u32 shadow_reg = 0;
     } at;
-    bool stores = false;  // the iteration stores (repeat() leaves those loops to examine())
+    IdleCells cells;      // the words it stores to, before and after it (count 0: none)
     u32 named = 0;        // the registers its instructions name (bit r for register r)
     Cycles cost = 0;
     u64 steps = 0;

@@ -34,7 +34,9 @@ inline long resident_kib() {
 inline int action_at(std::uint32_t& lcg) { return static_cast<int>(((lcg = lcg * 1664525u + 1013904223u) >> 16) % 4); }
 
 // Moves per second of one environment with observation kind `obs`.
-inline double single_moves_per_second(const std::string& obs, int moves) {
+// The first `warmup` moves are not timed: the recompiler compiles the level's code during an
+// environment's first moves (about 1150 blocks in 300 moves), which a long training run pays once.
+inline double single_moves_per_second(const std::string& obs, int moves, int warmup = 0) {
   psxrl::rl::EnvConfig c;
   c.obs = obs;
   psxrl::rl::Env env(c);
@@ -42,15 +44,16 @@ inline double single_moves_per_second(const std::string& obs, int moves) {
   env.reset(1, seed, nullptr);
   std::uint32_t lcg = 7;
   auto t = Clock::now();
-  for (int i = 0; i < moves; ++i) {
+  for (int i = -warmup; i < moves; ++i) {
+    if (i == 0) t = Clock::now();
     auto r = env.step(action_at(lcg));
     if (r.terminated || r.truncated) env.reset(1, ++seed, nullptr);
   }
   return moves / seconds_since(t);
 }
 
-// Moves per second (all environments together) of a vector environment.
-inline double vec_moves_per_second(const std::string& obs, int envs, unsigned threads, int steps) {
+// Moves per second (all environments together) of a vector environment, after `warmup` steps.
+inline double vec_moves_per_second(const std::string& obs, int envs, unsigned threads, int steps, int warmup = 0) {
   psxrl::rl::EnvConfig c;
   c.obs = obs;
   psxrl::rl::VecEnv vec(c, envs, threads);
@@ -58,7 +61,8 @@ inline double vec_moves_per_second(const std::string& obs, int envs, unsigned th
   std::uint32_t lcg = 7;
   std::vector<int> actions(static_cast<size_t>(envs));
   auto t = Clock::now();
-  for (int s = 0; s < steps; ++s) {
+  for (int s = -warmup; s < steps; ++s) {
+    if (s == 0) t = Clock::now();
     for (auto& a : actions) a = action_at(lcg);
     vec.step(actions);
   }
@@ -66,8 +70,9 @@ inline double vec_moves_per_second(const std::string& obs, int envs, unsigned th
 }
 
 // Moves per second of an asynchronous vector environment (EnvPool's send/recv): `moves` moves
-// in all, each batch of the first `batch` environments to finish sent straight back.
-inline double async_moves_per_second(const std::string& obs, int envs, int batch, unsigned threads, int moves) {
+// in all after `warmup`, each batch of the first `batch` environments to finish sent straight back.
+inline double async_moves_per_second(const std::string& obs, int envs, int batch, unsigned threads, int moves,
+                                     int warmup = 0) {
   psxrl::rl::EnvConfig c;
   c.obs = obs;
   psxrl::rl::AsyncVecEnv vec(c, envs, batch, threads);
@@ -80,10 +85,11 @@ inline double async_moves_per_second(const std::string& obs, int envs, int batch
   for (auto& a : actions) a = action_at(lcg);
   auto t = Clock::now();
   vec.send(actions, ids);
-  int done = 0;
+  int done = -warmup;
   while (done < moves) {
     const psxrl::rl::AsyncBatch& b = vec.recv();
     done += batch;
+    if (done == 0) t = Clock::now();
     actions.resize(b.env_ids.size());
     for (auto& a : actions) a = action_at(lcg);
     vec.send(actions, b.env_ids);

@@ -112,30 +112,31 @@ void emulation(Json& json) {
 }
 
 void environments(Json& json) {
-  std::printf("\n## Environment (Tumble level 1, fixed pseudo-random moves)\n\n| observation | moves/s |\n| --- | --- |\n");
+  std::printf("\n## Environment (Tumble level 1, fixed pseudo-random moves, 100 timed after 100 of warm-up)\n\n| observation | moves/s |\n| --- | --- |\n");
   for (const char* obs : {"simple", "local", "episode", "ram", "visual", "audio", "multimodal"}) {
-    const double mps = bench::single_moves_per_second(obs, 60);
+    const double mps = bench::single_moves_per_second(obs, 100, 100);
     std::printf("| %s | %.1f |\n", obs, mps);
     json.add(std::string("env_") + obs + "_moves_per_s", mps);
   }
   // 16 environments whatever the thread count, so every row does the same moves; threads beyond
   // the machine's hardware threads share them (their efficiency shows the machine, not the pool).
-  std::printf("\n## Vector environment (16 environments, simple)\n\n| threads | moves/s | speed-up | efficiency per thread |\n"
+  std::printf("\n## Vector environment (16 environments, simple, 8 steps timed after 8)\n\n| threads | moves/s | speed-up | efficiency per thread |\n"
               "| --- | --- | --- | --- |\n");
   double one = 0;
   for (unsigned threads : {1u, 2u, 4u, 8u, 16u}) {
-    const double mps = bench::vec_moves_per_second("simple", 16, threads, 8);
+    const double mps = bench::vec_moves_per_second("simple", 16, threads, 8, 8);
     if (threads == 1) one = mps;
     std::printf("| %u | %.1f | %.2fx | %.0f%% |\n", threads, mps, mps / one, 100 * mps / one / threads);
     json.add("vec_env_" + std::to_string(threads) + "_threads_moves_per_s", mps);
   }
   // Asynchronous stepping as EnvPool recommends: twice as many environments as threads, batches
   // of one environment per thread, so a thread never waits for another's longer move.
-  std::printf("\n## Asynchronous vector environment (2 environments per thread, batch = threads, simple)\n\n"
+  std::printf("\n## Asynchronous vector environment (2 environments per thread, batch = threads, simple, 16 moves per environment timed after 16)\n\n"
               "| threads | environments | moves/s | speed-up | efficiency per thread |\n| --- | --- | --- | --- | --- |\n");
   for (unsigned threads : {1u, 2u, 4u, 8u, 16u}) {
     const int envs = static_cast<int>(2 * threads);
-    const double mps = bench::async_moves_per_second("simple", envs, static_cast<int>(threads), threads, 16 * envs);
+    const double mps = bench::async_moves_per_second("simple", envs, static_cast<int>(threads), threads, 16 * envs,
+                                                       16 * envs);
     if (threads == 1) one = mps;
     std::printf("| %u | %d | %.1f | %.2fx | %.0f%% |\n", threads, envs, mps, mps / one, 100 * mps / one / threads);
     json.add("async_env_" + std::to_string(threads) + "_threads_moves_per_s", mps);

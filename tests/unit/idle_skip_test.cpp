@@ -341,7 +341,9 @@ TEST(IdleSkip, StoringLoopIsNotRepeatedUnderAMemoryWatch) {
     c.watch("counter", 0x80020010, 4);
     c.run_frames(2);
     events[skip] = c.take_watch_events();
-    if (skip == 1) EXPECT_GT(c.idle_skip_stats().repeats, 0u);
+    if (skip == 1) {
+      EXPECT_GT(c.idle_skip_stats().repeats, 0u);
+    }
   }
   ASSERT_GT(events[0].size(), 1000u);
   EXPECT_EQ(events[1].size(), events[0].size());

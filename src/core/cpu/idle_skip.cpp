@@ -96,6 +96,8 @@ u32 named_registers(u32 instr) {
   }
 }
 
+bool load_signed(u32 instr) { return (instr >> 26) == 0x20 || (instr >> 26) == 0x21; }  // LB, LH
+
 u32 load_width(u32 instr) {
   switch (instr >> 26) {
     case 0x20: case 0x24: return 1;  // LB, LBU
@@ -111,6 +113,17 @@ IdleSkip::BackoffCells IdleSkip::backoff_cells() {
   static_assert(std::is_standard_layout_v<IdleSkip> && sizeof(Backoff) == kBackoffBytes &&
                 offsetof(Backoff, head) == 0 && offsetof(Backoff, visits) == kBackoffVisits);
   return {int(offsetof(IdleSkip, last_head_)), int(offsetof(IdleSkip, backoff_))};
+}
+
+// Nothing that would have the iteration leave the plain path: a delay slot, a hook about to run,
+// D-cache mode, an interrupt to take, a debug break on code or data.
+bool IdleSkip::may_skip_here(const Cpu& cpu) {
+  return !cpu.next_in_delay_ && !cpu.hook_armed_ && !cpu.bus_.dcache_mode() && !cpu.interrupt_pending() &&
+         !(cpu.cop0_.dcic & (Cop0::kDcicPCE | Cop0::kDcicDAE));
+}
+
+IdleSkip::Pipeline IdleSkip::pipeline(const Cpu& cpu) {
+  return {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
 }
 
 void IdleSkip::at_loop_head(Cpu& cpu) {
@@ -146,16 +159,14 @@ IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
   Bus& bus = cpu.bus_;
   Scheduler& sched = cpu.sched_;
   const u32 head = cpu.pc_;
-  if (cpu.next_in_delay_ || cpu.hook_armed_ || bus.dcache_mode() || cpu.interrupt_pending() ||
-      (cpu.cop0_.dcic & (Cop0::kDcicPCE | Cop0::kDcicDAE)))
-    return Examined::refused;
+  if (!may_skip_here(cpu)) return Examined::refused;
 
   // 1. Execute one iteration, vetting each instruction before it runs.
   const Cycles deadline = sched.next_deadline();
   const Cycles t0 = sched.now();
   const u64 i0 = cpu.instructions_;
   const std::array<u32, 32> regs0 = cpu.regs_;
-  const u32 load0[4] = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
+  const Pipeline load0 = pipeline(cpu);
   const Cycles done0 = cpu.load_done_at_;
   const u32 shadow_reg0 = cpu.shadow_reg_;
   const ICache& icache = bus.icache();
@@ -176,8 +187,7 @@ IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
     if (width || kind == IdleProof::Kind::Store)
       st.addr = cpu.regs_[(instr >> 21) & 31] + static_cast<u32>(static_cast<s16>(instr & 0xFFFF));
     if (width) {
-      const bool sign = (instr >> 26) == 0x20 || (instr >> 26) == 0x21;  // LB, LH
-      st.load_bits = pure_load_bits(cpu.cop0_.sr, st.addr, width, sign);
+      st.load_bits = pure_load_bits(cpu.cop0_.sr, st.addr, width, load_signed(instr));
       if (st.load_bits == 0) return Examined::refused;
     }
     if (kind == IdleProof::Kind::Store && !note_store(cpu, st)) return Examined::refused;
@@ -194,8 +204,7 @@ IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
   if (t1 >= deadline) return Examined::refused;
   for (u32 i = 0; i < path_len_; ++i)
     if (icache.tag(ICache::line(path_[i].pc)) != tags_[i]) return Examined::refused;
-  const u32 load1[4] = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
-  if (!std::equal(load0, load0 + 4, load1)) return Examined::refused;
+  if (pipeline(cpu) != load0) return Examined::refused;
   // A load in flight shapes the iteration's timing (cpu.h, load shadow): it must be in flight
   // for as long, into the same register, at the end as at the start.
   const Cycles shadow0 = shadow_left(done0, t0), shadow1 = shadow_left(cpu.load_done_at_, t1);
@@ -251,7 +260,7 @@ void IdleSkip::note_context(Cpu& cpu, Proven& p, Cycles shadow0, u32 shadow_reg0
                             u64 steps) const {
   Bus& bus = cpu.bus_;
   std::copy(tags_.begin(), tags_.begin() + path_len_, p.at.tags.begin());
-  p.at.pipeline = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
+  p.at.pipeline = pipeline(cpu);
   p.at.sr = cpu.cop0_.sr;
   p.at.cache_control = *bus.cache_control_cell();
   p.at.memory_control = bus.memory_control();
@@ -277,9 +286,7 @@ void IdleSkip::note_context(Cpu& cpu, Proven& p, Cycles shadow0, u32 shadow_reg0
 // same path is proven again from here, which shows it as well, and the proof is kept from here.
 // The iterations it covers are then skipped as examine() skips them, up to the next event.
 IdleSkip::Examined IdleSkip::repeat(Cpu& cpu) {
-  if (cpu.stop_ || cpu.next_in_delay_ || cpu.hook_armed_ || cpu.bus_.dcache_mode() || cpu.interrupt_pending() ||
-      (cpu.cop0_.dcic & (Cop0::kDcicPCE | Cop0::kDcicDAE)))
-    return Examined::refused;
+  if (cpu.stop_ || !may_skip_here(cpu)) return Examined::refused;
   for (Proven& p : proven_) {
     u64 n;
     if (p.head != cpu.pc_ || !repeats(cpu, p, n)) continue;
@@ -310,11 +317,10 @@ IdleSkip::Examined IdleSkip::repeat(Cpu& cpu) {
 // it on to skip.
 bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
   Bus& bus = cpu.bus_;
-  const std::array<u32, 4> pipeline = {cpu.load_reg_, cpu.load_val_, cpu.new_load_reg_, cpu.new_load_val_};
   const Cycles now = cpu.sched_.now(), deadline = cpu.sched_.next_deadline();
-  if (now >= deadline || (p.cells.count > 0 && *bus.watches_cell() != nullptr) || pipeline != p.at.pipeline ||
-      cpu.cop0_.sr != p.at.sr ||
-      *bus.cache_control_cell() != p.at.cache_control || bus.memory_control() != p.at.memory_control ||
+  if (now >= deadline || (p.cells.count > 0 && *bus.watches_cell() != nullptr) ||
+      pipeline(cpu) != p.at.pipeline || cpu.cop0_.sr != p.at.sr || *bus.cache_control_cell() != p.at.cache_control ||
+      bus.memory_control() != p.at.memory_control ||
       shadow_left(cpu.load_done_at_, now) != p.at.shadow || cpu.shadow_reg_ != p.at.shadow_reg)
     return false;
   const ICache& icache = bus.icache();
@@ -329,8 +335,7 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
     u32 v;
     if (width == 0 || st.cell) continue;  // a stored word's load: the proof follows its value
     if (!bus.peek_data(st.addr, width, v)) return false;
-    if ((st.instr >> 26) == 0x20) v = static_cast<u32>(static_cast<s32>(static_cast<s8>(v)));  // LB
-    if ((st.instr >> 26) == 0x21) v = static_cast<u32>(static_cast<s32>(static_cast<s16>(v)));  // LH
+    if (load_signed(st.instr)) v = width == 2 ? u32(s32(s16(v))) : u32(s32(s8(v)));  // as CpuT::load
     if ((v ^ st.load_value) & st.load_bits) return false;
   }
   u64 covered;  // iterations from this one on that a proof covers (~0: no end)
@@ -413,13 +418,11 @@ bool IdleSkip::name_cells(Bus& bus) {
 // proofs (JOY_STAT's /ACK bit read high in one transfer, low in the next).
 bool IdleSkip::reuse_proof(const std::array<u32, 32>& before, const std::array<u32, 32>& after, u32 load_reg,
                            u32 load_val, u64& max_k) const {
-  u32 named = 1;  // r0 is always zero
-  for (u32 i = 0; i < path_len_; ++i) named |= named_registers(path_[i].instr);
   for (const Proven& p : proven_) {
     if (p.head != path_[0].pc || p.len != path_len_ || p.load_reg != load_reg || p.load_val != load_val) continue;
     if (!std::equal(path_.begin(), path_.begin() + path_len_, p.path.begin(), same_step)) continue;
     u32 j;
-    if (!p.line.same_steps(before, after) || !p.line.iterations(p.before, before, j, ~named) || j > p.max_k) continue;
+    if (!p.line.same_steps(before, after) || !p.line.iterations(p.before, before, j, ~p.named) || j > p.max_k) continue;
     max_k = p.max_k == ~u64{0} ? p.max_k : p.max_k - j;
     return true;
   }

@@ -89,6 +89,10 @@ class IdleSkip {
   // repeat() skips from the head (repeated), where the head is not met again at once.
   enum class Examined { refused, skipped_to_event, skipped_to_bound, repeated };
   Examined examine(CpuT<Bus>& cpu);
+  static bool may_skip_here(const CpuT<Bus>& cpu);
+  // The load delay slot: load_reg_, load_val_, new_load_reg_, new_load_val_.
+  using Pipeline = std::array<u32, 4>;
+  static Pipeline pipeline(const CpuT<Bus>& cpu);
   bool note_store(CpuT<Bus>& cpu, IdleStep& st);
   bool name_cells(Bus& bus);
 
@@ -116,7 +120,7 @@ class IdleSkip {
     u64 max_k = 0;
     struct Context {
       std::array<u32, kMaxPath> tags{};
-      std::array<u32, 4> pipeline{};  // load_reg_, load_val_, new_load_reg_, new_load_val_
+      Pipeline pipeline{};  // as pipeline() reads it
       u32 sr = 0, cache_control = 0;
       std::array<u32, 9> memory_control{};
       Cycles shadow = 0;  // cycles of the load shadow left

@@ -20,6 +20,7 @@ Rect display_source(const DisplayArea& area) {
 // so the pruning stays on the safe side).
 class Readers {
  public:
+  Readers() = default;
   explicit Readers(const Rect& cover) : cover_(cover) {}
   void add(const Rect& read) {
     const Rect r{std::max(read.x0, cover_.x0), std::max(read.y0, cover_.y0), std::min(read.x1, cover_.x1),
@@ -55,6 +56,43 @@ class Readers {
   static constexpr u32 kMax = 16;
   Rect cover_;
   Rect rects_[kMax];
+  u32 n_ = 0;
+};
+
+// The large covers met so far in prune()'s walk, each with the reads gathered since. None lies
+// inside another; past a few, the one met first (the newest call) is let go, which only keeps more.
+class Covers {
+ public:
+  // Whether a call writing `w` is replaced by some cover before anything kept reads it.
+  bool replaced(const Rect& w) const {
+    for (u32 i = 0; i < n_; ++i)
+      if (covers_[i].cover.contains(w) && !covers_[i].readers.read(w)) return true;
+    return false;
+  }
+  void add_read(const Rect& r) {
+    for (u32 i = 0; i < n_; ++i) covers_[i].readers.add(r);
+  }
+  void hide(const Rect& cover) {
+    for (u32 i = 0; i < n_; ++i) covers_[i].readers.forget_inside(cover);
+  }
+  void start(const Rect& cover) {
+    u32 kept = 0;
+    for (u32 i = 0; i < n_; ++i) {
+      if (covers_[i].cover.contains(cover)) return;
+      if (!cover.contains(covers_[i].cover)) covers_[kept++] = covers_[i];
+    }
+    n_ = kept;
+    if (n_ == kMax) std::move(covers_ + 1, covers_ + kMax, covers_), --n_;
+    covers_[n_++] = {cover, Readers(cover)};
+  }
+
+ private:
+  struct Gathering {
+    Rect cover;
+    Readers readers;
+  };
+  static constexpr u32 kMax = 4;
+  Gathering covers_[kMax];
   u32 n_ = 0;
 };
 
@@ -118,17 +156,21 @@ void DrawQueue::push(DrawCommand& c) {
   const size_t n = queue_.size();
   DrawCommand& last = queue_.back();
   last.cover = last.overwrite_rect();
-  size_t end = n - 1;
   // Two triangles pair up unless a VBlank came between them (its frame sees only the first).
   if (last.cover.empty() && n >= 2 && !(frame_pending_ && frame_position_ == n - 1)) {
     DrawCommand& first = queue_[n - 2];
     const Rect a = first.write, b = last.write;
     const Rect bounds{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
     const Rect pair = bounds.area() >= kMinCover ? pair_cover(first, last) : Rect{};
-    if (!pair.empty()) first.cover = pair, first.cover_with_next = true, end = n - 2;
+    if (!pair.empty()) first.cover = pair, first.cover_with_next = true;
   }
-  if (queue_[end].cover.area() >= kMinCover) prune(queue_[end].cover, end);
-  if (queue_.size() > kMaxCommands || pixels_.size() > kMaxPixels) flush();
+  if (queue_.size() < prune_at_ && pixels_.size() < pixels_prune_at_) return;
+  prune();
+  if (queue_.size() > kMaxCommands / 2 || pixels_.size() > kMaxPixels / 2) draw_all();
+  // The next walk after as many calls again as it kept (at least the minimum): each walk drops
+  // or keeps every call, so a kept call is walked a bounded number of times on average.
+  prune_at_ = std::max(kPruneAt, 2 * queue_.size());
+  pixels_prune_at_ = std::max(kPrunePixels, 2 * pixels_.size());
 }
 
 Rect DrawQueue::pair_cover(const DrawCommand& first, const DrawCommand& second) {
@@ -166,10 +208,17 @@ void DrawQueue::execute(const DrawCommand& c, bool after_frame) {
 }
 
 void DrawQueue::flush() {
+  // What a walk drops is what no one could see: drawing the rest leaves VRAM the same.
+  if (queue_.size() > 1) prune();
+  draw_all();
+}
+
+void DrawQueue::draw_all() {
   for (size_t i = 0; i < queue_.size(); ++i) execute(queue_[i], i >= frame_position_);
   queue_.clear();
   pixels_.clear();
   frame_position_ = 0;
+  prune_at_ = kPruneAt, pixels_prune_at_ = kPrunePixels;
 }
 
 void DrawQueue::frame_due(const DisplayArea& area) {
@@ -194,29 +243,34 @@ void DrawQueue::drop() {
   pixels_.clear();
   frame_pending_ = false;
   frame_position_ = 0;
+  prune_at_ = kPruneAt, pixels_prune_at_ = kPrunePixels;
 }
 
-// Drops the calls before `end` that write only inside `cover` (which the call at `end` replaces)
-// and that nothing kept between them and the cover reads: walking back from the cover, each
-// kept call adds what it reads, the frame due reads its display area at its VBlank, and a kept
-// call that itself replaces a rectangle hides the reads inside it from the calls before it.
-void DrawQueue::prune(const Rect& cover, size_t end) {
+// Drops every call that writes only inside the cover of a later kept call and that nothing kept
+// between them reads. One walk back from the newest call serves every cover: each large cover met
+// (kept) starts gathering the reads of the kept calls before it, and the pending frame reads its
+// display area at its VBlank. A kept cover also hides the reads inside it from every cover after
+// it, since calls before it are seen through its pixels there. A cover inside another one already
+// gathering decides nothing the bigger one does not (their reads inside it are the same), and a
+// cover around one drops all it would.
+void DrawQueue::prune() {
   keep_.assign(queue_.size(), 1);  // reuses its storage: no allocation per frame
-  Readers readers(cover);
+  Covers covers;
   bool frame_added = !frame_pending_;
   bool any_dropped = false;
-  for (size_t i = end; i-- > 0;) {
-    if (!frame_added && i < frame_position_) readers.add(frame_rect_), frame_added = true;
+  for (size_t i = queue_.size(); i-- > 0;) {
+    if (!frame_added && i < frame_position_) covers.add_read(frame_rect_), frame_added = true;
     DrawCommand& c = queue_[i];
-    const Rect& w = c.write;
-    if (cover.contains(w) && !readers.read(w)) {
+    if (covers.replaced(c.write)) {
       keep_[i] = 0, any_dropped = true;
       continue;
     }
-    if (!c.cover.empty() && (!c.cover_with_next || keep_[i + 1])) readers.forget_inside(c.cover);
+    const bool covering = !c.cover.empty() && (!c.cover_with_next || keep_[i + 1]);
+    if (covering) covers.hide(c.cover);
     // A kept call is walked again by every later prune: its reads are worked out once.
     if (c.read_count == DrawCommand::kReadsUnknown) c.read_count = static_cast<u8>(c.read_rects(c.reads));
-    for (u32 k = 0; k < c.read_count; ++k) readers.add(c.reads[k]);
+    for (u32 k = 0; k < c.read_count; ++k) covers.add_read(c.reads[k]);
+    if (covering && c.cover.area() >= kMinCover) covers.start(c.cover);
   }
   if (any_dropped) compact();
 }

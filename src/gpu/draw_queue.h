@@ -10,7 +10,8 @@
 // rectangle (a GP0(02) fill, an opaque untextured rectangle, or two opaque untextured triangles
 // that together cover a rectangle, like a full-screen background quad) drops every earlier call
 // that writes only inside it, unless a later kept call, or the frame due, may read what it wrote.
-// Past a size cap the queue is drawn.
+// The queue is pruned so in batches, once it has grown by as many calls as the last prune kept
+// (at least kPruneAt), and before it is drawn. Past a size cap the queue is drawn.
 #pragma once
 #include <array>
 #include <vector>
@@ -23,11 +24,18 @@ namespace psx::gpu {
 
 class DrawQueue {
  public:
-  // Calls beyond these are drawn at once (bounds the memory of a queue no one looks at).
+  // A prune that keeps more than half of these draws the queue (bounds the memory of a queue no
+  // one looks at).
   static constexpr size_t kMaxCommands = 16384;
   static constexpr size_t kMaxPixels = 256 * 1024;  // GP0(A0) pixels kept
-  // Covers smaller than this do not prune (a scan of the queue per small tile costs more than
-  // drawing it); a full-screen clear is 320x240 or more.
+  // The least growth between prunes, in calls and in GP0(A0) pixels. A prune walks the whole
+  // queue, and a frame's calls stay until a later frame's cover (two frames later with double
+  // buffering, more while a pending frame shows them): batches of many frames walk each call
+  // about once or twice instead of once per frame it stays.
+  static constexpr size_t kPruneAt = 2048;
+  static constexpr size_t kPrunePixels = 64 * 1024;
+  // Covers smaller than this drop nothing (each one the walk keeps checks every earlier call); a
+  // full-screen clear is 320x240 or more.
   static constexpr s64 kMinCover = 128 * 128;
 
   explicit DrawQueue(FrameOutput& output) : output_(output) {}
@@ -57,8 +65,9 @@ class DrawQueue {
  private:
   void push(DrawCommand& c);  // fills in c.write, then draws c or queues a copy
   void execute(const DrawCommand& c, bool after_frame);
+  void draw_all();  // flush() without the prune
   void convert_frame();
-  void prune(const Rect& cover, size_t end);
+  void prune();
   void compact();
   // triangle_pair_cover() through a memo of the last 32 pairs met, by all it depends on (the
   // vertices' positions, the flags that let a triangle keep old pixels, the drawing areas): a
@@ -86,6 +95,8 @@ class DrawQueue {
   std::vector<DrawCommand> queue_;
   std::vector<u16> pixels_;  // the kept GP0(A0) rows' pixels
   std::vector<u8> keep_;     // prune()'s verdict per queued call
+  size_t prune_at_ = kPruneAt;  // queue_.size() that starts the next prune
+  size_t pixels_prune_at_ = kPrunePixels;
   // The frame not yet converted: its area, the VRAM it reads, and how many queued calls came
   // before its VBlank.
   bool frame_pending_ = false;

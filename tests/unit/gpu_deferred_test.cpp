@@ -247,9 +247,12 @@ TEST(GpuDeferred, GpureadSeesQueuedDrawing) {
 
 // A game that never lets anyone look, ordered as Tumble orders its frames: wait for the VBlank,
 // show the buffer drawn last frame, then draw the other one (the one the VBlank's frame showed):
-// a full-screen background quad and a few hundred small textured triangles. The queue holds
-// about two frames, far below its cap (so it is pruning, not flushing), and drawing it all gives
-// what eager drawing gave.
+// a full-screen background quad and 300 small textured triangles, 302 calls a frame. A prune in
+// the middle of frame N keeps frame N-2 (the pending frame shows it), frame N-1 (nothing has
+// covered it yet) and frame N so far: under 4 frames, 4 x 302 calls. The next prune comes when
+// the queue has doubled (or reached DrawQueue::kPruneAt), so it never holds more than 2 x 4 x 302
+// calls: far below the cap, so it is pruning, not drawing. Drawing it all gives what eager drawing
+// gave.
 TEST(GpuDeferred, QueueStaysBoundedWithoutObserver) {
   Twins t;
   t.gp1(0x08000001), t.gp1(0x03000000);
@@ -270,15 +273,24 @@ TEST(GpuDeferred, QueueStaysBoundedWithoutObserver) {
     }
     most = std::max(most, t.lazy.gpu.queued_draws());
   }
-  EXPECT_LE(most, 4u * 302);
-  EXPECT_GT(most, 302u);
+  EXPECT_LE(most, 2u * 4 * 302);
+  EXPECT_GE(most, psx::gpu::DrawQueue::kPruneAt - 302);  // it waited for a batch
   ASSERT_EQ(t.eager.state(), t.lazy.state());
+}
+
+// Queues 1x1 fills at (1000, 500), outside every other call here and read by none, until the
+// queue reaches DrawQueue::kPruneAt calls, which prunes it.
+void queue_until_prune(Twins& t) {
+  while (t.lazy.gpu.queued_draws() + 1 < psx::gpu::DrawQueue::kPruneAt)
+    t.gp0(0x02FFFFFF), t.gp0(xy(1000, 500)), t.gp0(xy(1, 1));
+  t.gp0(0x02FFFFFF), t.gp0(xy(1000, 500)), t.gp0(xy(1, 1));
 }
 
 // A cover drops an earlier call inside it unless a kept call between them may read what it
 // wrote: four VRAM copies read the 16x16 blocks bordering a 16x16 fill at (96, 100) above,
 // below, left and right (none of its pixels) and write outside the full-screen fill that
-// follows, so the small fill goes and the copies and the cover stay.
+// follows, so at the next prune the small fill goes and the copies, the cover and the padding
+// stay.
 TEST(GpuDeferred, ReadsBesideADrawingDoNotKeepIt) {
   Twins t;
   t.gp0(0x02FF0000), t.gp0(xy(96, 100)), t.gp0(xy(16, 16));
@@ -286,7 +298,9 @@ TEST(GpuDeferred, ReadsBesideADrawingDoNotKeepIt) {
   for (int k = 0; k < 4; ++k)
     t.gp0(0x80000000), t.gp0(xy(sources[k][0], sources[k][1])), t.gp0(xy(600 + 40 * k, 300)), t.gp0(xy(16, 16));
   t.gp0(0x020000FF), t.gp0(xy(0, 0)), t.gp0(xy(320, 240));
-  EXPECT_EQ(t.lazy.gpu.queued_draws(), 5u);
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), 6u);
+  queue_until_prune(t);
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), psx::gpu::DrawQueue::kPruneAt - 1);
   ASSERT_EQ(t.eager.state(), t.lazy.state());
 }
 

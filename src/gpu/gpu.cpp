@@ -96,6 +96,17 @@ void Gpu::dma_write(const u32* words, u32 count) {
   u16 pixels[512];
   u32 i = 0;
   while (i < count) {
+    if (gp0_mode_ == Gp0Mode::Command && fifo_len_ == 0) {
+      // A whole command in the block: the FIFO as gp0_write() would leave it, word by word.
+      const u32 needed = gp0_command_length(words[i] >> 24);
+      if (count - i >= needed) {
+        fifo_needed_ = needed;
+        std::copy(words + i, words + i + needed, fifo_);
+        i += needed;
+        gp0_execute();
+        continue;
+      }
+    }
     if (gp0_mode_ != Gp0Mode::CpuToVram) {
       gp0_write(words[i++]);
       continue;

@@ -1,6 +1,8 @@
 // GP0 VRAM commands (fill, copy, CPU<->VRAM transfers), GP1 display control, GPUSTAT bits, GPU
 // info queries, interrupts, video timing, display output and save states (psx-spx "GPU").
+#include <algorithm>
 #include <cstring>
+#include <vector>
 
 #include "gpu_test_util.h"
 
@@ -152,6 +154,44 @@ TEST_F(GpuTest, DmaWriteCarriesCommandsAndTransfers) {
   gpu.dma_read(back, 2);
   EXPECT_EQ(back[0], 0x00020001u);
   EXPECT_EQ(back[1], 0x00000003u);
+}
+
+// DMA channel 2 hands GP0 the same words a program would write to the port (psx-spx "GPU
+// Render/Transfer Commands" via DMA): a stream of every kind of command, cut into DMA blocks at
+// every offset pattern (whole commands, commands split across blocks, single words), leaves the
+// GPU in the same state, VRAM included, as the words written one by one.
+TEST(GpuDma, BlocksCarryTheSameCommandsAsPortWrites) {
+  const std::vector<u32> stream = {
+      0xE1000208, 0xE3000000, 0xE4000000 | 511u << 10 | 1023, 0xE5000000, 0xE6000000,
+      0x02102030, 0x00100010, 0x00200040,                                   // fill
+      0x20FF0000, 0x00100010, 0x00100060, 0x00500020,                       // flat triangle
+      0x38102030, 0x00000000, 0x00405060, 0x00000140, 0x00708090, 0x00F00000, 0x00A0B0C0, 0x00F00140,  // shaded quad
+      0x2C808080, 0x00300030, 0x78000000, 0x00300050, 0x00080010, 0x00500030, 0x00001000, 0x00500050, 0x00001010,
+      0x40FFFFFF, 0x00050005, 0x00600090,                                   // line
+      0x58FF0000, 0x00100100, 0x0000FF00, 0x00200180, 0x000000FF, 0x00900120, 0x55555555,  // shaded polyline
+      0x64808080, 0x00700070, 0x78000000, 0x00100020,                       // textured rectangle
+      0x7C804020, 0x00900090, 0x78000404,                                   // 16x16 sprite
+      0xA0000000, 0x01000200, 0x00020003, 0x7FFF001F, 0x03E07C00, 0x12345678,  // CPU to VRAM, 3x2
+      0x80000000, 0x00000000, 0x01800300, 0x00200020,                       // VRAM to VRAM
+      0x1F000000, 0x00000000,                                               // IRQ, NOP
+  };
+  for (u32 pattern = 0; pattern < 8; ++pattern) {
+    SCOPED_TRACE(pattern);
+    Scheduler port_sched, dma_sched;
+    InterruptController port_irq, dma_irq;
+    Gpu port(port_sched, port_irq), dma(dma_sched, dma_irq);
+    for (u32 w : stream) port.io_write(0, w, 4);
+    // Block sizes 1..8 words, from a pattern that differs per run.
+    for (size_t i = 0, k = 0; i < stream.size(); ++k) {
+      const u32 n = std::min<u32>(1 + (pattern * 5 + k * 3) % 8, static_cast<u32>(stream.size() - i));
+      dma.dma_write(stream.data() + i, n);
+      i += n;
+    }
+    StateIO a, b;
+    port.do_state(a), dma.do_state(b);
+    EXPECT_EQ(a.buffer(), b.buffer());
+    EXPECT_EQ(std::memcmp(port.vram(), dma.vram(), gpu::kVramPixels * 2), 0);
+  }
 }
 
 }  // namespace

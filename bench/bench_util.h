@@ -89,7 +89,7 @@ inline double async_moves_per_second(const std::string& obs, int envs, int batch
   while (done < moves) {
     const psxrl::rl::AsyncBatch& b = vec.recv();
     done += batch;
-    if (done == 0) t = Clock::now();
+    if (done >= 0 && done < batch) t = Clock::now(), done = 0;  // the warm-up ends here
     actions.resize(b.env_ids.size());
     for (auto& a : actions) a = action_at(lcg);
     vec.send(actions, b.env_ids);

@@ -281,9 +281,8 @@ TEST(GpuDeferred, QueueStaysBoundedWithoutObserver) {
 // Queues 1x1 fills at (1000, 500), outside every other call here and read by none, until the
 // queue reaches DrawQueue::kPruneAt calls, which prunes it.
 void queue_until_prune(Twins& t) {
-  while (t.lazy.gpu.queued_draws() + 1 < psx::gpu::DrawQueue::kPruneAt)
+  for (size_t n = t.lazy.gpu.queued_draws(); n < psx::gpu::DrawQueue::kPruneAt; ++n)
     t.gp0(0x02FFFFFF), t.gp0(xy(1000, 500)), t.gp0(xy(1, 1));
-  t.gp0(0x02FFFFFF), t.gp0(xy(1000, 500)), t.gp0(xy(1, 1));
 }
 
 // A cover drops an earlier call inside it unless a kept call between them may read what it

@@ -91,7 +91,7 @@ void Impl::shadow_check(const Step& s, Label& stall) {
 // CpuT::shadow_stall() before instruction k, as seg.shadow[k] and seg.shadowed[k] say.
 void Impl::shadow(const Step& s, size_t k, Segment& seg) {
   if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
-    shadow_known(s, seg.pipe[k], seg.shadowed[k]);
+    shadow_known(s, seg.pipe[k], seg.shadowed[k], k + 1 == seg.count);
   } else if (seg.shadow[k] == Shadow::check) {
     shadow_check(s, seg.stall[k]);
     L(seg.stall_back[k]);
@@ -107,7 +107,13 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
 // clears shadow_reg_ whatever it holds. Which one is decided at run time, but whether s waits
 // is known now: when it reads r outside r's load delay slot. No stub and no register compare:
 // a waiting instruction moves time to the access's end (no earlier than now) and clears.
-void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r) {
+// Where s does not wait, the check only clears shadow_reg_, and only the segment's `last`
+// instruction makes it: nothing in the segment reads shadow_reg_ after its load (a later load
+// sets it, a waiting instruction clears it whatever it holds), every way out before the last
+// instruction runs that instruction's step, whose own check clears it just as the skipped ones
+// would have (time only grows, so a check that would have cleared earlier clears there), and
+// the last instruction's check leaves it as the instructions between would have.
+void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last) {
   const std::vector<u32> reads = shadowable_reads(s);
   const bool delay_slot = pipe.after_load && pipe.load_reg == r;
   if (r != 0 && !delay_slot && std::find(reads.begin(), reads.end(), r) != reads.end()) {
@@ -117,6 +123,7 @@ void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r) {
     mov(cpu32(lay.shadow_reg), 0);
     return;
   }
+  if (!last) return;
   Label pending;
   cmp(now, cpu64(lay.load_done_at));
   jb(pending);

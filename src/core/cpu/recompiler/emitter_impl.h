@@ -219,7 +219,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   static std::vector<u32> shadowable_reads(const Step& s);
   void shadow(const Step& s, size_t k, Segment& seg);
   void shadow_check(const Step& s, Xbyak::Label& stall);
-  void shadow_known(const Step& s, const Pipe& pipe, u32 r);
+  void shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last);
   void stall_stub(size_t k, Segment& seg);
 };
 

@@ -426,7 +426,8 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   // Only a store (into compiled code), LWC2/SWC2 and the GTE's instructions call out of the main
   // path, which may change r10.
   const bool r10_kept = !is_store_or_swc2(op) && op != NativeOp::Lwc2 && !is_cop2(op);
-  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), r10_kept);  // leaves eax
+  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), r10_kept, seg.lazy[k],
+         k > 0 && seg.lazy[k - 1]);  // leaves eax
   eax_reg = d;
 }
 
@@ -450,14 +451,16 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 // (`r10_kept`), else from load_val_.
 // Where it is not known (a segment's first instruction), an empty slot (load_reg_ and load_val_
 // both zero, which then stay so) is checked for and the rest left to the cold code.
-void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept) {
+// A `lazy` load (Segment::lazy) leaves load_reg_ and load_val_ zero, and where the load landing
+// was lazy (`pending_lazy`) they are zero already.
+void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy) {
   if (pipe.dynamic) {
     Label &pending = cold_label(), &back = cold_label();
     mov(ecx, cpu32(lay.load_reg));
     or_(ecx, cpu32(lay.load_val));
     jnz(pending, T_NEAR);
     L(back);
-    cold.push_back([this, &pending, &back, cleared, load] {
+    cold.push_back([this, &pending, &back, cleared, load, lazy] {
       Label skip;
       L(pending);
       mov(ecx, cpu32(lay.load_reg));
@@ -469,7 +472,7 @@ void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kep
       mov(dword[rbx + rcx * 4 + lay.regs], edx);
       L(skip);
       mov(reg(0), 0);
-      if (!load) {
+      if (!load || lazy) {
         mov(cpu32(lay.load_reg), 0);
         mov(cpu32(lay.load_val), 0);
       }
@@ -483,14 +486,30 @@ void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kep
       mov(reg(pipe.load_reg), edx);
     }
   }
-  if (load) {
+  if (load && !lazy) {
     mov(cpu32(lay.load_reg), rt);
     mov(cpu32(lay.load_val), eax);
-    mov(r10d, eax);
-  } else if (pipe.after_load) {
+  } else if (pipe.after_load && !pending_lazy) {
     mov(cpu32(lay.load_reg), 0);
     mov(cpu32(lay.load_val), 0);
   }
+  if (load) mov(r10d, eax);
+}
+
+// Whether an instruction after a load may land it from r10d with load_reg_ and load_val_ left
+// zero (Segment::lazy): one that calls nothing that could clobber r10 (a store's code-page call,
+// the GTE's) and reads neither field itself (LWL/LWR merge with load_val_); its ways to a call
+// write them first (pending()).
+bool Impl::lazy_lands(NativeOp op) {
+  return !is_store_or_swc2(op) && op != NativeOp::Lwc2 && !is_cop2(op) && !is_unaligned(op);
+}
+
+// Where native code leaves instruction k for its call while a lazy load (instruction k - 1) is
+// pending: load_reg_ and load_val_ as the load would have left them.
+void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
+  if (k == 0 || !seg.lazy[k - 1]) return;
+  mov(cpu32(lay.load_reg), cpu_detail::rt(run[k - 1].word));
+  mov(cpu32(lay.load_val), r10d);
 }
 
 // The block's end: RecompilerT::run()'s next loop pass. When it would call the block that
@@ -627,8 +646,11 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
     *v = std::vector<Label>(seg.count);
   seg.pipe.assign(seg.count, Pipe{});
   seg.eax_at.assign(seg.count, 0);
-  for (size_t k = 1; k < seg.count; ++k)
+  seg.lazy.assign(seg.count, false);
+  for (size_t k = 1; k < seg.count; ++k) {
     seg.pipe[k] = {false, is_delayed(run[k - 1].native), cpu_detail::rt(run[k - 1].word)};
+    seg.lazy[k - 1] = is_delayed(run[k - 1].native) && lazy_lands(run[k].native);
+  }
   // Instructions since the last that may have left a load shadowed, this one included.
   const size_t reach = size_t(lay.load_issue + lay.load_bus - 1);
   seg.shadow.resize(seg.count);
@@ -672,6 +694,7 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
   for (size_t k = 0; k < seg.count; ++k) {
     if (!is_memory(run[k].native)) continue;
     L(seg.fallback[k]);
+    pending(run, k, seg);
     if (k > 0) {
       add(instructions, int(k));
       sync_pc(run, k - 1);
@@ -681,6 +704,7 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
   for (size_t k = 1; k < seg.count; ++k) {
     if ((run[k].pc & 15) != 0) continue;  // a line check's or a fill's refusal
     L(seg.slow_native[k]);
+    pending(run, k, seg);
     add(instructions, int(k));
     jmp(seg.slow[k], T_NEAR);
   }
@@ -702,6 +726,10 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
   guard(run.subspan(k + 1), seg.slow[k + 1], Checks::routine, seg.budget[k + 1]);
   if (seg.eax_at[k + 1] != 0) mov(eax, reg(seg.eax_at[k + 1]));  // as native code left it
   if (seg.pipe[k + 1].after_load) mov(r10d, cpu32(lay.load_val));
+  if (seg.lazy[k]) {  // the call's load as a lazy one (Segment::lazy)
+    mov(cpu32(lay.load_reg), 0);
+    mov(cpu32(lay.load_val), 0);
+  }
   sub(instructions, int(k + 1));  // native code counts from where it resumes
   if (loops_natively) mov(byte[rsp], 1);  // a call since the block's guard (chain())
   // Instruction 0 may have been a delay slot whose branch went on to instruction 1, which then

@@ -67,6 +67,10 @@ struct Segment {
   // count of instructions 0..k-1 is added first (native()).
   std::vector<Xbyak::Label> slow_native;
   std::vector<Pipe> pipe;  // per instruction
+  // lazy[k]: instruction k's load (a delayed write, is_delayed()) stays in r10d alone, with
+  // load_reg_ and load_val_ left zero, because instruction k + 1 lands it natively without
+  // calling out (lazy_lands()); only that instruction's ways to a call write them (pending()).
+  std::vector<bool> lazy;
   // eax_at[k]: the general register whose value eax holds where instruction k starts (0: none),
   // which a call resuming there (call_and_resume()) loads into eax.
   std::vector<u32> eax_at;
@@ -178,7 +182,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter.cpp
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);
-  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept);
+  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy);
+  static bool lazy_lands(NativeOp op);
+  void pending(std::span<const Step> run, size_t k, const Segment& seg);
   void sync_pc(std::span<const Step> run, size_t j);
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);

@@ -66,22 +66,26 @@ std::vector<u32> Impl::shadowable_reads(const Step& s) {
   return regs;
 }
 
-// CpuT::shadow_stall() where shadow_reg_ is nonzero, inline up to the wait: the shadow clears
-// once the access has ended, and only an instruction reading the shadowed register may wait
-// (`stall`: stall_stub(), with ecx = the register). Falls through where nothing waits.
+// CpuT::shadow_stall() where shadow_reg_ is nonzero, in the cold code up to the wait: the
+// shadow clears once the access has ended, and only an instruction reading the shadowed register
+// may wait (`stall`: stall_stub(), with ecx = the register). Goes on inline where nothing waits;
+// the main path only tests shadow_reg_, which is mostly zero by the time a run starts.
 void Impl::shadow_check(const Step& s, Label& stall) {
-  Label &clear = cold_label(), &back = cold_label();
-  mov(ecx, cpu32(lay.shadow_reg));  // ecx: eax may hold a register (eax_reg)
-  test(ecx, ecx);
-  jz(back);
-  cmp(now, cpu64(lay.load_done_at));
-  jae(clear, T_NEAR);
-  for (u32 r : shadowable_reads(s)) {
-    cmp(ecx, r);
-    je(stall, T_NEAR);
-  }
+  Label &pending = cold_label(), &back = cold_label();
+  cmp(cpu32(lay.shadow_reg), 0);  // eax may hold a register (eax_reg)
+  jne(pending, T_NEAR);
   L(back);
-  cold.push_back([this, &clear, &back] {
+  cold.push_back([this, &pending, &back, &stall, reads = shadowable_reads(s)] {
+    Label clear;
+    L(pending);
+    mov(ecx, cpu32(lay.shadow_reg));
+    cmp(now, cpu64(lay.load_done_at));
+    jae(clear);
+    for (u32 r : reads) {
+      cmp(ecx, r);
+      je(stall, T_NEAR);
+    }
+    jmp(back, T_NEAR);
     L(clear);
     mov(cpu32(lay.shadow_reg), 0);
     jmp(back, T_NEAR);

@@ -285,6 +285,31 @@ std::vector<u32> loop_stream(u32 seed) {
   return code;
 }
 
+// A native run that reaches an i-cache line it cannot fill itself: BCC's IBLKSZ cleared (psx-spx
+// "Memory Control" FFFE0130h; reset value 1E988h) makes a miss at a line's first word fill only two
+// words, which the native fill refuses. Block A (14 instructions over four lines) and block B
+// (one line) alternate, and B's line has the index of A's second line (4 KiB apart), so every pass
+// of A hits its first line and misses its second there: A's native run leaves at that line's
+// first instruction for its call, after four ALU instructions whose cycles it has counted only in
+// the emitter (Impl::owed), and resumes natively two lines on. The probe compares the time too.
+TEST(RecompilerTiming, LineMissesInsideNativeRuns) {
+  constexpr u32 kA = 0x100, kB = kA + 0x1000 + 0x10, kAt = 1, kT2 = 10;
+  std::vector<u32> code = {itype(0x0F, 0, kAt, 0xFFFE), itype(0x0F, 0, kT2, 1),  // lui at; lui t2, 1
+                           itype(0x0D, kT2, kT2, 0xE888),                       // ori t2: 1E888h
+                           itype(0x2B, kAt, kT2, 0x130),                        // sw t2, BCC
+                           j(kBase + kA), kNop};
+  code.resize(kA / 4, kNop);
+  std::mt19937 rng(5);
+  for (u32 i = 0; i < 12; ++i) code.push_back(itype(0x09, kT0 + rng() % 4, kT0 + rng() % 4, rng() & 0xFFFF));
+  code.insert(code.end(), {j(kBase + kB), kNop});
+  code.resize(kB / 4, kNop);
+  code.insert(code.end(), {itype(0x09, kT0, kT1, 3), itype(0x09, kT2, kT0, 5), j(kBase + kA), kNop});
+  for (u32 seed = 1; seed <= 3; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_trace(code, seed, 5 + 9 * seed, 1);
+  }
+}
+
 TEST(RecompilerTiming, ProbedNativeLoops) {
   for (int seed = 1; seed <= test_scale::sized(6, 2); ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));

@@ -386,8 +386,12 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   const Step& s = rest[0];
   const NativeOp op = s.native;
   const Pipe& pipe = seg.pipe[k];
-  if (k == 0) eax_reg = 0;  // after the guard
+  if (k == 0) {  // after the guard
+    eax_reg = 0;
+    owed = 0;
+  }
   seg.eax_at[k] = eax_reg;
+  seg.time_in[k] = owed;
   // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
   // which fetches (and fills) it.
   if (k > 0 && (s.pc & 15) == 0) {
@@ -402,8 +406,9 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   } else if (k == 0) {
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
-  inc(now);
+  ++owed;  // the instruction's cycle
   shadow(s, k, seg);
+  if (uses_time(op)) settle();
   if (after_branch) {
     mov(eax, cpu32(lay.next_pc));
     mov(cpu32(lay.pc), eax);
@@ -429,6 +434,20 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), r10_kept, seg.lazy[k],
          k > 0 && seg.lazy[k - 1]);  // leaves eax
   eax_reg = d;
+}
+
+void Impl::settle() {
+  if (owed == 1) inc(now);
+  else if (owed > 1) add(now, int(owed));
+  owed = 0;
+}
+
+// The instructions whose native code reads or moves the time: loads and LWC2 (the load-timing
+// model, wait_load()), SWC2 and the GTE's (wait_gte()), MFHI/MFLO (the multiply's or divide's
+// end), multiplies and divides (their duration).
+bool Impl::uses_time(NativeOp op) {
+  return is_load(op) || is_cop2(op) || op == NativeOp::Mfhi || op == NativeOp::Mflo ||
+         (op >= NativeOp::Mult && op <= NativeOp::Divu);
 }
 
 // current_pc_, pc_ and next_pc_ after instruction j of a segment, which native code writes only
@@ -646,6 +665,8 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
     *v = std::vector<Label>(seg.count);
   seg.pipe.assign(seg.count, Pipe{});
   seg.eax_at.assign(seg.count, 0);
+  seg.time_in.assign(seg.count, 0);
+  seg.stall_owed.assign(seg.count, 0);
   seg.lazy.assign(seg.count, false);
   for (size_t k = 1; k < seg.count; ++k) {
     seg.pipe[k] = {false, is_delayed(run[k - 1].native), cpu_detail::rt(run[k - 1].word)};
@@ -695,6 +716,7 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
     if (!is_memory(run[k].native)) continue;
     L(seg.fallback[k]);
     pending(run, k, seg);
+    if (seg.time_in[k] != 0) add(now, int(seg.time_in[k]));
     if (k > 0) {
       add(instructions, int(k));
       sync_pc(run, k - 1);
@@ -705,6 +727,7 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
     if ((run[k].pc & 15) != 0) continue;  // a line check's or a fill's refusal
     L(seg.slow_native[k]);
     pending(run, k, seg);
+    if (seg.time_in[k] != 0) add(now, int(seg.time_in[k]));
     add(instructions, int(k));
     jmp(seg.slow[k], T_NEAR);
   }
@@ -731,6 +754,7 @@ void Impl::call_and_resume(std::span<const Step> run, size_t k, Segment& seg) {
     mov(cpu32(lay.load_val), 0);
   }
   sub(instructions, int(k + 1));  // native code counts from where it resumes
+  if (seg.time_in[k + 1] != 0) sub(now, int(seg.time_in[k + 1]));  // and owes what it owed there
   if (loops_natively) mov(byte[rsp], 1);  // a call since the block's guard (chain())
   // Instruction 0 may have been a delay slot whose branch went on to instruction 1, which then
   // is not in one: native code writes in_delay_slot_ at instruction 0 only (or after a branch).
@@ -796,6 +820,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       g.L(seg.resume[k]);
       g.native(run.subspan(k), k, after_branch, seg);
     }
+    g.settle();
     g.add(g.instructions, int(seg.count));
     g.sync_pc(run, seg.count - 1);
     if (i == steps.size())  // the block's native end

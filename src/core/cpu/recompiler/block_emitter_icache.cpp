@@ -136,12 +136,12 @@ void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
   mov(rsi, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
   line_words(rest, slow, rsi);
   icache_fill(rest[0].pc);
-  lea(rcx, ptr[now + 1]);
+  lea(rcx, ptr[now + int(seg.time_in[k]) + 1]);  // the time (Impl::owed) and the cycle
   mov(rdx, cpu64(lay.load_done_at));
   cmp(rcx, rdx);
   cmovb(rcx, rdx);
   imul(eax, eax, lay.fetch_word_cycles);
-  lea(now, ptr[rcx + rax - 1]);
+  lea(now, ptr[rcx + rax - 1 - int(seg.time_in[k])]);
   jmp(seg.filled[k], T_NEAR);
 }
 

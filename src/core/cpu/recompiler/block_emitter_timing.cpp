@@ -75,11 +75,12 @@ void Impl::shadow_check(const Step& s, Label& stall) {
   cmp(cpu32(lay.shadow_reg), 0);  // eax may hold a register (eax_reg)
   jne(pending, T_NEAR);
   L(back);
-  cold.push_back([this, &pending, &back, &stall, reads = shadowable_reads(s)] {
+  cold.push_back([this, &pending, &back, &stall, reads = shadowable_reads(s), at = owed] {
     Label clear;
     L(pending);
     mov(ecx, cpu32(lay.shadow_reg));
-    cmp(now, cpu64(lay.load_done_at));
+    lea(rdx, ptr[now + int(at)]);  // the time (Impl::owed); eax may hold a register
+    cmp(rdx, cpu64(lay.load_done_at));
     jae(clear);
     for (u32 r : reads) {
       cmp(ecx, r);
@@ -97,6 +98,7 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
   if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
     shadow_known(s, seg.pipe[k], seg.shadowed[k], k + 1 == seg.count);
   } else if (seg.shadow[k] == Shadow::check) {
+    seg.stall_owed[k] = owed;
     shadow_check(s, seg.stall[k]);
     L(seg.stall_back[k]);
   } else if (seg.shadow[k] == Shadow::clear) {
@@ -121,6 +123,7 @@ void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last) {
   const std::vector<u32> reads = shadowable_reads(s);
   const bool delay_slot = pipe.after_load && pipe.load_reg == r;
   if (r != 0 && !delay_slot && std::find(reads.begin(), reads.end(), r) != reads.end()) {
+    settle();
     mov(rcx, cpu64(lay.load_done_at));
     cmp(now, rcx);
     cmovb(now, rcx);
@@ -128,6 +131,7 @@ void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last) {
     return;
   }
   if (!last) return;
+  settle();
   Label pending;
   cmp(now, cpu64(lay.load_done_at));
   jb(pending);
@@ -149,6 +153,7 @@ void Impl::stall_stub(size_t k, Segment& seg) {
     je(seg.stall_back[k], T_NEAR);
   }
   mov(now, cpu64(lay.load_done_at));
+  if (seg.stall_owed[k] != 0) sub(now, int(seg.stall_owed[k]));  // still owed after the stall
   mov(cpu32(lay.shadow_reg), 0);
   jmp(seg.stall_back[k], T_NEAR);
 }

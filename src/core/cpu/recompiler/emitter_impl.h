@@ -13,6 +13,7 @@
 // count back before anything outside the block can look, reload() reads all three after a call).
 // Within a native segment rbp stays the count at the segment's start: instruction k adds nothing,
 // and every way out of the segment adds the k instructions run (its end, a slow or fallback call).
+// Likewise r14 runs behind the time by the cycles the emitter knows are owed (Impl::owed).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -67,6 +68,9 @@ struct Segment {
   // count of instructions 0..k-1 is added first (native()).
   std::vector<Xbyak::Label> slow_native;
   std::vector<Pipe> pipe;  // per instruction
+  // time_in[k]: the cycles native code owes r14 where instruction k starts (Impl::owed);
+  // stall_owed[k]: those owed at instruction k's shadow check, which its stall stub keeps.
+  std::vector<u32> time_in, stall_owed;
   // lazy[k]: instruction k's load (a delayed write, is_delayed()) stays in r10d alone, with
   // load_reg_ and load_val_ left zero, because instruction k + 1 lands it natively without
   // calling out (lazy_lands()); only that instruction's ways to a call write them (pending()).
@@ -122,6 +126,13 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   const Xbyak::Reg64& now = r14;
   const Xbyak::Reg64& deadline = r15;
   const Xbyak::Reg64& instructions = rbp;
+  // Within a native segment r14 runs behind the time by `owed` cycles, known here: an instruction
+  // counts its cycle only in `owed`, and r14 catches up (settle()) before anything reads or moves
+  // it (a load, a wait, a shadow check that compares the time, the segment's end); the ways out
+  // of a segment add what is owed there (Segment::time_in) and a call resuming it takes it off.
+  u32 owed = 0;
+  void settle();
+  static bool uses_time(NativeOp op);
   void flush();
   void reload();
   // A call to a function that is handed neither the CPU nor the scheduler (the GTE's, the code

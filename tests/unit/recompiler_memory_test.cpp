@@ -172,6 +172,7 @@ TEST(RecompilerMemory, StreamsWithDataBreaks) {
 TEST(RecompilerMemory, NamedLoadStoreCases) {
   const auto mem = [](u32 op, u32 base, u32 rt, u32 off) { return itype(op, base, rt, off); };
   const auto addu = [](u32 d, u32 s, u32 t) { return rtype(0x21, s, t, d); };
+  constexpr u32 kSeg1 = 29, kSeg3 = 3;  // RAM's offset 100000h in KUSEG's second and fourth 512 MiB
   constexpr u32 kLb = 0x20, kLh = 0x21, kLw = 0x23, kLbu = 0x24, kLhu = 0x25, kSb = 0x28, kSh = 0x29, kSw = 0x2B;
   const std::vector<std::vector<u32>> cases = {
       {mem(kLw, kRamK0, kT0, 0), addu(kT1, kT0, kT0)},              // delay slot reads the old t0
@@ -195,6 +196,10 @@ TEST(RecompilerMemory, NamedLoadStoreCases) {
       {addu(kAt, kTimers, 0), mem(kLw, kAt, kT0, 0), mem(kSw, kAt, kT2, 8), kNop},
       {addu(kAt, kScratchK1, 0), mem(kLw, kAt, kT0, 0), kNop, mem(kSw, kAt, kT2, 8), kNop},
       {addu(kAt, kKseg2, 0), mem(kLw, kAt, kT0, 0), kNop, mem(kSw, kAt, kT2, 8), kNop},
+      // RAM's offsets in KUSEG's second and fourth 512 MiB, which no mirror maps (Bus::physical
+      // keeps all of a KUSEG address): bus errors, not RAM.
+      {addu(kAt, kSeg1, 0), mem(kLw, kAt, kT0, 0x20), kNop, mem(kSw, kAt, kT2, 0x24), kNop},
+      {addu(kAt, kSeg3, 0), mem(kLw, kAt, kT0, 0x20), kNop, mem(kSw, kAt, kT2, 0x24), kNop},
       {mem(kLw, kRamK0, kT0, 44), mem(kSw, kRamK0, kT0, 48), kNop},  // the delay slot stores the old t0
       {mem(kLw, kRamK0, kT0, 52), mem(kLw, kT0, kT1, 0), kNop},      // base read in the delay slot
   };
@@ -209,6 +214,8 @@ TEST(RecompilerMemory, NamedLoadStoreCases) {
   std::vector<u32> regs = memory_regs(7);
   regs[kT2 - 1] = 0x80818283;
   regs[kT3 - 1] = 0xFEDCBA98;
+  regs[kSeg1 - 1] = 0x20100000;
+  regs[kSeg3 - 1] = 0x60100000;
   expect_same_code(code, kBase, 0, regs, 3);
   // The same with SR.IsC set: every store stays out of memory.
   expect_same_code(code, kBase, Cop0::kIsC, regs, 3);

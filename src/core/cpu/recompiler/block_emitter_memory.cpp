@@ -4,6 +4,8 @@
 // to the scratchpad (KUSEG and KSEG0). Everything else about an access (an address error, user
 // mode, a debug data break armed, an isolated cache for a store, D-cache mode, memory watches,
 // I/O and the other regions) sends the instruction to its call step.
+#include <array>
+
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
 #include "core/cpu/recompiler/code_pages.h"
@@ -20,6 +22,16 @@ constexpr u32 kRamMask = CodePages::kRamSize - 1;
 constexpr u32 kScratchBase = 0x1F800000, kScratchMask = 0x3FF;
 // Address bits that must be zero for RAM (below 8 MiB within the 512 MiB segment).
 constexpr u32 kNotRam = 0x1F800000;
+
+// By address bits 31-23 (the segment and the 8 MiB block within it): 0 where the address is RAM
+// as the native code makes the access (the first 8 MiB of KUSEG, KSEG0 or KSEG1), 1 elsewhere
+// (the scratchpad and everything the call step makes).
+constexpr std::array<u8, 512> kNotRamBlock = [] {
+  std::array<u8, 512> t{};
+  t.fill(1);
+  for (u32 segment : {0u, 4u, 5u}) t[segment << 6] = 0;
+  return t;
+}();
 
 u32 width_of(NativeOp op) {
   switch (op) {
@@ -62,15 +74,15 @@ void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   }
   Label &not_ram = cold_label(), &ok = cold_label();
   mov(ecx, r13d);
-  shr(ecx, 29);  // the segment: 0-3 KUSEG, 4 KSEG0, 5 KSEG1, 6-7 KSEG2
-  test(r13d, kNotRam);
-  jnz(not_ram, T_NEAR);
-  mov(edx, 0x31);  // RAM: segment 0 (the first 512 MiB), 4 or 5
-  bt(edx, ecx);
-  jnc(slow, T_NEAR);
+  shr(ecx, 23);
+  mov(rdx, reinterpret_cast<u64>(kNotRamBlock.data()));
+  cmp(byte[rdx + rcx], 0);
+  jne(not_ram, T_NEAR);
   L(ok);
   cold.push_back([this, &not_ram, &ok, &slow] {
     L(not_ram);
+    mov(ecx, r13d);
+    shr(ecx, 29);  // the segment: 0-3 KUSEG, 4 KSEG0, 5 KSEG1, 6-7 KSEG2
     test(cl, 3);  // the scratchpad: KUSEG or KSEG0 (segment 0 or 4) ...
     jnz(slow, T_NEAR);
     mov(edx, r13d);

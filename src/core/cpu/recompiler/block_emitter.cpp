@@ -298,9 +298,8 @@ void Impl::state_checks(Label& fail) {
   jne(fail, T_NEAR);
   cmp(now, deadline);
   jae(fail, T_NEAR);
-  mov(eax, cpu32(lay.new_load_reg));
-  or_(eax, cpu32(lay.new_load_val));
-  jnz(fail, T_NEAR);
+  cmp(cpu64(lay.new_load_reg), 0);  // new_load_reg_ and new_load_val_ together (Layout)
+  jne(fail, T_NEAR);
   test(cpu32(lay.dcic), Cop0::kDcicPCE);
   jnz(fail, T_NEAR);
   Label interrupts_off, no_irq;
@@ -475,9 +474,8 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy) {
   if (pipe.dynamic) {
     Label &pending = cold_label(), &back = cold_label();
-    mov(ecx, cpu32(lay.load_reg));
-    or_(ecx, cpu32(lay.load_val));
-    jnz(pending, T_NEAR);
+    cmp(cpu64(lay.load_reg), 0);  // load_reg_ and load_val_ together (Layout)
+    jne(pending, T_NEAR);
     L(back);
     cold.push_back([this, &pending, &back, cleared, load, lazy] {
       Label skip;
@@ -582,9 +580,8 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget) {
     L(other);
   }
   mov(ecx, eax);
-  shr(ecx, 2);
-  and_(ecx, lay.recent_count - 1);
-  shl(ecx, 4);  // 16-byte entries: {u32 pc; BlockFn fn at 8}
+  and_(ecx, (lay.recent_count - 1) << 2);
+  shl(ecx, 2);  // entry pc / 4 mod recent_count, of 16 bytes: {u32 pc; BlockFn fn at 8}
   mov(rdx, reinterpret_cast<u64>(lay.recent_blocks));
   cmp(dword[rdx + rcx], eax);
   jne(back, T_NEAR);

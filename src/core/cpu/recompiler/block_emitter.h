@@ -51,6 +51,8 @@ class BlockEmitter {
     void* context;
     int bias;
     void* sched;
+    // load_val and new_load_val lie 4 bytes past load_reg and new_load_reg (each pair is tested
+    // for zero as one 8-byte word).
     int regs, pc, next_pc, current_pc, load_reg, load_val, new_load_reg, new_load_val, shadow_reg;
     int loop_head, sr, cause, dcic, hook_pc, extra_hook_pc;
     int in_delay_slot, next_in_delay, stop, hook_armed;  // bool

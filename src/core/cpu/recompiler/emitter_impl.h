@@ -212,7 +212,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Xbyak::Label* loop_head_entry = nullptr;  // this block's loop_head_routine(), once emitted
   // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
   // block that cannot vouch for state_checks()), fn + kCleanEntry (a clean chain()).
-  static constexpr size_t kPrologueBytes = 64, kStateCheckBytes = 144;  // state checks: 141 bytes
+  static constexpr size_t kPrologueBytes = 64, kStateCheckBytes = 144;  // state checks: 140 bytes
   static constexpr size_t kCleanEntry = kPrologueBytes + kStateCheckBytes;
   void prologue(const Layout& layout);
   void epilogue();

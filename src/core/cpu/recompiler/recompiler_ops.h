@@ -3,6 +3,8 @@
 // the word the block was compiled from, running that instruction's semantics chosen at compile
 // time. Each does exactly what one pass of CpuT::run()'s loop does.
 #pragma once
+#include <stdexcept>
+
 #include "core/cpu/decode.h"
 
 namespace psx {
@@ -213,6 +215,8 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.load_val = cpu_at(&c.load_val_);
   l.new_load_reg = cpu_at(&c.new_load_reg_);
   l.new_load_val = cpu_at(&c.new_load_val_);
+  if (l.load_val != l.load_reg + 4 || l.new_load_val != l.new_load_reg + 4)
+    throw std::logic_error("recompiler: the pending-load fields are not in pairs");
   l.shadow_reg = cpu_at(&c.shadow_reg_);
   l.loop_head = cpu_at(&c.loop_head_);
   l.sr = cpu_at(&c.cop0_.sr);

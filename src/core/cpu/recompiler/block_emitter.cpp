@@ -244,25 +244,19 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, std::opt
       call(machine_routine(needs));
       jnz(fail, T_NEAR);
       break;
-    case Checks::entry: {
+    case Checks::entry: {  // the block's entries (kPrologueBytes, kCleanEntry) lie either side
       const size_t start = getSize();
+      pc_checks(first, fail);
+      pad_to(start, kPcCheckBytes, "pc checks");
+      const size_t states = getSize();
       state_checks(fail);
-      pad_to(start, kStateCheckBytes, "state checks");
+      pad_to(states, kStateCheckBytes, "state checks");
       needs_checks(needs, fail);
       if (loops_natively) mov(byte[rsp], 0);  // no call since this guard (chain())
       break;
     }
   }
-  // A segment's first instruction runs natively only out of a delay slot, next_pc_ following pc_
-  // (native() then knows its pc_, next_pc_ and in_delay_slot_), as does a branch (branch()
-  // assumes it). A segment resumed after a call needs no check: the call left on the next
-  // instruction (call_step()), and after a branch's call its delay slot reads where it went.
-  if (checks != Checks::routine || is_branch(run[0].native)) {
-    cmp(byte[rbx + lay.next_in_delay], 0);
-    jne(fail, T_NEAR);
-    cmp(cpu32(lay.next_pc), first + 4);
-    jne(fail, T_NEAR);
-  }
+  if (checks == Checks::all || (checks == Checks::routine && is_branch(run[0].native))) pc_checks(first, fail);
   Label no_loop_head;
   mov(eax, cpu32(lay.loop_head));  // run() would hand a loop head in the segment to IdleSkip
   sub(eax, first);
@@ -277,6 +271,19 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, std::opt
   }
   if (budget) budget_check(*budget, fail);
   line_check(run, fail, fill, filled);
+}
+
+// A segment's first instruction (at `first`) runs natively only out of a delay slot, next_pc_
+// following pc_ (native() then knows its pc_, next_pc_ and in_delay_slot_), as does a branch
+// (branch() assumes it). A segment resumed after a call needs no check: the call left on the next
+// instruction (call_step()), and after a branch's call its delay slot reads where it went. A
+// clean chain() vouches for them too: it comes from a run that ended on an instruction other
+// than a branch. Fixed-size encodings, padded to kPcCheckBytes at a block's entry.
+void Impl::pc_checks(u32 first, Label& fail) {
+  cmp(byte[rbx + lay.next_in_delay], 0);
+  jne(fail, T_NEAR);
+  cmp(cpu32(lay.next_pc), first + 4);
+  jne(fail, T_NEAR);
 }
 
 // guard()'s checks that depend on the run only through `needs` (kNeeds*).
@@ -535,9 +542,10 @@ void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
 // be dropped first), the block jumps there itself, past that block's prologue (kPrologueBytes),
 // in the same frame and with the time and count still in their registers; otherwise it writes
 // them back and returns to the dispatcher, which makes the same checks and does what they ask. A
-// `clean` chain, from a native run that reached the block's end, also skips the next block's
-// state_checks() (kCleanEntry): they held when that run started, and of what they check only a
-// hook could have changed since.
+// `clean` chain, from a native run that reached the block's end on anything but a branch, also
+// skips the next block's pc_checks() and state_checks() (kCleanEntry): the run leaves the former
+// true, the latter held when it started, and of what they check only a hook could have changed
+// since.
 // A block that is one native segment and branches back to its start (loops_natively) goes, on that
 // branch, straight to its first instruction (`loop`, the segment's resume[0]) past its whole guard
 // when no call was made since the guard passed (the frame's spare byte at rsp says; a load or
@@ -546,6 +554,7 @@ void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
 // hook, the loop head), and no i-cache line the block uses (a fill stub refills a line with the
 // words compiled; stores leave the i-cache alone).
 void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget) {
+  clean = clean && !ends_in_branch;  // a branch's delay slot is the next block's (pc_checks())
   Label back, no_loop_head;
   cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
@@ -779,6 +788,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   g.block_pc = steps[0].pc;
+  g.ends_in_branch = Impl::is_branch(steps.back().native);
   g.block_entry = g.getCurr();
   g.self_loop = std::any_of(steps.begin(), steps.end(), [&](const Step& s) {
     return Impl::is_branch(s.native) && s.native != NativeOp::Jr && s.native != NativeOp::Jalr &&

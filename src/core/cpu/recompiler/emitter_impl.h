@@ -165,7 +165,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void branch(NativeOp op, u32 pc, u32 i);
   // How a guard makes machine_checks(): inline (`all`), by calling machine_routine() (`routine`:
   // re-guards after slow calls, shorter code, compiled faster), or as the block's entry (`entry`:
-  // its state_checks() padded to kStateCheckBytes, where a clean chain() enters past them).
+  // its pc_checks() and state_checks() padded to kPcCheckBytes and kStateCheckBytes, where a
+  // clean chain() enters past them).
   enum class Checks { all, routine, entry };
   // guard() and line_check() send a missing line to `fill` where given (a fill_stub()'s entry),
   // which comes back to `filled`.
@@ -175,6 +176,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   static constexpr u32 kNeedsMemory = 1, kNeedsStores = 2, kNeedsCop2 = 4;
   void machine_checks(u32 needs, Xbyak::Label& fail);
   void state_checks(Xbyak::Label& fail);
+  void pc_checks(u32 first, Xbyak::Label& fail);
   void needs_checks(u32 needs, Xbyak::Label& fail);
   // Nops from getSize() up to `start` + `bytes`; throws where the code since `start` is longer.
   void pad_to(size_t start, size_t bytes, const char* what);
@@ -210,10 +212,12 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   static u32 static_target(NativeOp op, u32 pc, u32 i);
   Xbyak::Label& loop_head_routine();
   Xbyak::Label* loop_head_entry = nullptr;  // this block's loop_head_routine(), once emitted
+  bool ends_in_branch = false;  // the block's last instruction is a branch (its delay slot is not in it)
   // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
-  // block that cannot vouch for state_checks()), fn + kCleanEntry (a clean chain()).
-  static constexpr size_t kPrologueBytes = 64, kStateCheckBytes = 144;  // state checks: 140 bytes
-  static constexpr size_t kCleanEntry = kPrologueBytes + kStateCheckBytes;
+  // block that cannot vouch for pc_checks() and state_checks()), fn + kCleanEntry (a clean
+  // chain(), past both).
+  static constexpr size_t kPrologueBytes = 64, kPcCheckBytes = 32, kStateCheckBytes = 144;  // 29 and 140 at most
+  static constexpr size_t kCleanEntry = kPrologueBytes + kPcCheckBytes + kStateCheckBytes;
   void prologue(const Layout& layout);
   void epilogue();
   // block_emitter_memory.cpp

@@ -442,20 +442,6 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   eax_reg = d;
 }
 
-void Impl::settle() {
-  if (owed == 1) inc(now);
-  else if (owed > 1) add(now, int(owed));
-  owed = 0;
-}
-
-// The instructions whose native code reads or moves the time: loads and LWC2 (the load-timing
-// model, wait_load()), SWC2 and the GTE's (wait_gte()), MFHI/MFLO (the multiply's or divide's
-// end), multiplies and divides (their duration).
-bool Impl::uses_time(NativeOp op) {
-  return is_load(op) || is_cop2(op) || op == NativeOp::Mfhi || op == NativeOp::Mflo ||
-         (op >= NativeOp::Mult && op <= NativeOp::Divu);
-}
-
 // current_pc_, pc_ and next_pc_ after instruction j of a segment, which native code writes only
 // where someone outside the block can look (sync_pc() at a segment's end, before a slow or
 // fallback call, at a deadline exit): a delay slot writes its own, which depend on where the
@@ -467,73 +453,6 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
   mov(cpu32(lay.current_pc), run[j].pc);
   mov(cpu32(lay.pc), run[j].pc + 4);
   if (!is_branch(run[j].native)) mov(cpu32(lay.next_pc), run[j].pc + 8);
-}
-
-// execute_at_pc()'s load delay slot after the instruction: the previous instruction's load
-// lands unless this one wrote the register (write_reg and delayed_load clear load_reg_ for
-// `cleared`), and this one's load (`load`: eax to rt) becomes the pending one. The value landing
-// comes from r10d, which the load left there, where this instruction has not called out
-// (`r10_kept`), else from load_val_.
-// Where it is not known (a segment's first instruction), an empty slot (load_reg_ and load_val_
-// both zero, which then stay so) is checked for and the rest left to the cold code.
-// A `lazy` load (Segment::lazy) leaves load_reg_ and load_val_ zero, and where the load landing
-// was lazy (`pending_lazy`) they are zero already.
-void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy) {
-  if (pipe.dynamic) {
-    Label &pending = cold_label(), &back = cold_label();
-    cmp(cpu64(lay.load_reg), 0);  // load_reg_ and load_val_ together (Layout)
-    jne(pending, T_NEAR);
-    L(back);
-    cold.push_back([this, &pending, &back, cleared, load, lazy] {
-      Label skip;
-      L(pending);
-      mov(ecx, cpu32(lay.load_reg));
-      if (cleared != 0) {
-        cmp(ecx, cleared);
-        je(skip);
-      }
-      mov(edx, cpu32(lay.load_val));
-      mov(dword[rbx + rcx * 4 + lay.regs], edx);
-      L(skip);
-      mov(reg(0), 0);
-      if (!load || lazy) {
-        mov(cpu32(lay.load_reg), 0);
-        mov(cpu32(lay.load_val), 0);
-      }
-      jmp(back, T_NEAR);
-    });
-  } else if (pipe.after_load && pipe.load_reg != 0 && pipe.load_reg != cleared) {
-    if (r10_kept) {
-      mov(reg(pipe.load_reg), r10d);
-    } else {
-      mov(edx, cpu32(lay.load_val));
-      mov(reg(pipe.load_reg), edx);
-    }
-  }
-  if (load && !lazy) {
-    mov(cpu32(lay.load_reg), rt);
-    mov(cpu32(lay.load_val), eax);
-  } else if (pipe.after_load && !pending_lazy) {
-    mov(cpu32(lay.load_reg), 0);
-    mov(cpu32(lay.load_val), 0);
-  }
-  if (load) mov(r10d, eax);
-}
-
-// Whether an instruction after a load may land it from r10d with load_reg_ and load_val_ left
-// zero (Segment::lazy): one that calls nothing that could clobber r10 (a store's code-page call,
-// the GTE's) and reads neither field itself (LWL/LWR merge with load_val_); its ways to a call
-// write them first (pending()).
-bool Impl::lazy_lands(NativeOp op) {
-  return !is_store_or_swc2(op) && op != NativeOp::Lwc2 && !is_cop2(op) && !is_unaligned(op);
-}
-
-// Where native code leaves instruction k for its call while a lazy load (instruction k - 1) is
-// pending: load_reg_ and load_val_ as the load would have left them.
-void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
-  if (k == 0 || !seg.lazy[k - 1]) return;
-  mov(cpu32(lay.load_reg), cpu_detail::rt(run[k - 1].word));
-  mov(cpu32(lay.load_val), r10d);
 }
 
 // The block's end: RecompilerT::run()'s next loop pass. When it would call the block that

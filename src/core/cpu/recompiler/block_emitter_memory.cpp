@@ -1,9 +1,10 @@
-// Native loads, stores and HI/LO moves for compiled blocks (emitter_impl.h): CpuT::load(),
-// load_unaligned(), store(), store_unaligned(), timed_read() and wait_muldiv(), and LWC2/SWC2 for the accesses the native code makes itself, to RAM
-// (its 2 MiB through the first 8 MiB of KUSEG, KSEG0 and KSEG1, as Bus::read/write map it) and
-// to the scratchpad (KUSEG and KSEG0). Everything else about an access (an address error, user
-// mode, a debug data break armed, an isolated cache for a store, D-cache mode, memory watches,
-// I/O and the other regions) sends the instruction to its call step.
+// Native loads, stores, the load delay slot and HI/LO moves for compiled blocks (emitter_impl.h):
+// CpuT::load(), load_unaligned(), store(), store_unaligned(), timed_read() and wait_muldiv(), and
+// LWC2/SWC2 for the accesses the native code makes itself, to RAM (its 2 MiB through the first
+// 8 MiB of KUSEG, KSEG0 and KSEG1, as Bus::read/write map it) and to the scratchpad (KUSEG and
+// KSEG0). Everything else about an access (an address error, user mode, a debug data break armed,
+// an isolated cache for a store, D-cache mode, memory watches, I/O and the other regions) sends
+// the instruction to its call step.
 #include <array>
 
 #include "core/cpu/cop0.h"
@@ -206,6 +207,73 @@ static void store_unaligned(Impl& g, NativeOp op) {
   g.or_(g.eax, g.r9d);
   g.mov(g.dword[g.rdx + g.r8], g.eax);
   g.mov(g.rcx, g.r8);
+}
+
+// execute_at_pc()'s load delay slot after the instruction: the previous instruction's load
+// lands unless this one wrote the register (write_reg and delayed_load clear load_reg_ for
+// `cleared`), and this one's load (`load`: eax to rt) becomes the pending one. The value landing
+// comes from r10d, which the load left there, where this instruction has not called out
+// (`r10_kept`), else from load_val_.
+// Where it is not known (a segment's first instruction), an empty slot (load_reg_ and load_val_
+// both zero, which then stay so) is checked for and the rest left to the cold code.
+// A `lazy` load (Segment::lazy) leaves load_reg_ and load_val_ zero, and where the load landing
+// was lazy (`pending_lazy`) they are zero already.
+void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy) {
+  if (pipe.dynamic) {
+    Label &pending = cold_label(), &back = cold_label();
+    cmp(cpu64(lay.load_reg), 0);  // load_reg_ and load_val_ together (Layout)
+    jne(pending, T_NEAR);
+    L(back);
+    cold.push_back([this, &pending, &back, cleared, load, lazy] {
+      Label skip;
+      L(pending);
+      mov(ecx, cpu32(lay.load_reg));
+      if (cleared != 0) {
+        cmp(ecx, cleared);
+        je(skip);
+      }
+      mov(edx, cpu32(lay.load_val));
+      mov(dword[rbx + rcx * 4 + lay.regs], edx);
+      L(skip);
+      mov(reg(0), 0);
+      if (!load || lazy) {
+        mov(cpu32(lay.load_reg), 0);
+        mov(cpu32(lay.load_val), 0);
+      }
+      jmp(back, T_NEAR);
+    });
+  } else if (pipe.after_load && pipe.load_reg != 0 && pipe.load_reg != cleared) {
+    if (r10_kept) {
+      mov(reg(pipe.load_reg), r10d);
+    } else {
+      mov(edx, cpu32(lay.load_val));
+      mov(reg(pipe.load_reg), edx);
+    }
+  }
+  if (load && !lazy) {
+    mov(cpu32(lay.load_reg), rt);
+    mov(cpu32(lay.load_val), eax);
+  } else if (pipe.after_load && !pending_lazy) {
+    mov(cpu32(lay.load_reg), 0);
+    mov(cpu32(lay.load_val), 0);
+  }
+  if (load) mov(r10d, eax);
+}
+
+// Whether an instruction after a load may land it from r10d with load_reg_ and load_val_ left
+// zero (Segment::lazy): one that calls nothing that could clobber r10 (a store's code-page call,
+// the GTE's) and reads neither field itself (LWL/LWR merge with load_val_); its ways to a call
+// write them first (pending()).
+bool Impl::lazy_lands(NativeOp op) {
+  return !is_store_or_swc2(op) && op != NativeOp::Lwc2 && !is_cop2(op) && !is_unaligned(op);
+}
+
+// Where native code leaves instruction k for its call while a lazy load (instruction k - 1) is
+// pending: load_reg_ and load_val_ as the load would have left them.
+void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
+  if (k == 0 || !seg.lazy[k - 1]) return;
+  mov(cpu32(lay.load_reg), cpu_detail::rt(run[k - 1].word));
+  mov(cpu32(lay.load_val), r10d);
 }
 
 // CpuT::store() past its checks: Bus::write() to RAM, with CodePages::on_ram_write() called

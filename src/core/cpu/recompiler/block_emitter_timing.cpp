@@ -1,6 +1,7 @@
 // Time in compiled blocks (emitter_impl.h): the deadline's budget, which lets a native run check
-// the deadline once instead of before each instruction, and the load shadow's check and wait
-// (CpuT::shadow_stall(), the load-timing model at CpuT::kLoadIssue).
+// the deadline once instead of before each instruction, the cycles a run owes its time register
+// (Impl::owed), and the load shadow's check and wait (CpuT::shadow_stall(), the load-timing model
+// at CpuT::kLoadIssue).
 #include <algorithm>
 
 #include "core/cpu/decode.h"
@@ -55,6 +56,21 @@ void Impl::budget_check(u32 budget, Label& fail) {
     cmp(rax, deadline);
   }
   jae(fail, T_NEAR);
+}
+
+// Impl::owed: r14 catches up with the time.
+void Impl::settle() {
+  if (owed == 1) inc(now);
+  else if (owed > 1) add(now, int(owed));
+  owed = 0;
+}
+
+// The instructions whose native code reads or moves the time: loads and LWC2 (the load-timing
+// model, wait_load()), SWC2 and the GTE's (wait_gte()), MFHI/MFLO (the multiply's or divide's
+// end), multiplies and divides (their duration).
+bool Impl::uses_time(NativeOp op) {
+  return is_load(op) || is_cop2(op) || op == NativeOp::Mfhi || op == NativeOp::Mflo ||
+         (op >= NativeOp::Mult && op <= NativeOp::Divu);
 }
 
 // The registers instruction s reads that a load may shadow (none but r0 is never shadowed).

@@ -1,9 +1,9 @@
 // The code generator behind BlockEmitter (block_emitter.h), shared by its sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
 // operations and branches), block_emitter_icache.cpp (i-cache line checks and fills),
-// block_emitter_memory.cpp (loads, stores, HI/LO moves), block_emitter_muldiv.cpp (multiplies
-// and divides), block_emitter_cop2.cpp (GTE moves and commands) and block_emitter_timing.cpp (the
-// deadline's budget, the load shadow). Only they include this header (and with it xbyak).
+// block_emitter_memory.cpp (loads, stores, the load delay slot, HI/LO moves),
+// block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
+// commands) and block_emitter_timing.cpp (the deadline's budget, the cycles owed, the load shadow). Only they include this header (and with it xbyak).
 // Registers while a block runs:
 // rbx = the context (the CPU) plus Layout::bias, r12 = the i-cache's tags (its words lie at a
 // fixed distance from them), r10d = the value of the load the previous instruction made
@@ -131,8 +131,6 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // it (a load, a wait, a shadow check that compares the time, the segment's end); the ways out
   // of a segment add what is owed there (Segment::time_in) and a call resuming it takes it off.
   u32 owed = 0;
-  void settle();
-  static bool uses_time(NativeOp op);
   void flush();
   void reload();
   // A call to a function that is handed neither the CPU nor the scheduler (the GTE's, the code
@@ -195,9 +193,6 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter.cpp
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);
-  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy);
-  static bool lazy_lands(NativeOp op);
-  void pending(std::span<const Step> run, size_t k, const Segment& seg);
   void sync_pc(std::span<const Step> run, size_t j);
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
@@ -228,12 +223,17 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void store(NativeOp op, u32 i);
   void lwc2(u32 i);
   void hilo(NativeOp op, u32 i);
+  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy);
+  static bool lazy_lands(NativeOp op);
+  void pending(std::span<const Step> run, size_t k, const Segment& seg);
   // block_emitter_muldiv.cpp
   void muldiv(NativeOp op, u32 i);
   // block_emitter_cop2.cpp
   void wait_gte();
   void cop2(NativeOp op, u32 i);
   // block_emitter_timing.cpp
+  void settle();
+  static bool uses_time(NativeOp op);
   u32 most_cycles(std::span<const Step> run, size_t j) const;
   u32 longest_wait(const Step& s) const;
   void budget_check(u32 budget, Xbyak::Label& fail);

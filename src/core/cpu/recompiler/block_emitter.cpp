@@ -256,7 +256,8 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, std::opt
       break;
     }
   }
-  if (checks == Checks::all || (checks == Checks::routine && is_branch(run[0].native))) pc_checks(first, fail);
+  if (checks == Checks::all || (checks == Checks::routine && is_branch(run[0].native)))
+    pc_checks(first, fail);
   Label no_loop_head;
   mov(eax, cpu32(lay.loop_head));  // run() would hand a loop head in the segment to IdleSkip
   sub(eax, first);
@@ -434,10 +435,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   else if (is_cop2(op)) cop2(op, s.word);
   else alu(op, s.word);
   if (d != 0) mov(reg(d), eax);
-  // Only a store (into compiled code), LWC2/SWC2 and the GTE's instructions call out of the main
-  // path, which may change r10.
-  const bool r10_kept = !is_store_or_swc2(op) && op != NativeOp::Lwc2 && !is_cop2(op);
-  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), r10_kept, seg.lazy[k],
+  commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), keeps_r10(op), seg.lazy[k],
          k > 0 && seg.lazy[k - 1]);  // leaves eax
   eax_reg = d;
 }

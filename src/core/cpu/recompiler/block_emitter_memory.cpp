@@ -218,7 +218,8 @@ static void store_unaligned(Impl& g, NativeOp op) {
 // both zero, which then stay so) is checked for and the rest left to the cold code.
 // A `lazy` load (Segment::lazy) leaves load_reg_ and load_val_ zero, and where the load landing
 // was lazy (`pending_lazy`) they are zero already.
-void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy) {
+void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy,
+                  bool pending_lazy) {
   if (pipe.dynamic) {
     Label &pending = cold_label(), &back = cold_label();
     cmp(cpu64(lay.load_reg), 0);  // load_reg_ and load_val_ together (Layout)
@@ -261,12 +262,9 @@ void Impl::commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kep
 }
 
 // Whether an instruction after a load may land it from r10d with load_reg_ and load_val_ left
-// zero (Segment::lazy): one that calls nothing that could clobber r10 (a store's code-page call,
-// the GTE's) and reads neither field itself (LWL/LWR merge with load_val_); its ways to a call
-// write them first (pending()).
-bool Impl::lazy_lands(NativeOp op) {
-  return !is_store_or_swc2(op) && op != NativeOp::Lwc2 && !is_cop2(op) && !is_unaligned(op);
-}
+// zero (Segment::lazy): one that leaves r10 alone (keeps_r10()) and reads neither field itself
+// (LWL/LWR merge with load_val_); its ways to a call write them first (pending()).
+bool Impl::lazy_lands(NativeOp op) { return keeps_r10(op) && !is_unaligned(op); }
 
 // Where native code leaves instruction k for its call while a lazy load (instruction k - 1) is
 // pending: load_reg_ and load_val_ as the load would have left them.

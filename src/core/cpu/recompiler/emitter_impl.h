@@ -3,7 +3,8 @@
 // operations and branches), block_emitter_icache.cpp (i-cache line checks and fills),
 // block_emitter_memory.cpp (loads, stores, the load delay slot, HI/LO moves),
 // block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
-// commands) and block_emitter_timing.cpp (the deadline's budget, the cycles owed, the load shadow). Only they include this header (and with it xbyak).
+// commands) and block_emitter_timing.cpp (the deadline's budget, the cycles owed, the load
+// shadow). Only they include this header (and with it xbyak).
 // Registers while a block runs:
 // rbx = the context (the CPU) plus Layout::bias, r12 = the i-cache's tags (its words lie at a
 // fixed distance from them), r10d = the value of the load the previous instruction made
@@ -145,6 +146,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
     return op == NativeOp::Lwl || op == NativeOp::Lwr || op == NativeOp::Swl || op == NativeOp::Swr;
   }
   static bool is_cop2(NativeOp op) { return op >= NativeOp::Mfc2 && op <= NativeOp::Swc2; }
+  // Whether the instruction's native code leaves r10 alone: only a store (into compiled code),
+  // LWC2/SWC2 and the GTE's instructions call out of the main path, which may change it.
+  static bool keeps_r10(NativeOp op) { return !is_store_or_swc2(op) && op != NativeOp::Lwc2 && !is_cop2(op); }
   // The instructions that access memory (address_checks()).
   static bool is_memory(NativeOp op) {
     return is_load(op) || is_store_or_swc2(op) || op == NativeOp::Lwc2;
@@ -207,11 +211,12 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   static u32 static_target(NativeOp op, u32 pc, u32 i);
   Xbyak::Label& loop_head_routine();
   Xbyak::Label* loop_head_entry = nullptr;  // this block's loop_head_routine(), once emitted
-  bool ends_in_branch = false;  // the block's last instruction is a branch (its delay slot is not in it)
+  bool ends_in_branch = false;  // the block's last instruction is a branch (without its delay slot)
   // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
   // block that cannot vouch for pc_checks() and state_checks()), fn + kCleanEntry (a clean
   // chain(), past both).
-  static constexpr size_t kPrologueBytes = 64, kPcCheckBytes = 32, kStateCheckBytes = 144;  // 29 and 140 at most
+  // The pc checks take at most 29 bytes and the state checks 140.
+  static constexpr size_t kPrologueBytes = 64, kPcCheckBytes = 32, kStateCheckBytes = 144;
   static constexpr size_t kCleanEntry = kPrologueBytes + kPcCheckBytes + kStateCheckBytes;
   void prologue(const Layout& layout);
   void epilogue();
@@ -223,7 +228,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void store(NativeOp op, u32 i);
   void lwc2(u32 i);
   void hilo(NativeOp op, u32 i);
-  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy, bool pending_lazy);
+  void commit(const Pipe& pipe, u32 cleared, bool load, u32 rt, bool r10_kept, bool lazy,
+              bool pending_lazy);
   static bool lazy_lands(NativeOp op);
   void pending(std::span<const Step> run, size_t k, const Segment& seg);
   // block_emitter_muldiv.cpp

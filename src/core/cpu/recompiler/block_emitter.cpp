@@ -433,7 +433,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   else if (op >= NativeOp::Mfhi && op <= NativeOp::Mtlo) hilo(op, s.word);
   else if (op >= NativeOp::Mult && op <= NativeOp::Divu) muldiv(op, s.word);
   else if (is_cop2(op)) cop2(op, s.word);
-  else alu(op, s.word);
+  else if (d != 0) alu(op, s.word);  // an ALU operation into r0 (a NOP) changes nothing
   if (d != 0) mov(reg(d), eax);
   commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), keeps_r10(op), seg.lazy[k],
          k > 0 && seg.lazy[k - 1]);  // leaves eax

@@ -114,6 +114,10 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
   if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
     shadow_known(s, seg.pipe[k], seg.shadowed[k], k + 1 == seg.count);
   } else if (seg.shadow[k] == Shadow::check) {
+    // Where s reads no register a load may shadow, the check could only clear shadow_reg_, which
+    // only the segment's last instruction must do (the reasoning of shadow_known(), which holds
+    // for a shadow left by an earlier block just as for the segment's own load).
+    if (shadowable_reads(s).empty() && k + 1 != seg.count) return;
     seg.stall_owed[k] = owed;
     shadow_check(s, seg.stall[k]);
     L(seg.stall_back[k]);

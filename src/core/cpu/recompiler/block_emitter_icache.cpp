@@ -19,14 +19,23 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
   u32 need = 0;
   for (size_t n = 0; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ICache::word(run[n].pc);
   const Xbyak::Address tag = icache_tag(line);
-  if (need == 0xF) {  // a tag is the address bits and the valid bits, nothing else
-    cmp(tag, tag_bits | 0xF);
-  } else {
-    mov(eax, tag);
-    xor_(eax, tag_bits | need);
-    test(eax, ICache::kTagMask | need);
+  Label& miss = fill ? *fill : fail;
+  cmp(tag, tag_bits | 0xF);  // a tag is the address bits and the valid bits, nothing else
+  if (need == 0xF) {
+    jne(miss, T_NEAR);
+  } else {  // mostly the whole line is valid; the words needed alone are tested off the main path
+    Label &partial = cold_label(), &hit = cold_label();
+    jne(partial, T_NEAR);
+    L(hit);
+    cold.push_back([this, tag, tag_bits, need, &partial, &hit, &miss] {
+      L(partial);
+      mov(eax, tag);
+      xor_(eax, tag_bits | need);
+      test(eax, ICache::kTagMask | need);
+      jnz(miss, T_NEAR);
+      jmp(hit, T_NEAR);
+    });
   }
-  jnz(fill ? *fill : fail, T_NEAR);
   line_words(run, fail, icache_words(line));
   if (filled) L(*filled);
 }

@@ -300,9 +300,7 @@ void Impl::machine_checks(u32 needs, Label& fail) {
 // Always the same code (fixed-size encodings and near jumps), padded to kStateCheckBytes at a
 // block's entry.
 void Impl::state_checks(Label& fail) {
-  cmp(byte[rbx + lay.stop], 0);
-  jne(fail, T_NEAR);
-  cmp(byte[rbx + lay.hook_armed], 0);
+  cmp(word[rbx + lay.stop], 0);  // stop_ and hook_armed_ together (Layout)
   jne(fail, T_NEAR);
   cmp(now, deadline);
   jae(fail, T_NEAR);
@@ -473,14 +471,11 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget) {
   clean = clean && !ends_in_branch;  // a branch's delay slot is the next block's (pc_checks())
   Label back, no_loop_head;
-  cmp(byte[rbx + lay.stop], 0);
+  if (clean) cmp(word[rbx + lay.stop], 0);  // stop_ and hook_armed_ together (Layout)
+  else cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
   cmp(now, deadline);
   jae(back, T_NEAR);
-  if (clean) {
-    cmp(byte[rbx + lay.hook_armed], 0);
-    jne(back, T_NEAR);
-  }
   mov(eax, cpu32(lay.pc));
   cmp(eax, cpu32(lay.loop_head));
   jne(no_loop_head);

@@ -55,7 +55,8 @@ class BlockEmitter {
     // for zero as one 8-byte word).
     int regs, pc, next_pc, current_pc, load_reg, load_val, new_load_reg, new_load_val, shadow_reg;
     int loop_head, sr, cause, dcic, hook_pc, extra_hook_pc;
-    int in_delay_slot, next_in_delay, stop, hook_armed;  // bool
+    // bool; hook_armed lies a byte past stop (both are tested for zero as one 2-byte word).
+    int in_delay_slot, next_in_delay, stop, hook_armed;
     int hi, lo;
     int instructions, load_done_at, muldiv_ready_at, gte_ready_at;  // u64
     int idle_skip, hooks;                                // pointers

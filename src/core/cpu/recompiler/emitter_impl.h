@@ -215,8 +215,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
   // block that cannot vouch for pc_checks() and state_checks()), fn + kCleanEntry (a clean
   // chain(), past both).
-  // The pc checks take at most 29 bytes and the state checks 140.
-  static constexpr size_t kPrologueBytes = 64, kPcCheckBytes = 32, kStateCheckBytes = 144;
+  // The pc checks take at most 29 bytes and the state checks 131.
+  static constexpr size_t kPrologueBytes = 64, kPcCheckBytes = 32, kStateCheckBytes = 136;
   static constexpr size_t kCleanEntry = kPrologueBytes + kPcCheckBytes + kStateCheckBytes;
   void prologue(const Layout& layout);
   void epilogue();

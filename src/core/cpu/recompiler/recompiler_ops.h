@@ -224,6 +224,7 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.dcic = cpu_at(&c.cop0_.dcic);
   l.stop = cpu_at(&c.stop_);
   l.hook_armed = cpu_at(&c.hook_armed_);
+  if (l.hook_armed != l.stop + 1) throw std::logic_error("recompiler: hook_armed_ does not follow stop_");
   l.idle_skip = cpu_at(&c.idle_skip_);
   const IdleSkip::BackoffCells backoff = IdleSkip::backoff_cells();
   l.idle_last_head = backoff.last_head;

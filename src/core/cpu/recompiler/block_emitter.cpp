@@ -132,89 +132,6 @@ void Impl::alu(NativeOp op, u32 i) {
   }
 }
 
-// CpuT::arm_hook() for a target known now / in ecx.
-void Impl::arm_hook_static(u32 target) {
-  Label skip;
-  const u32 p = target & 0x1FFFFFFF;
-  if (p != 0xA0 && p != 0xB0 && p != 0xC0) {
-    cmp(cpu32(lay.extra_hook_pc), target);
-    jne(skip);
-  }
-  cmp(qword[rbx + lay.hooks], 0);
-  je(skip);
-  mov(byte[rbx + lay.hook_armed], 1);
-  mov(cpu32(lay.hook_pc), target);
-  L(skip);
-}
-
-void Impl::arm_hook_ecx() {
-  Label skip, arm;
-  cmp(qword[rbx + lay.hooks], 0);
-  je(skip, T_NEAR);
-  mov(edx, ecx);
-  and_(edx, 0x1FFFFFFF);
-  for (u32 v : {0xA0u, 0xB0u, 0xC0u}) {
-    cmp(edx, v);
-    je(arm);
-  }
-  cmp(ecx, cpu32(lay.extra_hook_pc));
-  jne(skip);
-  L(arm);
-  mov(byte[rbx + lay.hook_armed], 1);
-  mov(cpu32(lay.hook_pc), ecx);
-  L(skip);
-}
-
-// Where a branch or J/JAL at pc goes when taken (JR and JALR: nowhere known now).
-u32 Impl::static_target(NativeOp op, u32 pc, u32 i) {
-  if (op == NativeOp::J || op == NativeOp::Jal) return ((pc + 4) & 0xF0000000) | ((i & 0x03FFFFFF) << 2);
-  return pc + 4 + (cpu_detail::simm(i) << 2);
-}
-
-// CpuT::execute() for a branch or jump at pc (not in a delay slot, so pc_ = pc + 4 and
-// next_pc_ = pc + 8 now): branch() / loop_branch(), the link (eax) through write_reg, which
-// the BcondZ links make whether or not the branch is taken, after reading rs.
-void Impl::branch(NativeOp op, u32 pc, u32 i) {
-  using namespace cpu_detail;
-  Label not_taken;
-  const u32 target = static_target(op, pc, i);
-  const auto with_rs_zero = [&] { with_reg(rs(i), [&](const Xbyak::Operand& o) { cmp(o, 0); }); };
-  switch (op) {
-    case NativeOp::Beq: case NativeOp::Bne:  // compared from whichever eax holds
-      if (in_eax(rt(i))) {
-        with_reg(rs(i), [&](const Xbyak::Operand& o) { cmp(eax, o); });
-      } else {
-        read_eax(rs(i));
-        cmp(eax, reg(rt(i)));
-      }
-      if (op == NativeOp::Beq) jne(not_taken, T_NEAR);
-      else je(not_taken, T_NEAR);
-      break;
-    case NativeOp::Blez: with_rs_zero(); jg(not_taken, T_NEAR); break;
-    case NativeOp::Bgtz: with_rs_zero(); jle(not_taken, T_NEAR); break;
-    case NativeOp::Bltz: with_rs_zero(); jge(not_taken, T_NEAR); break;
-    case NativeOp::Bgez: with_rs_zero(); jl(not_taken, T_NEAR); break;
-    case NativeOp::Bltzal: with_rs_zero(); mov(eax, pc + 8); jge(not_taken, T_NEAR); break;  // mov keeps the flags
-    case NativeOp::Bgezal: with_rs_zero(); mov(eax, pc + 8); jl(not_taken, T_NEAR); break;
-    case NativeOp::Jal: mov(eax, pc + 8); break;  // the link, written by the caller
-    case NativeOp::Jr: case NativeOp::Jalr:
-      with_reg(rs(i), [&](const Xbyak::Operand& o) { mov(ecx, o); });  // the target, read before the link is written
-      mov(eax, pc + 8);
-      mov(cpu32(lay.next_pc), ecx);
-      arm_hook_ecx();
-      break;
-    default: break;
-  }
-  if (op != NativeOp::Jr && op != NativeOp::Jalr) {
-    mov(cpu32(lay.next_pc), target);
-    // loop_branch(): all but JAL; a taken one a little backwards names a loop head.
-    if (op != NativeOp::Jal && target <= pc && pc - target < 256) mov(cpu32(lay.loop_head), target);
-    arm_hook_static(target);
-  }
-  L(not_taken);
-  mov(byte[rbx + lay.next_in_delay], 1);
-}
-
 // Whether the segment may run as native code (else to its slow path): checked once for the whole
 // run because its instructions change none of it. They write general registers, HI/LO, the GTE,
 // the pc, the pipeline, time, and RAM or the scratchpad (never I/O, which a load or store leaves
@@ -407,24 +324,28 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   if (after_branch) {
     mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
     mov(byte[rbx + lay.in_delay_slot], 1);
-    mov(byte[rbx + lay.next_in_delay], 0);
+    if (!delay_dest) mov(byte[rbx + lay.next_in_delay], 0);  // a split branch left it so
   } else if (k == 0) {
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
   ++owed;  // the instruction's cycle
   shadow(s, k, seg);
   if (uses_time(op)) settle();
-  if (after_branch) {
+  const bool split = seg.split && k + 2 == seg.count;  // a split branch (Segment::split)
+  if (after_branch && delay_dest) {
+    mov(cpu32(lay.pc), *delay_dest);
+    mov(cpu32(lay.next_pc), *delay_dest + 4);
+  } else if (after_branch) {
     mov(eax, cpu32(lay.next_pc));
     mov(cpu32(lay.pc), eax);
     add(eax, 4);
     mov(cpu32(lay.next_pc), eax);
     eax_reg = 0;
-  } else if (is_branch(op)) {
+  } else if (is_branch(op) && !split) {
     mov(cpu32(lay.next_pc), s.pc + 8);  // a branch not taken leaves it so; its delay slot reads it
   }
   const u32 d = dest(op, s.word);
-  if (is_branch(op)) branch(op, s.pc, s.word);
+  if (is_branch(op)) branch(op, s.pc, s.word, split);
   else if (is_load(op)) load(op, s.word, pipe);
   else if (is_store_or_swc2(op)) store(op, s.word);
   else if (op == NativeOp::Lwc2) lwc2(s.word);
@@ -468,7 +389,9 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 // through it changes nothing the guard checked but what this chain checks (the time, a stop, a
 // hook, the loop head), and no i-cache line the block uses (a fill stub refills a line with the
 // words compiled; stores leave the i-cache alone).
-void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget) {
+// Where the pc is known now (`target`, after a split branch's delay slot: split_end()), the
+// chain compares and looks up that pc without reading pc_.
+void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::optional<u32> target) {
   clean = clean && !ends_in_branch;  // a branch's delay slot is the next block's (pc_checks())
   Label back, no_loop_head;
   if (clean) cmp(word[rbx + lay.stop], 0);  // stop_ and hook_armed_ together (Layout)
@@ -476,19 +399,28 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget) {
   jne(back, T_NEAR);
   cmp(now, deadline);
   jae(back, T_NEAR);
-  mov(eax, cpu32(lay.pc));
-  cmp(eax, cpu32(lay.loop_head));
-  jne(no_loop_head);
+  if (target) {
+    cmp(cpu32(lay.loop_head), *target);
+    jne(no_loop_head);
+    mov(eax, *target);  // for loop_head_routine()
+  } else {
+    mov(eax, cpu32(lay.pc));
+    cmp(eax, cpu32(lay.loop_head));
+    jne(no_loop_head);
+  }
   call(loop_head_routine());
   jnz(back, T_NEAR);
   L(no_loop_head);
   mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
   cmp(byte[rcx], 0);
   jne(back, T_NEAR);
-  if (clean && self_loop) {  // this block is find()'s for its own pc while no code page is written
+  // This block is find()'s for its own pc while no code page is written.
+  if (clean && self_loop && (!target || *target == block_pc)) {
     Label other;
-    cmp(eax, block_pc);
-    jne(other);
+    if (!target) {
+      cmp(eax, block_pc);
+      jne(other);
+    }
     if (loop) {  // the segment's guard's deadline budget, then past the guard
       Label guarded;
       cmp(byte[rsp], 0);
@@ -500,13 +432,22 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget) {
     jmp(block_entry + kCleanEntry, T_NEAR);
     L(other);
   }
-  mov(ecx, eax);
-  and_(ecx, (lay.recent_count - 1) << 2);
-  shl(ecx, 2);  // entry pc / 4 mod recent_count, of 16 bytes: {u32 pc; BlockFn fn at 8}
-  mov(rdx, reinterpret_cast<u64>(lay.recent_blocks));
-  cmp(dword[rdx + rcx], eax);
-  jne(back, T_NEAR);
-  mov(rax, qword[rdx + rcx + 8]);
+  // The recent table's entry for the pc (pc / 4 mod recent_count), of 16 bytes: {u32 pc; BlockFn
+  // fn at 8}.
+  if (target) {
+    mov(rdx, reinterpret_cast<u64>(lay.recent_blocks) + ((*target >> 2) & (lay.recent_count - 1)) * 16);
+    cmp(dword[rdx], *target);
+    jne(back, T_NEAR);
+    mov(rax, qword[rdx + 8]);
+  } else {
+    mov(ecx, eax);
+    and_(ecx, (lay.recent_count - 1) << 2);
+    shl(ecx, 2);
+    mov(rdx, reinterpret_cast<u64>(lay.recent_blocks));
+    cmp(dword[rdx + rcx], eax);
+    jne(back, T_NEAR);
+    mov(rax, qword[rdx + rcx + 8]);
+  }
   add(rax, clean ? kCleanEntry : kPrologueBytes);
   jmp(rax);
   L(back);
@@ -624,7 +565,9 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
   for (size_t k = 0; k < seg.count; ++k) {
     L(seg.slow[k]);
     if (k > 0) sync_pc(run, k - 1);  // from native code (or the call before: the same values)
-    if (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count) {
+    // A split branch has no native delay slot to resume (split_end()): on into its slow path.
+    const bool split_branch = seg.split && k + 2 == seg.count;
+    if (!split_branch && (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count)) {
       call_and_resume(run, k, seg);
     } else {
       call_step(run[k]);  // on into slow[k + 1]
@@ -734,16 +677,21 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     const std::optional<u32> budget = seg.count > 1 ? std::optional<u32>(seg.budget[0]) : std::nullopt;
     g.guard(run, seg.slow[0], seg.first == 0 ? Impl::Checks::entry : Impl::Checks::all, budget,
             g.fill_entry(run[0].pc, seg, 0), &seg.filled[0]);
-    for (size_t k = 0; k < seg.count; ++k) {
+    seg.split = i == steps.size() && g.splits(run, seg);
+    for (size_t k = 0; k < seg.count - (seg.split ? 1 : 0); ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);
       g.native(run.subspan(k), k, after_branch, seg);
     }
-    g.settle();
-    g.add(g.instructions, int(seg.count));
-    g.sync_pc(run, seg.count - 1);
-    if (i == steps.size())  // the block's native end
-      g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, budget);
+    if (seg.split) {
+      g.split_end(run, seg, budget);
+    } else {
+      g.settle();
+      g.add(g.instructions, int(seg.count));
+      g.sync_pc(run, seg.count - 1);
+      if (i == steps.size())  // the block's native end
+        g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, budget);
+    }
     g.L(seg.end);
   }
   g.L(done);

@@ -120,7 +120,7 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
     if (shadowable_reads(s).empty() && k + 1 != seg.count) return;
     seg.stall_owed[k] = owed;
     shadow_check(s, seg.stall[k]);
-    L(seg.stall_back[k]);
+    if (!shadowable_reads(s).empty()) L(seg.stall_back[k]);  // else no stall_stub() comes back
   } else if (seg.shadow[k] == Shadow::clear) {
     mov(cpu32(lay.shadow_reg), 0);
   }

@@ -1,6 +1,7 @@
 // The code generator behind BlockEmitter (block_emitter.h), shared by its sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
-// operations and branches), block_emitter_icache.cpp (i-cache line checks and fills),
+// operations), block_emitter_branch.cpp (branches and jumps), block_emitter_icache.cpp (i-cache
+// line checks and fills),
 // block_emitter_memory.cpp (loads, stores, the load delay slot, HI/LO moves),
 // block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
 // commands) and block_emitter_timing.cpp (the deadline's budget, the cycles owed, the load
@@ -15,6 +16,7 @@
 // Within a native segment rbp stays the count at the segment's start: instruction k adds nothing,
 // and every way out of the segment adds the k instructions run (its end, a slow or fallback call).
 // Likewise r14 runs behind the time by the cycles the emitter knows are owed (Impl::owed).
+// r8b = whether a split branch is taken, from the branch to its delay slot's end (split_end()).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -79,6 +81,9 @@ struct Segment {
   // eax_at[k]: the general register whose value eax holds where instruction k starts (0: none),
   // which a call resuming there (call_and_resume()) loads into eax.
   std::vector<u32> eax_at;
+  // The block's last segment, ending in a branch whose target is known now and a delay slot
+  // emitted once for each way (splits(), split_end()); the delay slot has no resume[] entry.
+  bool split = false;
 };
 
 struct BlockEmitter::Impl : Xbyak::CodeGenerator {
@@ -162,9 +167,17 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Xbyak::Label& step_routine();
   Xbyak::Label* step_entry = nullptr;  // this block's step_routine(), once emitted
   void alu(NativeOp op, u32 i);
+  // block_emitter_branch.cpp
   void arm_hook_static(u32 target);
   void arm_hook_ecx();
-  void branch(NativeOp op, u32 pc, u32 i);
+  void branch(NativeOp op, u32 pc, u32 i, bool split);
+  void taken(NativeOp op, u32 pc, u32 target);
+  static u32 static_target(NativeOp op, u32 pc, u32 i);
+  static bool splits(std::span<const Step> run, const Segment& seg);
+  void split_end(std::span<const Step> run, Segment& seg, std::optional<u32> budget);
+  // Where the delay slot split_end() is emitting goes (pc_ after it), else empty.
+  std::optional<u32> delay_dest;
+  // block_emitter.cpp
   // How a guard makes machine_checks(): inline (`all`), by calling machine_routine() (`routine`:
   // re-guards after slow calls, shorter code, compiled faster), or as the block's entry (`entry`:
   // its pc_checks() and state_checks() padded to kPcCheckBytes and kStateCheckBytes, where a
@@ -201,14 +214,14 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
-  void chain(bool clean, Xbyak::Label* loop = nullptr, std::optional<u32> loop_budget = std::nullopt);
+  void chain(bool clean, Xbyak::Label* loop = nullptr, std::optional<u32> loop_budget = std::nullopt,
+             std::optional<u32> target = std::nullopt);
   // The block being emitted: its pc, its entry, and whether a branch of it goes back there (a
   // clean chain() then tries its own clean entry first).
   u32 block_pc = 0;
   const Xbyak::uint8* block_entry = nullptr;
   bool self_loop = false;
   bool loops_natively = false;  // self_loop, and every step native: one segment
-  static u32 static_target(NativeOp op, u32 pc, u32 i);
   Xbyak::Label& loop_head_routine();
   Xbyak::Label* loop_head_entry = nullptr;  // this block's loop_head_routine(), once emitted
   bool ends_in_branch = false;  // the block's last instruction is a branch (without its delay slot)

@@ -1,0 +1,172 @@
+// Branches and jumps in compiled blocks (emitter_impl.h): CpuT::execute()'s branch() for native
+// code, the hooks a jump arms, and the split end of a segment whose last two instructions are a
+// branch to a target known now and a delay slot that cannot leave native code (Segment::split).
+#include "core/cpu/decode.h"
+#include "core/cpu/recompiler/emitter_impl.h"
+
+namespace psx {
+
+using Xbyak::Label;
+using Impl = BlockEmitter::Impl;
+
+// CpuT::arm_hook() for a target known now / in ecx.
+void Impl::arm_hook_static(u32 target) {
+  Label skip;
+  const u32 p = target & 0x1FFFFFFF;
+  if (p != 0xA0 && p != 0xB0 && p != 0xC0) {
+    cmp(cpu32(lay.extra_hook_pc), target);
+    jne(skip);
+  }
+  cmp(qword[rbx + lay.hooks], 0);
+  je(skip);
+  mov(byte[rbx + lay.hook_armed], 1);
+  mov(cpu32(lay.hook_pc), target);
+  L(skip);
+}
+
+void Impl::arm_hook_ecx() {
+  Label skip, arm;
+  cmp(qword[rbx + lay.hooks], 0);
+  je(skip, T_NEAR);
+  mov(edx, ecx);
+  and_(edx, 0x1FFFFFFF);
+  for (u32 v : {0xA0u, 0xB0u, 0xC0u}) {
+    cmp(edx, v);
+    je(arm);
+  }
+  cmp(ecx, cpu32(lay.extra_hook_pc));
+  jne(skip);
+  L(arm);
+  mov(byte[rbx + lay.hook_armed], 1);
+  mov(cpu32(lay.hook_pc), ecx);
+  L(skip);
+}
+
+// Where a branch or J/JAL at pc goes when taken (JR and JALR: nowhere known now).
+u32 Impl::static_target(NativeOp op, u32 pc, u32 i) {
+  if (op == NativeOp::J || op == NativeOp::Jal) return ((pc + 4) & 0xF0000000) | ((i & 0x03FFFFFF) << 2);
+  return pc + 4 + (cpu_detail::simm(i) << 2);
+}
+
+// CpuT::execute() for a branch or jump at pc (not in a delay slot, so pc_ = pc + 4 and
+// next_pc_ = pc + 8 now): branch() / loop_branch(), the link (eax) through write_reg, which
+// the BcondZ links make whether or not the branch is taken, after reading rs.
+// A split branch (Segment::split) only sets r8b to whether it is taken: split_end() makes the
+// rest on each way.
+void Impl::branch(NativeOp op, u32 pc, u32 i, bool split) {
+  using namespace cpu_detail;
+  Label not_taken;
+  const u32 target = static_target(op, pc, i);
+  const auto with_rs_zero = [&] { with_reg(rs(i), [&](const Xbyak::Operand& o) { cmp(o, 0); }); };
+  // Taken when the flags say equal, not equal, less, greater or equal, less or equal, greater.
+  enum Cond { e, ne, l, ge, le, g };
+  const auto taken_if = [&](Cond c) {
+    if (split) {
+      switch (c) {
+        case e: sete(r8b); break;
+        case ne: setne(r8b); break;
+        case l: setl(r8b); break;
+        case ge: setge(r8b); break;
+        case le: setle(r8b); break;
+        case g: setg(r8b); break;
+      }
+      return;
+    }
+    switch (c) {
+      case e: jne(not_taken, T_NEAR); break;
+      case ne: je(not_taken, T_NEAR); break;
+      case l: jge(not_taken, T_NEAR); break;
+      case ge: jl(not_taken, T_NEAR); break;
+      case le: jg(not_taken, T_NEAR); break;
+      case g: jle(not_taken, T_NEAR); break;
+    }
+  };
+  switch (op) {
+    case NativeOp::Beq: case NativeOp::Bne:  // compared from whichever eax holds
+      if (in_eax(rt(i))) {
+        with_reg(rs(i), [&](const Xbyak::Operand& o) { cmp(eax, o); });
+      } else {
+        read_eax(rs(i));
+        cmp(eax, reg(rt(i)));
+      }
+      taken_if(op == NativeOp::Beq ? e : ne);
+      break;
+    case NativeOp::Blez: with_rs_zero(); taken_if(le); break;
+    case NativeOp::Bgtz: with_rs_zero(); taken_if(g); break;
+    case NativeOp::Bltz: with_rs_zero(); taken_if(l); break;
+    case NativeOp::Bgez: with_rs_zero(); taken_if(ge); break;
+    case NativeOp::Bltzal: with_rs_zero(); mov(eax, pc + 8); taken_if(l); break;  // mov keeps the flags
+    case NativeOp::Bgezal: with_rs_zero(); mov(eax, pc + 8); taken_if(ge); break;
+    case NativeOp::Jal: mov(eax, pc + 8); break;  // the link, written by the caller
+    case NativeOp::Jr: case NativeOp::Jalr:
+      with_reg(rs(i), [&](const Xbyak::Operand& o) { mov(ecx, o); });  // the target, read before the link is written
+      mov(eax, pc + 8);
+      mov(cpu32(lay.next_pc), ecx);
+      arm_hook_ecx();
+      break;
+    default: break;
+  }
+  if (split) return;
+  if (op != NativeOp::Jr && op != NativeOp::Jalr) {
+    mov(cpu32(lay.next_pc), target);
+    taken(op, pc, target);
+  }
+  L(not_taken);
+  mov(byte[rbx + lay.next_in_delay], 1);
+}
+
+// What a branch or J/JAL at pc does when taken to a target known now, besides next_pc_: CpuT's
+// loop_branch() (all but JAL: a taken one a little backwards names a loop head) and arm_hook().
+void Impl::taken(NativeOp op, u32 pc, u32 target) {
+  if (op != NativeOp::Jal && target <= pc && pc - target < 256) mov(cpu32(lay.loop_head), target);
+  arm_hook_static(target);
+}
+
+// Whether the block's last native segment splits at its branch (Segment::split): the segment
+// ends in a branch or J/JAL, whose target is known now, and its delay slot, an ALU operation that
+// starts no i-cache line and waits for no load (no line check, no stall stub): so nothing between
+// the branch and the end of the segment leaves native code, and each way can run the delay slot
+// knowing where it goes.
+bool Impl::splits(std::span<const Step> run, const Segment& seg) {
+  if (seg.count < 2) return false;
+  const size_t k = seg.count - 1;
+  const Step &b = run[k - 1], &d = run[k];
+  if (!is_branch(b.native) || b.native == NativeOp::Jr || b.native == NativeOp::Jalr) return false;
+  if (d.native < NativeOp::Addiu || d.native > NativeOp::Sltu || (d.pc & 15) == 0) return false;
+  const bool stalls = seg.shadow[k] == Shadow::check && seg.shadowed[k] == Segment::kUnknownShadow &&
+                      !shadowable_reads(d).empty();
+  return !stalls;
+}
+
+// A split segment's end: the branch has set r8b when taken (branch()), or is J/JAL. Each way
+// makes what the branch does when taken (taken()) or not, runs the delay slot with pc_ and
+// next_pc_ known (delay_dest) and chains to its destination. Neither way writes next_in_delay_:
+// the branch left it zero, as it was before the branch, and the delay slot would have zeroed it.
+void Impl::split_end(std::span<const Step> run, Segment& seg, std::optional<u32> budget) {
+  const Step& b = run[seg.count - 2];
+  const u32 target = static_target(b.native, b.pc, b.word);
+  const u32 owed_then = owed, eax_then = eax_reg;
+  const auto way = [&](u32 dest) {
+    owed = owed_then;
+    eax_reg = eax_then;
+    delay_dest = dest;
+    native(run.subspan(seg.count - 1), seg.count - 1, true, seg);
+    delay_dest.reset();
+    settle();
+    add(instructions, int(seg.count));
+    chain(true, loops_natively ? &seg.resume[0] : nullptr, budget, dest);
+  };
+  Label not_taken;
+  const bool always = b.native == NativeOp::J || b.native == NativeOp::Jal;
+  if (!always) {
+    test(r8b, r8b);
+    jz(not_taken, T_NEAR);
+  }
+  taken(b.native, b.pc, target);
+  way(target);
+  if (always) return;
+  L(not_taken);
+  way(b.pc + 8);
+}
+
+}  // namespace psx

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
@@ -393,6 +394,7 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 // chain compares and looks up that pc without reading pc_.
 void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::optional<u32> target) {
   clean = clean && !ends_in_branch;  // a branch's delay slot is the next block's (pc_checks())
+  const bool deferred = std::exchange(defer_shadow, false);
   Label back, no_loop_head;
   if (clean) cmp(word[rbx + lay.stop], 0);  // stop_ and hook_armed_ together (Layout)
   else cmp(byte[rbx + lay.stop], 0);
@@ -451,6 +453,15 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   add(rax, clean ? kCleanEntry : kPrologueBytes);
   jmp(rax);
   L(back);
+  if (deferred) {  // the last instruction's shadow check (shadow()), at its time
+    Label keep;
+    cmp(cpu32(lay.shadow_reg), 0);
+    je(keep);
+    cmp(now, cpu64(lay.load_done_at));
+    jb(keep);
+    mov(cpu32(lay.shadow_reg), 0);
+    L(keep);
+  }
   flush();
   epilogue();
   ret();
@@ -677,7 +688,8 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     const std::optional<u32> budget = seg.count > 1 ? std::optional<u32>(seg.budget[0]) : std::nullopt;
     g.guard(run, seg.slow[0], seg.first == 0 ? Impl::Checks::entry : Impl::Checks::all, budget,
             g.fill_entry(run[0].pc, seg, 0), &seg.filled[0]);
-    seg.split = i == steps.size() && g.splits(run, seg);
+    seg.ends_block = i == steps.size();
+    seg.split = seg.ends_block && g.splits(run, seg);
     for (size_t k = 0; k < seg.count - (seg.split ? 1 : 0); ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       g.L(seg.resume[k]);

@@ -110,14 +110,28 @@ void Impl::shadow_check(const Step& s, Label& stall) {
 }
 
 // CpuT::shadow_stall() before instruction k, as seg.shadow[k] and seg.shadowed[k] say.
+// The check that only clears shadow_reg_ is left to the chain (defer_shadow) at the last
+// instruction of a run that ends the block (Segment::ends_block, chain(true)) when that
+// instruction does not read or move the time after its check: the chain's way back to the
+// dispatcher makes it at the same time, and on its ways on the next instruction's own check
+// clears as this one would have. That next instruction is the next block's, run natively or as
+// a call that executes it: the chain has checked all that may_step() checks but a hook and
+// interrupts; no native instruction raises an interrupt, and a hook armed by a branch ending the
+// block is left alone in its delay slot, where the next block starts (CpuT::step()).
 void Impl::shadow(const Step& s, size_t k, Segment& seg) {
+  const bool last = k + 1 == seg.count;
+  const bool deferred = last && seg.ends_block && !uses_time(s.native);
   if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
-    shadow_known(s, seg.pipe[k], seg.shadowed[k], k + 1 == seg.count);
+    shadow_known(s, seg.pipe[k], seg.shadowed[k], last && !deferred);
+    defer_shadow = deferred;
   } else if (seg.shadow[k] == Shadow::check) {
     // Where s reads no register a load may shadow, the check could only clear shadow_reg_, which
     // only the segment's last instruction must do (the reasoning of shadow_known(), which holds
     // for a shadow left by an earlier block just as for the segment's own load).
-    if (shadowable_reads(s).empty() && k + 1 != seg.count) return;
+    if (shadowable_reads(s).empty() && (!last || deferred)) {
+      defer_shadow = deferred;
+      return;
+    }
     seg.stall_owed[k] = owed;
     shadow_check(s, seg.stall[k]);
     if (!shadowable_reads(s).empty()) L(seg.stall_back[k]);  // else no stall_stub() comes back

@@ -84,6 +84,7 @@ struct Segment {
   // The block's last segment, ending in a branch whose target is known now and a delay slot
   // emitted once for each way (splits(), split_end()); the delay slot has no resume[] entry.
   bool split = false;
+  bool ends_block = false;  // the block's native end: chain(true) follows the segment
 };
 
 struct BlockEmitter::Impl : Xbyak::CodeGenerator {
@@ -177,6 +178,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void split_end(std::span<const Step> run, Segment& seg, std::optional<u32> budget);
   // Where the delay slot split_end() is emitting goes (pc_ after it), else empty.
   std::optional<u32> delay_dest;
+  // The last instruction's shadow check is left to the chain that follows (shadow()).
+  bool defer_shadow = false;
   // block_emitter.cpp
   // How a guard makes machine_checks(): inline (`all`), by calling machine_routine() (`routine`:
   // re-guards after slow calls, shorter code, compiled faster), or as the block's entry (`entry`:

@@ -342,4 +342,26 @@ TEST(RecompilerCode, PartlyValidICacheLines) {
   expect_same_code(code, base, 0, regs, 3);
 }
 
+// A jump to a misaligned address: the fetch there raises an address error (AdEL, Cause.ExcCode 4)
+// with EPC and BadVaddr the address (psx-spx "COP0 - Exception Handling"). A compiled block's
+// chain to the next block reads that pc; address 1 is also the empty mark of the recompiler's
+// table of recent blocks, which a chain must not take for a block, with idle skipping off as on.
+TEST(RecompilerCode, JumpToAMisalignedAddress) {
+  const u32 base = 0x80010000;
+  const std::vector<u32> code = {itype(0x0D, 0, kT0, 1), rtype(0x08, kT0, 0, 0), kNop};  // jr t0 (t0 = 1)
+  for (bool idle_skip : {false, true}) {
+    for (bool recompiler : {false, true}) {
+      Console c;
+      c.set_idle_skip(idle_skip);
+      if (recompiler) c.set_cpu_mode(Console::CpuMode::Recompiler);
+      for (u32 i = 0; i < code.size(); ++i) c.write32(base + 4 * i, code[i]);
+      c.cpu().set_pc(base);
+      c.run_frames(1);
+      EXPECT_EQ((c.cpu().cop0().cause >> 2) & 0x1F, 4u) << "idle skip " << idle_skip << ", recompiler " << recompiler;
+      EXPECT_EQ(c.cpu().cop0().epc, 1u);
+      EXPECT_EQ(c.cpu().cop0().badvaddr, 1u);
+    }
+  }
+}
+
 }  // namespace

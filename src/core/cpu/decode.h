@@ -14,6 +14,8 @@ inline u32 shamt(u32 i) { return (i >> 6) & 31; }
 inline u32 funct(u32 i) { return i & 63; }
 inline u32 imm(u32 i) { return i & 0xFFFF; }
 inline u32 simm(u32 i) { return static_cast<u32>(static_cast<s32>(static_cast<s16>(i & 0xFFFF))); }
+// JR or JALR: the only jumps whose target is not word-aligned by construction.
+inline bool jumps_by_register(u32 i) { return op(i) == 0 && (funct(i) == 0x08 || funct(i) == 0x09); }
 
 // Whether instruction i reads general register r (nonzero) as a source operand.
 inline bool reads_reg(u32 i, u32 r) {

@@ -168,7 +168,8 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, std::opt
       pad_to(start, kPcCheckBytes, "pc checks");
       const size_t states = getSize();
       state_checks(fail);
-      pad_to(states, kStateCheckBytes, "state checks");
+      loop_head_check(first, bytes, fail);
+      pad_to(states, kStateCheckBytes, "state and loop-head checks");
       needs_checks(needs, fail);
       if (loops_natively) mov(byte[rsp], 0);  // no call since this guard (chain())
       break;
@@ -176,14 +177,7 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, std::opt
   }
   if (checks == Checks::all || (checks == Checks::routine && is_branch(run[0].native)))
     pc_checks(first, fail);
-  Label no_loop_head;
-  mov(eax, cpu32(lay.loop_head));  // run() would hand a loop head in the segment to IdleSkip
-  sub(eax, first);
-  cmp(eax, bytes);
-  jae(no_loop_head);
-  cmp(qword[rbx + lay.idle_skip], 0);
-  jne(fail, T_NEAR);
-  L(no_loop_head);
+  if (checks != Checks::entry) loop_head_check(first, bytes, fail);
   if (run.back().pc >= 0xA0000000) {  // KSEG1 (uncached) or beyond: every fetch takes time
     jmp(fail, T_NEAR);
     return;
@@ -203,6 +197,20 @@ void Impl::pc_checks(u32 first, Label& fail) {
   jne(fail, T_NEAR);
   cmp(cpu32(lay.next_pc), first + 4);
   jne(fail, T_NEAR);
+}
+
+// run() would hand a loop head in the `bytes` of code at `first` to IdleSkip. At a block's entry
+// it lies before the clean entry (kCleanEntry), where a clean chain() that has seen no loop head
+// that matters enters past it.
+void Impl::loop_head_check(u32 first, u32 bytes, Label& fail) {
+  Label no_loop_head;
+  mov(eax, cpu32(lay.loop_head));
+  sub(eax, first);
+  cmp(eax, bytes);
+  jae(no_loop_head);
+  cmp(qword[rbx + lay.idle_skip], 0);
+  jne(fail, T_NEAR);
+  L(no_loop_head);
 }
 
 // guard()'s checks that depend on the run only through `needs` (kNeeds*).
@@ -382,7 +390,10 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 // `clean` chain, from a native run that reached the block's end on anything but a branch, also
 // skips the next block's pc_checks() and state_checks() (kCleanEntry): the run leaves the former
 // true, the latter held when it started, and of what they check only a hook could have changed
-// since.
+// since. It skips the next block's loop_head_check() too, having seen no loop head pending, or
+// none that matters (no idle skipping), or the one at its pc cleared by loop_head_routine(); a
+// loop head pending elsewhere (left by an exception before the branch's target was reached)
+// sends it back to the dispatcher.
 // A block that is one native segment and branches back to its start (loops_natively) goes, on that
 // branch, straight to its first instruction (`loop`, the segment's resume[0]) past its whole guard
 // when no call was made since the guard passed (the frame's spare byte at rsp says; a load or
@@ -393,26 +404,29 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 // Where the pc is known now (`target`, after a split branch's delay slot: split_end()), the
 // chain compares and looks up that pc without reading pc_.
 void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::optional<u32> target) {
+  const bool native_end = clean;
   clean = clean && !ends_in_branch;  // a branch's delay slot is the next block's (pc_checks())
   const bool deferred = std::exchange(defer_shadow, false);
-  Label back, no_loop_head;
+  Label back, no_loop_head, loop_head_pending;
   if (clean) cmp(word[rbx + lay.stop], 0);  // stop_ and hook_armed_ together (Layout)
   else cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
   cmp(now, deadline);
   jae(back, T_NEAR);
-  if (target) {
-    cmp(cpu32(lay.loop_head), *target);
-    jne(no_loop_head);
-    mov(eax, *target);  // for loop_head_routine()
+  if (clean) {  // mostly no loop head is pending: then on, past the next block's loop-head check
+    cmp(cpu32(lay.loop_head), lay.no_loop_head);
+    jne(loop_head_pending, T_NEAR);
   } else {
-    mov(eax, cpu32(lay.pc));
-    cmp(eax, cpu32(lay.loop_head));
-    jne(no_loop_head);
+    loop_head_at_pc(target, no_loop_head, back);
   }
-  call(loop_head_routine());
-  jnz(back, T_NEAR);
   L(no_loop_head);
+  if (!target) {
+    mov(eax, cpu32(lay.pc));
+    if (!(native_end && aligned_end)) {  // a misaligned pc (JR's) raises its address error outside
+      test(al, 3);
+      jnz(back, T_NEAR);
+    }
+  }
   mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
   cmp(byte[rcx], 0);
   jne(back, T_NEAR);
@@ -452,6 +466,13 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   }
   add(rax, clean ? kCleanEntry : kPrologueBytes);
   jmp(rax);
+  if (clean) {  // a loop head pending: without idle skipping none matters; else at the pc only
+    L(loop_head_pending);
+    cmp(qword[rbx + lay.idle_skip], 0);
+    je(no_loop_head, T_NEAR);
+    loop_head_at_pc(target, no_loop_head, back);  // the routine cleared it where it goes on
+    jmp(back, T_NEAR);  // elsewhere (rare: an exception before the branch's target was reached)
+  }
   L(back);
   if (deferred) {  // the last instruction's shadow check (shadow()), at its time
     Label keep;
@@ -465,6 +486,25 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   flush();
   epilogue();
   ret();
+}
+
+// Where chain()'s pc (`target`, else pc_) is the loop head: to `go_on` where loop_head_routine()
+// lets the chain go on, else to `back`. Elsewhere on past this code.
+void Impl::loop_head_at_pc(std::optional<u32> target, Label& go_on, Label& back) {
+  Label differ;
+  if (target) {
+    cmp(cpu32(lay.loop_head), *target);
+    jne(differ);
+    mov(eax, *target);
+  } else {
+    mov(eax, cpu32(lay.pc));
+    cmp(eax, cpu32(lay.loop_head));
+    jne(differ);
+  }
+  call(loop_head_routine());
+  jz(go_on, T_NEAR);
+  jmp(back, T_NEAR);
+  L(differ);
 }
 
 // chain()'s pc (in eax) is the loop head: run() would hand it to IdleSkip::at_loop_head(), whose
@@ -640,9 +680,10 @@ BlockEmitter::~BlockEmitter() = default;
 BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const Step> steps) {
   // Upper bounds on one step's code (inline code with a line check, stall stub, and the slow
   // call and the load's or store's call, each with the guard for the rest: at most about 180
-  // bytes and a line check of at most 90) and on the frame's (prologue and padded state checks,
-  // kCleanEntry bytes, then two chain()s of about 150 bytes each and the loop-head routine).
-  const size_t step_bytes = 1536, frame_bytes = 768;
+  // bytes and a line check of at most 90) and on the frame's (prologue and padded checks,
+  // kCleanEntry bytes, then up to three chain()s of about 250 bytes each, two of them after a
+  // split branch, and the loop-head routine).
+  const size_t step_bytes = 1536, frame_bytes = 1536;
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;
@@ -655,6 +696,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   const auto entry = g.getCurr<BlockFn>();
   g.block_pc = steps[0].pc;
   g.ends_in_branch = Impl::is_branch(steps.back().native);
+  g.aligned_end = steps.size() < 2 || !cpu_detail::jumps_by_register(steps[steps.size() - 2].word);
   g.block_entry = g.getCurr();
   g.self_loop = std::any_of(steps.begin(), steps.end(), [&](const Step& s) {
     return Impl::is_branch(s.native) && s.native != NativeOp::Jr && s.native != NativeOp::Jalr &&

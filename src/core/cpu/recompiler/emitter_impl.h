@@ -183,8 +183,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter.cpp
   // How a guard makes machine_checks(): inline (`all`), by calling machine_routine() (`routine`:
   // re-guards after slow calls, shorter code, compiled faster), or as the block's entry (`entry`:
-  // its pc_checks() and state_checks() padded to kPcCheckBytes and kStateCheckBytes, where a
-  // clean chain() enters past them).
+  // its pc_checks() padded to kPcCheckBytes, its state_checks() and loop_head_check() padded to
+  // kStateCheckBytes, where a clean chain() enters past them).
   enum class Checks { all, routine, entry };
   // guard() and line_check() send a missing line to `fill` where given (a fill_stub()'s entry),
   // which comes back to `filled`.
@@ -195,6 +195,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void machine_checks(u32 needs, Xbyak::Label& fail);
   void state_checks(Xbyak::Label& fail);
   void pc_checks(u32 first, Xbyak::Label& fail);
+  void loop_head_check(u32 first, u32 bytes, Xbyak::Label& fail);
   void needs_checks(u32 needs, Xbyak::Label& fail);
   // Nops from getSize() up to `start` + `bytes`; throws where the code since `start` is longer.
   void pad_to(size_t start, size_t bytes, const char* what);
@@ -226,13 +227,16 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   bool self_loop = false;
   bool loops_natively = false;  // self_loop, and every step native: one segment
   Xbyak::Label& loop_head_routine();
+  void loop_head_at_pc(std::optional<u32> target, Xbyak::Label& go_on, Xbyak::Label& back);
   Xbyak::Label* loop_head_entry = nullptr;  // this block's loop_head_routine(), once emitted
   bool ends_in_branch = false;  // the block's last instruction is a branch (without its delay slot)
+  // The pc after the block's last instruction is aligned: it is no JR's or JALR's delay slot.
+  bool aligned_end = true;
   // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
   // block that cannot vouch for pc_checks() and state_checks()), fn + kCleanEntry (a clean
-  // chain(), past both).
-  // The pc checks take at most 29 bytes and the state checks 131.
-  static constexpr size_t kPrologueBytes = 64, kPcCheckBytes = 32, kStateCheckBytes = 136;
+  // chain(), past both and past the entry's loop_head_check()).
+  // The pc checks take at most 29 bytes, the state and loop-head checks 163.
+  static constexpr size_t kPrologueBytes = 64, kPcCheckBytes = 32, kStateCheckBytes = 168;
   static constexpr size_t kCleanEntry = kPrologueBytes + kPcCheckBytes + kStateCheckBytes;
   void prologue(const Layout& layout);
   void epilogue();

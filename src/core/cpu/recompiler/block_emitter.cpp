@@ -1,8 +1,8 @@
 // Emits compiled blocks (block_emitter.h) with xbyak (System V x86-64 calling convention): a
 // block's frame, the segment guard, each native instruction's bookkeeping (CpuT::execute_at_pc),
-// the ALU operations and the branches. Loads, stores and HI/LO: block_emitter_memory.cpp; the
-// i-cache line checks and fills: block_emitter_icache.cpp; the deadline's budget and the load
-// shadow: block_emitter_timing.cpp.
+// the ALU operations and the chain to the next block. Branches: block_emitter_branch.cpp; loads,
+// stores and HI/LO: block_emitter_memory.cpp; the i-cache line checks and fills:
+// block_emitter_icache.cpp; the deadline's budget and the load shadow: block_emitter_timing.cpp.
 #include "core/cpu/recompiler/block_emitter.h"
 
 #include <algorithm>
@@ -743,7 +743,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       g.settle();
       g.add(g.instructions, int(seg.count));
       g.sync_pc(run, seg.count - 1);
-      if (i == steps.size())  // the block's native end
+      if (seg.ends_block)  // the block's native end
         g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, budget);
     }
     g.L(seg.end);

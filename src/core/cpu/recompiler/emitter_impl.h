@@ -1,9 +1,8 @@
 // The code generator behind BlockEmitter (block_emitter.h), shared by its sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
 // operations), block_emitter_branch.cpp (branches and jumps), block_emitter_icache.cpp (i-cache
-// line checks and fills),
-// block_emitter_memory.cpp (loads, stores, the load delay slot, HI/LO moves),
-// block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
+// line checks and fills), block_emitter_memory.cpp (loads, stores, the load delay slot, HI/LO
+// moves), block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
 // commands) and block_emitter_timing.cpp (the deadline's budget, the cycles owed, the load
 // shadow). Only they include this header (and with it xbyak).
 // Registers while a block runs:

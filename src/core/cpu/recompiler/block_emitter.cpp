@@ -6,6 +6,7 @@
 #include "core/cpu/recompiler/block_emitter.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -19,6 +20,16 @@ namespace psx {
 
 using Xbyak::Label;
 using Impl = BlockEmitter::Impl;
+
+// Where `p` lies within a signed 32-bit displacement of rbx (the context plus Layout::bias), that
+// displacement: the cells of other objects a block reads often (the written-code flag, the recent
+// table) are then one rbx-relative operand instead of an address loaded first. Mostly they are:
+// the heap keeps a console's objects close together. Elsewhere empty.
+std::optional<int> Impl::from_context(const void* p) const {
+  const auto d = reinterpret_cast<intptr_t>(p) - (reinterpret_cast<intptr_t>(lay.context) + lay.bias);
+  if (d < INT32_MIN || d > INT32_MAX) return std::nullopt;
+  return int(d);
+}
 
 // Both leave every register but r11 as it was (a step's function in rax, its answer in al).
 void Impl::flush() {
@@ -427,8 +438,12 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
       jnz(back, T_NEAR);
     }
   }
-  mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
-  cmp(byte[rcx], 0);
+  if (const auto d = from_context(lay.any_dirty)) {
+    cmp(byte[rbx + *d], 0);
+  } else {
+    mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
+    cmp(byte[rcx], 0);
+  }
   jne(back, T_NEAR);
   // This block is find()'s for its own pc while no code page is written.
   if (clean && self_loop && (!target || *target == block_pc)) {
@@ -451,10 +466,18 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   // The recent table's entry for the pc (pc / 4 mod recent_count), of 16 bytes: {u32 pc; BlockFn
   // fn at 8}.
   if (target) {
-    mov(rdx, reinterpret_cast<u64>(lay.recent_blocks) + ((*target >> 2) & (lay.recent_count - 1)) * 16);
-    cmp(dword[rdx], *target);
-    jne(back, T_NEAR);
-    mov(rax, qword[rdx + 8]);
+    const auto* cell = static_cast<const char*>(lay.recent_blocks) + ((*target >> 2) & (lay.recent_count - 1)) * 16;
+    const auto d = from_context(cell + 8);  // the entry's both ends within reach of rbx
+    if (d && from_context(cell)) {
+      cmp(dword[rbx + *d - 8], *target);
+      jne(back, T_NEAR);
+      mov(rax, qword[rbx + *d]);
+    } else {
+      mov(rdx, reinterpret_cast<u64>(cell));
+      cmp(dword[rdx], *target);
+      jne(back, T_NEAR);
+      mov(rax, qword[rdx + 8]);
+    }
   } else {
     mov(ecx, eax);
     and_(ecx, (lay.recent_count - 1) << 2);

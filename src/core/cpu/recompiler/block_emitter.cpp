@@ -667,9 +667,7 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
     jmp(seg.slow[k], T_NEAR);
   }
   for (size_t k = 0; k < seg.count; ++k) {
-    if (seg.shadow[k] == Shadow::check && seg.shadowed[k] == Segment::kUnknownShadow &&
-        !shadowable_reads(run[k]).empty())
-      stall_stub(k, seg);
+    if (has_stall(run[k], seg, k)) stall_stub(k, seg);
     if ((k == 0 || (run[k].pc & 15) == 0) && fills_natively(run[k].pc)) fill_stub(run.subspan(k), k, seg);
   }
 }

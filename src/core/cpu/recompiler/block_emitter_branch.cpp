@@ -133,9 +133,7 @@ bool Impl::splits(std::span<const Step> run, const Segment& seg) {
   const Step &b = run[k - 1], &d = run[k];
   if (!is_branch(b.native) || b.native == NativeOp::Jr || b.native == NativeOp::Jalr) return false;
   if (d.native < NativeOp::Addiu || d.native > NativeOp::Sltu || (d.pc & 15) == 0) return false;
-  const bool stalls = seg.shadow[k] == Shadow::check && seg.shadowed[k] == Segment::kUnknownShadow &&
-                      !shadowable_reads(d).empty();
-  return !stalls;
+  return !has_stall(d, seg, k);
 }
 
 // A split segment's end: the branch has set r8b when taken (branch()), or is J/JAL. Each way

@@ -109,6 +109,14 @@ void Impl::shadow_check(const Step& s, Label& stall) {
   });
 }
 
+// Whether instruction s, k of the segment, may wait for a load no earlier instruction of the
+// segment made: its check of the load shadow is dynamic and it reads a register a load may
+// shadow, so it has a stall_stub().
+bool Impl::has_stall(const Step& s, const Segment& seg, size_t k) {
+  return seg.shadow[k] == Shadow::check && seg.shadowed[k] == Segment::kUnknownShadow &&
+         !shadowable_reads(s).empty();
+}
+
 // CpuT::shadow_stall() before instruction k, as seg.shadow[k] and seg.shadowed[k] say.
 // The check that only clears shadow_reg_ is left to the chain (defer_shadow) at the last
 // instruction of a run that ends the block (Segment::ends_block, chain(true)) when that
@@ -128,13 +136,14 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
     // Where s reads no register a load may shadow, the check could only clear shadow_reg_, which
     // only the segment's last instruction must do (the reasoning of shadow_known(), which holds
     // for a shadow left by an earlier block just as for the segment's own load).
-    if (shadowable_reads(s).empty() && (!last || deferred)) {
+    const bool stalls = has_stall(s, seg, k);
+    if (!stalls && (!last || deferred)) {
       defer_shadow = deferred;
       return;
     }
     seg.stall_owed[k] = owed;
     shadow_check(s, seg.stall[k]);
-    if (!shadowable_reads(s).empty()) L(seg.stall_back[k]);  // else no stall_stub() comes back
+    if (stalls) L(seg.stall_back[k]);  // else no stall_stub() comes back
   } else if (seg.shadow[k] == Shadow::clear) {
     mov(cpu32(lay.shadow_reg), 0);
   }

@@ -264,6 +264,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   u32 longest_wait(const Step& s) const;
   void budget_check(u32 budget, Xbyak::Label& fail);
   static std::vector<u32> shadowable_reads(const Step& s);
+  static bool has_stall(const Step& s, const Segment& seg, size_t k);
   void shadow(const Step& s, size_t k, Segment& seg);
   void shadow_check(const Step& s, Xbyak::Label& stall);
   void shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last);

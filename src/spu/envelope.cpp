@@ -7,42 +7,13 @@
 namespace psx::spu {
 
 s16 envelope_tick(u32& counter, s16 level, const EnvelopeParams& p) {
-  const s32 shift = p.rate >> 2;
-  const s32 step_value = p.rate & 3;
-  // +7,+6,+5,+4, inverted to -8,-7,-6,-5 when decreasing (or when the phase bit flips an
-  // increase). Exponential decrease always steps downwards: its phase bit has no effect.
-  s32 step = 7 - step_value;
-  if ((p.decreasing != p.phase_negative) || (p.exponential && p.decreasing)) step = ~step;
-  step *= 1 << std::max<s32>(0, 11 - shift);
-  u32 increment = 0x8000u >> std::max<s32>(0, shift - 11);
-
-  if (p.exponential && !p.decreasing && level > 0x6000) {
-    // "Exponential" increase is a slower linear increase above 6000h.
-    if (shift < 10) {
-      step >>= 2;
-    } else if (shift >= 11) {
-      increment >>= 2;
-    } else {
-      step >>= 1;
-      increment >>= 1;
-    }
-  } else if (p.exponential && p.decreasing) {
-    step = (step * level) >> 15;
-  }
-  if ((p.rate & p.rate_mask) != p.rate_mask) increment = std::max<u32>(increment, 1);
-
-  counter += increment;
+  const bool high = p.exponential && !p.decreasing && level > 0x6000;
+  counter += high ? p.increment_high : p.increment;
   if (!(counter & 0x8000)) return level;
   counter = 0;
-
-  s32 next = level + step;
-  if (!p.decreasing)
-    next = std::clamp(next, -0x8000, 0x7FFF);
-  else if (p.phase_negative)
-    next = std::clamp(next, -0x8000, 0);
-  else
-    next = std::clamp(next, 0, 0x7FFF);
-  return static_cast<s16>(next);
+  s32 step = high ? p.step_high : p.step;
+  if (p.exponential && p.decreasing) step = (step * level) >> 15;  // the step shrinks with the level
+  return static_cast<s16>(std::clamp(level + step, p.min_level, p.max_level));
 }
 
 EnvelopeParams Adsr::params() const {
@@ -109,22 +80,26 @@ void Adsr::do_state(StateIO& s) {
   if (s.loading()) params_ = params();
 }
 
+namespace {
+
+// Sweep mode: bit 14 exponential, bit 13 decrease, bit 12 phase, bits 0-6 shift:step.
+EnvelopeParams sweep_params(u16 reg) {
+  return {static_cast<u8>(reg & 0x7F), 0x7F, ((reg >> 13) & 1) != 0, ((reg >> 14) & 1) != 0, ((reg >> 12) & 1) != 0};
+}
+
+}  // namespace
+
 void VolumeSweep::write(u16 value) {
   reg_ = value;
   counter_ = 0;
-}
-
-void VolumeSweep::sweep() {
-  // Sweep mode: bit 14 exponential, bit 13 decrease, bit 12 phase, bits 0-6 shift:step.
-  const EnvelopeParams p{static_cast<u8>(reg_ & 0x7F), 0x7F, ((reg_ >> 13) & 1) != 0, ((reg_ >> 14) & 1) != 0,
-                         ((reg_ >> 12) & 1) != 0};
-  level_ = envelope_tick(counter_, level_, p);
+  params_ = sweep_params(value);
 }
 
 void VolumeSweep::do_state(StateIO& s) {
   s.pod(reg_);
   s.pod(level_);
   s.pod(counter_);
+  if (s.loading()) params_ = sweep_params(reg_);
 }
 
 }  // namespace psx::spu

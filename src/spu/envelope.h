@@ -8,7 +8,12 @@
 namespace psx::spu {
 
 // One envelope phase. `rate` is the 7-bit Shift:Step pair (shift in bits 2-6, step in bits 0-1).
+// The constructor works out the rate engine's step and counter increment once per phase, not
+// once per sample: most samples only add the increment to the counter.
 struct EnvelopeParams {
+  constexpr EnvelopeParams() : EnvelopeParams(0, 0x7F, false, false, false) {}
+  constexpr EnvelopeParams(u8 rate, u8 rate_mask, bool decreasing, bool exponential, bool phase_negative);
+
   u8 rate = 0;
   // Rate bits that, all set, freeze the envelope (psx-spx: "all-ones never steps"): 7Fh for
   // attack/sustain/sweeps; decay and release have no step field, so only their shift counts (7Ch).
@@ -16,7 +21,43 @@ struct EnvelopeParams {
   bool decreasing = false;
   bool exponential = false;
   bool phase_negative = false;
+  // Derived: the step added when the counter overflows and the counter increment, below and above
+  // 6000h (where an exponential increase slows down); and the clamp range of the level.
+  s32 step = 0, step_high = 0;
+  u32 increment = 0, increment_high = 0;
+  s32 min_level = 0, max_level = 0;
 };
+
+constexpr EnvelopeParams::EnvelopeParams(u8 rate_, u8 rate_mask_, bool decreasing_, bool exponential_,
+                                         bool phase_negative_)
+    : rate(rate_), rate_mask(rate_mask_), decreasing(decreasing_), exponential(exponential_),
+      phase_negative(phase_negative_) {
+  // psx-spx "Envelope Operation depending on Shift/Step/Mode/Direction".
+  const s32 shift = rate >> 2;
+  // +7,+6,+5,+4, inverted to -8,-7,-6,-5 when decreasing (or when the phase bit flips an
+  // increase). Exponential decrease always steps downwards: its phase bit has no effect.
+  s32 base = 7 - (rate & 3);
+  if ((decreasing != phase_negative) || (exponential && decreasing)) base = ~base;
+  step = base * (1 << (shift < 11 ? 11 - shift : 0));
+  increment = 0x8000u >> (shift > 11 ? shift - 11 : 0);
+  // "Exponential" increase is a slower linear increase above 6000h.
+  step_high = step, increment_high = increment;
+  if (shift < 10) {
+    step_high >>= 2;
+  } else if (shift >= 11) {
+    increment_high >>= 2;
+  } else {
+    step_high >>= 1;
+    increment_high >>= 1;
+  }
+  // Only the all-ones rate never steps; every other one counts at least 1 per sample.
+  if ((rate & rate_mask) != rate_mask) {
+    if (increment == 0) increment = 1;
+    if (increment_high == 0) increment_high = 1;
+  }
+  min_level = decreasing ? (phase_negative ? -0x8000 : 0) : -0x8000;
+  max_level = decreasing && phase_negative ? 0 : 0x7FFF;
+}
 
 // Advances an envelope by one 44.1 kHz tick. `counter` is the phase's step counter (zeroed when
 // a phase starts); returns the new level.
@@ -73,7 +114,7 @@ class VolumeSweep {
   // "the Bit15=0 setting isn't applied until the next 44.1kHz cycle").
   void tick() {
     if (reg_ & 0x8000)
-      sweep();
+      level_ = envelope_tick(counter_, level_, params_);
     else
       level_ = static_cast<s16>(reg_ << 1);  // bits 0-14 are volume/2, a signed 15-bit number
   }
@@ -85,11 +126,10 @@ class VolumeSweep {
   void do_state(StateIO& s);
 
  private:
-  void sweep();
-
   u16 reg_ = 0;
   s16 level_ = 0;
   u32 counter_ = 0;
+  EnvelopeParams params_;  // the sweep's, from reg_ (used while bit 15 is set)
 };
 
 }  // namespace psx::spu

@@ -5,6 +5,8 @@
 // exponential increase above 6000h slows down.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "spu/envelope.h"
 #include "spu/noise.h"
 
@@ -133,6 +135,53 @@ TEST(SpuEnvelope, SlowestRatesWait32768Samples) {
     level = envelope_tick(counter, level, p);
     EXPECT_EQ(level, 1005) << shift;
   }
+}
+
+// The rate engine written out plainly, rule by rule as psx-spx states them, for comparison with
+// envelope_tick(), which works its step and increment out once per phase.
+s16 documented_tick(u32& counter, s16 level, u32 rate, u32 rate_mask, bool decreasing, bool exponential,
+                    bool phase_negative) {
+  const s32 shift = static_cast<s32>(rate >> 2);
+  s32 step = 7 - static_cast<s32>(rate & 3);
+  if (decreasing != phase_negative || (exponential && decreasing)) step = -step - 1;  // NOT
+  if (shift < 11) step *= 1 << (11 - shift);
+  u32 increment = shift > 11 ? 0x8000u >> (shift - 11) : 0x8000u;  // "every 1 << (shift-11) samples"
+  if (exponential && !decreasing && level > 0x6000) {
+    // Four times slower above 6000h: a quarter of the step, the increment, or half of each.
+    if (shift < 10) step /= 4;
+    else if (shift == 10) step /= 2, increment /= 2;
+    else increment /= 4;
+  } else if (exponential && decreasing) {
+    step = (step * level) >> 15;
+  }
+  if ((rate & rate_mask) != rate_mask && increment == 0) increment = 1;
+  counter += increment;
+  if (counter < 0x8000) return level;
+  counter = 0;
+  const s32 lo = decreasing && !phase_negative ? 0 : -0x8000, hi = decreasing && phase_negative ? 0 : 0x7FFF;
+  return static_cast<s16>(std::clamp(level + step, lo, hi));
+}
+
+TEST(SpuEnvelope, EveryRateAndModeFollowsTheDocumentedEngine) {
+  const s16 levels[] = {-0x8000, -0x6001, -1, 0, 1, 0x100, 0x5FFF, 0x6000, 0x6001, 0x7000, 0x7FFF};
+  const u32 counters[] = {0, 1, 0x3FFF, 0x7FFE, 0x7FFF};
+  int compared = 0;
+  for (u32 rate = 0; rate < 0x80; ++rate)
+    for (u32 mask : {0x7Fu, 0x7Cu})
+      for (u32 mode = 0; mode < 8; ++mode) {
+        const bool dec = mode & 1, exp = mode & 2, neg = mode & 4;
+        const EnvelopeParams p(static_cast<u8>(rate), static_cast<u8>(mask), dec, exp, neg);
+        for (s16 level : levels)
+          for (u32 counter : counters) {
+            u32 got_counter = counter, want_counter = counter;
+            const s16 got = envelope_tick(got_counter, level, p);
+            const s16 want = documented_tick(want_counter, level, rate, mask, dec, exp, neg);
+            ASSERT_EQ(got, want) << "rate " << rate << " mode " << mode << " level " << level << " counter " << counter;
+            ASSERT_EQ(got_counter, want_counter) << "rate " << rate << " mode " << mode << " level " << level;
+            ++compared;
+          }
+      }
+  EXPECT_EQ(compared, 128 * 2 * 8 * 11 * 5);
 }
 
 TEST(SpuEnvelope, VolumeSweeps) {

@@ -20,6 +20,26 @@ class NoiseGenerator {
     if (timer_ < 0) timer_ += 0x20000 >> shift;
     if (timer_ < 0) timer_ += 0x20000 >> shift;
   }
+  // n ticks at once: from one timer underflow to the next instead of tick by tick.
+  void ticks(u16 attr, u32 n) {
+    const s32 step = 4 + ((attr >> 8) & 3);
+    while (n > 0) {
+      if (timer_ < 0) {  // only from a loaded state: a tick leaves the timer at 0 or more
+        tick(attr);
+        --n;
+        continue;
+      }
+      // The tick that takes the timer below 0 is the (timer / step + 1)th.
+      const u32 to_underflow = static_cast<u32>(timer_ / step) + 1;
+      if (to_underflow > n) {
+        timer_ -= static_cast<s32>(n) * step;
+        return;
+      }
+      timer_ -= static_cast<s32>(to_underflow - 1) * step;
+      tick(attr);
+      n -= to_underflow;
+    }
+  }
   s16 level() const { return level_; }
 
   void do_state(StateIO& s) {

@@ -24,6 +24,7 @@ void Spu::catch_up(Cycles horizon) {
   // An unseen reverb that nothing feeds takes nothing from the samples: all its ticks at once,
   // where none of them reads a capture buffer (Reverb::quiet_ticks).
   const bool reverb_made = !reference && reverb_unfed() && reverb_unseen() && reverb_.quiet_ticks(due);
+  captured_ = 0;
   u32 skip = 0;
   for (u32 k = 0; k < due; ++k) {
     if (k > 0 && !reference && quiet_from_here(skip)) {
@@ -44,8 +45,9 @@ void Spu::catch_up(Cycles horizon) {
 u32 Spu::step_unheard_voices(u32 samples, u32 stepped) {
   // A voice nothing reads (voices_needed) is its pitch counter, its block fetches, its envelope
   // and its volume sweeps; a silent one (Voice::silent: output 0, so it may be needed) only the
-  // first two. Not with IRQ9 possible (every block header and sample read is checked against
-  // IRQA), not while the voices do not run (SPU disabled).
+  // first two; voice 1 or 3 read only by its capture buffer also its output, kept for the
+  // buffer's writes (captured()). Not with IRQ9 possible (every block header and sample read is
+  // checked against IRQA), not while the voices do not run (SPU disabled).
   if (!(attr_ & kAttrEnable) || irq_possible()) return 0;
   // The SPU writes the capture buffers (0..FFFh) every sample and, with ATTR bit 7, the reverb
   // work area (ESA*8..7FFFFh, psx-spx "SPU Reverb Registers").
@@ -54,21 +56,42 @@ u32 Spu::step_unheard_voices(u32 samples, u32 stepped) {
   for (u32 i = 0; i < kNumVoices; ++i) {
     spu::Voice& v = voices_[i];
     const u32 bit = 1u << i;
-    if ((stepped & bit) || ((needed & bit) && !v.silent())) continue;
+    const bool capture = (needed & bit) && !v.silent();
+    if ((stepped & bit) || (capture && !(captured_only() & bit))) continue;
     // psx-spx "Pitch Counter": modulation by a silent voice (output 0) leaves the pitch as is.
     if ((pitch_mod_ & bit) && !voices_[i - 1].silent()) continue;
     const spu::Voice before = v;
+    const u32 step = std::min<u32>(v.pitch, 0x4000);
     bool loop_end = false;
-    if (!v.step_unheard(ram_.data(), std::min<u32>(v.pitch, 0x4000), (noise_on_ & bit) != 0, samples, unwritten,
-                        loop_end)) {
+    const bool stepped_all =
+        capture ? v.step_captured(ram_.data(), step, samples, unwritten, captured_buffer(i, samples), loop_end)
+                : v.step_unheard(ram_.data(), step, (noise_on_ & bit) != 0, samples, unwritten, loop_end);
+    if (!stepped_all) {
       v = before;
       continue;
     }
     if (loop_end) endx_ |= bit;
-    if (needed & bit) v.output = 0;
+    if (capture) captured_ |= bit;
+    else if (needed & bit) v.output = 0;
     stepped |= bit;
   }
   return stepped;
+}
+
+u32 Spu::captured_only() const {
+  // Voices 1 and 3 feed their capture buffers; nothing else reads them while nothing mixes, they
+  // modulate no pitch and feed no reverb. Without noise their outputs depend on nothing else in
+  // the SPU (step_unheard_voices lets only a silent voice modulate their pitch).
+  constexpr u32 kCaptureVoices = (1u << 1) | (1u << 3);
+  if (mixing()) return 0;
+  return kCaptureVoices & ~((pitch_mod_ >> 1) | reverb_on_ | noise_on_);
+}
+
+s16* Spu::captured_buffer(u32 voice, u32 samples) {
+  std::vector<s16>& out = captured_out_[voice / 2];
+  out.resize(samples);
+  captured_samples_ = samples;
+  return out.data();
 }
 
 void Spu::on_sample() {

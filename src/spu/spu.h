@@ -180,9 +180,24 @@ class Spu final : public IoDevice, public DmaPort {
   void on_sample();
   void catch_up(Cycles horizon);
   // Steps the voices not yet `stepped` whose output nothing reads (voices_needed) or is 0
-  // (Voice::silent) through the `samples` samples after the one just made, where that is exact;
-  // returns them with `stepped` (bit mask) for the sample-by-sample loop to skip.
+  // (Voice::silent), or that only their capture buffer reads (captured_only), through the
+  // `samples` samples after the one just made, where that is exact; returns them with `stepped`
+  // (bit mask) for the sample-by-sample loop to skip.
   u32 step_unheard_voices(u32 samples, u32 stepped);
+  // Voices 1 and 3 where only their capture buffers read their outputs.
+  u32 captured_only() const;
+  // Where a captured voice's outputs for the next `samples` samples go.
+  s16* captured_buffer(u32 voice, u32 samples);
+  // Voice 1's or 3's output for the sample with `later` samples after it in the catch-up: stepped
+  // ahead (captured_), or the one sample_voice() just made.
+  s16 capture_output(u32 voice, u32 later) const {
+    if (!(captured_ & (1u << voice))) return voices_[voice].output;
+    return captured_out_[voice / 2][captured_samples_ - 1 - later];
+  }
+  // The outputs of the catch-up's last `count` samples of voice 1 or 3 if stepped ahead, else null.
+  const s16* captured_tail(u32 voice, u32 count) const {
+    return (captured_ & (1u << voice)) ? captured_out_[voice / 2].data() + captured_samples_ - count : nullptr;
+  }
   // Whether a sample could raise IRQ9: both enables set and the flag not already up (a raised
   // flag stays until ATTR acknowledges it, so further hits change nothing).
   bool irq_possible() const {
@@ -253,6 +268,11 @@ class Spu final : public IoDevice, public DmaPort {
   std::array<u16, kFifoSize> fifo_{};
   u32 fifo_count_ = 0;
   u32 capture_pos_ = 0;    // halfword index into each 1 KiB capture buffer
+  // Within a catch-up: voices 1 and 3 stepped ahead (bits 1 and 3), and their outputs for the
+  // catch-up's last captured_samples_ samples.
+  u32 captured_ = 0;
+  std::array<std::vector<s16>, 2> captured_out_;
+  u32 captured_samples_ = 0;
   // Read-back of registers with no other home (KON/KOFF last written, unknown registers).
   std::array<u16, kSize / 2> raw_{};
 

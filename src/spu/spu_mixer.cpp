@@ -141,7 +141,7 @@ void Spu::generate_sample(u32 skip, u32 later, bool reverb_made) {
   if (!(attr_ & kAttrUnmute)) mix.left = mix.right = 0;
 
   const StereoSample cd = cd_audio_.pop();
-  write_capture_buffers(cd, voices_[1].output, voices_[3].output);
+  write_capture_buffers(cd, capture_output(1, later), capture_output(3, later));
   const bool cd_reverb = (attr_ & kAttrCdReverb) != 0;
   if ((attr_ & kAttrCdEnable) && (mixing || cd_reverb)) {
     const s32 cd_left = apply_volume(cd.left, cd_volume_left_);
@@ -170,8 +170,8 @@ void Spu::generate_sample(u32 skip, u32 later, bool reverb_made) {
 }
 
 bool Spu::quiet_from_here(u32 skip) const {
-  // Every voice stepped through the catch-up (step_unheard_voices: silent, or unread because
-  // nothing mixes), no CD input, no IRQ9 possible (capture and reverb checks) and no reverb output
+  // Every voice stepped through the catch-up (step_unheard_voices: silent, unread because
+  // nothing mixes, or read only by its capture buffer), no CD input, no IRQ9 possible (capture and reverb checks) and no reverb output
   // heard: each remaining sample's mix is 0 before and after the main volume, or not made.
   constexpr u32 kAllVoices = (1u << kNumVoices) - 1;
   return skip == kAllVoices && cd_audio_.size() == 0 && !irq_possible() && !reverb_heard();
@@ -179,27 +179,40 @@ bool Spu::quiet_from_here(u32 skip) const {
 
 void Spu::quiet_samples(u32 n, bool reverb_made) {
   // What generate_sample() does for n samples when quiet_from_here() holds, stage by stage where
-  // stages share nothing: the noise generator, the capture buffers (0: CD input and the silent
-  // voices 1 and 3) with the reverb (input 0; its writes as ATTR says), the output (0) and the
-  // main volume sweeps.
+  // stages share nothing: the noise generator, the capture buffers (0 for the CD input; voices 1
+  // and 3 as stepped: 0 where silent) with the reverb (input 0; its writes as ATTR says), the
+  // output (0) and the main volume sweeps.
   if (attr_ & kAttrEnable)
-    for (u32 k = 0; k < n; ++k) noise_.tick(attr_);
+    noise_.ticks(attr_, n);
   // Holds for the whole catch-up: tested once here rather than by reverb_sample() per sample.
   const bool unseen = reverb_unseen();
   if (reverb_made || (unseen && reverb_.quiet_ticks(n))) {
-    // The reverb read none of the capture buffers: their writes may come after its ticks.
-    const u32 count = std::min(n, 0x200u), first = std::min(count, 0x200 - capture_pos_);
+    // The reverb read none of the capture buffers: their writes may come after its ticks. Only
+    // the last 200h samples' writes stay.
+    const u32 count = std::min(n, 0x200u), start = (capture_pos_ + n - count) & 0x1FF;
     for (u32 buffer = 0; buffer < 4; ++buffer) {
-      u8* start = ram_.data() + buffer * 0x400;
-      std::fill(start + capture_pos_ * 2, start + (capture_pos_ + first) * 2, u8{0});
-      std::fill(start, start + (count - first) * 2, u8{0});
+      const s16* out = buffer >= 2 ? captured_tail(2 * buffer - 3, count) : nullptr;  // voices 1, 3
+      u8* ram = ram_.data() + buffer * 0x400;
+      // Up to the buffer's end, then from its start.
+      for (u32 from = 0, pos = start; from < count; pos = 0) {
+        const u32 run = std::min(count - from, 0x200 - pos);
+        if (out) {
+          for (u32 k = 0; k < run; ++k) store_le16(ram + (pos + k) * 2, static_cast<u16>(out[from + k]));
+        } else {
+          std::fill_n(ram + pos * 2, run * 2, u8{0});  // CD input, silent voices
+        }
+        from += run;
+      }
     }
     capture_pos_ = (capture_pos_ + n) & 0x1FF;
   } else {
     for (u32 k = 0; k < n; ++k) {
       // Sample by sample: the reverb may read the capture buffers, or write them.
-      const u32 off = capture_pos_ * 2;
-      for (u32 buffer = 0; buffer < 4; ++buffer) store_le16(ram_.data() + buffer * 0x400 + off, 0);
+      const u32 off = capture_pos_ * 2, later = n - 1 - k;
+      store_le16(ram_.data() + off, 0);
+      store_le16(ram_.data() + 0x400 + off, 0);
+      store_le16(ram_.data() + 0x800 + off, static_cast<u16>(capture_output(1, later)));
+      store_le16(ram_.data() + 0xC00 + off, static_cast<u16>(capture_output(3, later)));
       capture_pos_ = (capture_pos_ + 1) & 0x1FF;
       if (unseen) reverb_.unseen_tick(0, 0, n - 1 - k, ram_.data());
       else reverb_sample(0, 0, n - 1 - k);

@@ -92,6 +92,25 @@ bool Voice::step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWi
   }
 }
 
+bool Voice::step_captured(const u8* ram, u32 step, u32 samples, RamWindow unwritten, s16* out, bool& loop_end) {
+  // Spu::sample_voice() for a needed voice without noise, IRQ checks or mix.
+  for (u32 k = 0; k < samples; ++k) {
+    if (!has_block_) {
+      const u32 addr = (current_address_ * 8u) & 0x7FFFF;
+      if (k > 0 && (addr < unwritten.begin || addr + kAdpcmBlockBytes > unwritten.end)) return false;
+      fetch_block(ram);
+    }
+    const s32 level = adsr.level();
+    out[k] = level == 0 ? 0 : static_cast<s16>(std::clamp((interpolate() * level) >> 15, -0x8000, 0x7FFF));
+    adsr.tick();
+    if (advance(step, false) == BlockEvent::LoopEnd) loop_end = true;
+    volume_left.tick();
+    volume_right.tick();
+  }
+  output = out[samples - 1];
+  return true;
+}
+
 void Voice::do_state(StateIO& s, bool with_output) {
   volume_left.do_state(s);
   volume_right.do_state(s);

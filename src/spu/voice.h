@@ -60,6 +60,12 @@ class Voice {
   // left half-stepped (the caller restores it and steps it sample by sample).
   bool step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end);
 
+  // Steps a voice whose output only the capture buffers read (voices 1 and 3) over `samples`
+  // samples as step_unheard() does, but sample by sample, writing each sample's output (after the
+  // envelope, psx-spx "SPU Memory layout") to out[0..samples). No noise. Returns false on the
+  // same block reads as step_unheard(), leaving the voice half-stepped.
+  bool step_captured(const u8* ram, u32 step, u32 samples, RamWindow unwritten, s16* out, bool& loop_end);
+
   u16 current_address() const { return current_address_; }
   // Byte address of the halfword holding the current sample (for the IRQ address check).
   u32 data_address() const { return current_address_ * 8u + 2 + ((counter_ >> 12) / 4) * 2; }

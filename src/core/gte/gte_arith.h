@@ -96,9 +96,13 @@ inline void Gte::push_rgb_from_mac() {
 // One row of "T*1000h + M*V" (row i-1 of M): every partial sum goes through the 44-bit check.
 template <int i>
 inline s64 Gte::dot_row(const Matrix& m, const Vec16& v, s32 t) {
-  s64 a = check_mac<i>((s64(t) << 12) + s32(m[i - 1][0]) * s32(v[0]));
-  a = check_mac<i>(a + s32(m[i - 1][1]) * s32(v[1]));
-  return check_mac<i>(a + s32(m[i - 1][2]) * s32(v[2]));
+  const s64 p0 = s32(m[i - 1][0]) * s32(v[0]), p1 = s32(m[i - 1][1]) * s32(v[1]), p2 = s32(m[i - 1][2]) * s32(v[2]);
+  // With -2^30 <= T < 2^30 no partial sum can leave the 44-bit range: |T*1000h| < 2^42 and each
+  // product is at most 8000h*8000h = 2^30, so the checks would neither flag nor wrap.
+  if (u32(t) + 0x40000000u < 0x80000000u) [[likely]] return (s64(t) << 12) + p0 + p1 + p2;
+  s64 a = check_mac<i>((s64(t) << 12) + p0);
+  a = check_mac<i>(a + p1);
+  return check_mac<i>(a + p2);
 }
 
 // [MAC1..3] = (T*1000h + M*V) SAR (sf*12); [IR1..3] = saturated MAC1..3.

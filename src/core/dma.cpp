@@ -221,6 +221,16 @@ u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
   bool vouched = false;  // may_run() held after the trigger's clearing, and no words moved since
   u32 uncharged = 0;     // header words of the empty nodes walked since the last charge
   for (;;) {
+    if (vouched) {
+      // Vouched (so alone), an empty node that does not end the list (header bits 23-31 clear)
+      // changes only the time, which nothing reads before the next charge, and charges add up
+      // exactly: a run of them is walked in this short loop and charged at once.
+      u32 next = c.madr;
+      for (u32 header; moved + 1 < budget && ((header = bus_.dma_read_word(next & kAddressMask)) & 0xFF800000) == 0;
+           ++moved, ++uncharged)
+        next = header;
+      c.madr = next;
+    }
     // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the
     // device.
     const u32 addr = c.madr & kAddressMask;
@@ -229,13 +239,6 @@ u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
     moved += count + 1;
     c.madr = header & 0x00FFFFFF;
     const bool end = (c.madr & 0x00800000) != 0;  // end marker 0x00FFFFFF (hardware tests bit 23)
-    // Vouched (so alone), an empty node that does not end the list changes only the time, which
-    // nothing reads before the next charge, and charges add up exactly: a run of them is charged
-    // at once.
-    if (count == 0 && vouched && !end && moved < budget) {
-      ++uncharged;
-      continue;
-    }
     if (count) {
       if (uncharged) charge(ch, uncharged), uncharged = 0;
       to_device(ch, addr + 4, count, false);

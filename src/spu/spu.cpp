@@ -46,7 +46,7 @@ u32 Spu::step_unheard_voices(u32 samples, u32 stepped) {
   // A voice nothing reads (voices_needed) is its pitch counter, its block fetches, its envelope
   // and its volume sweeps; a silent one (Voice::silent: output 0, so it may be needed) only the
   // first two; voice 1 or 3 read only by its capture buffer also its output, kept for the
-  // buffer's writes (captured()). Not with IRQ9 possible (every block header and sample read is
+  // buffer's writes (capture_output). Not with IRQ9 possible (every block header and sample read is
   // checked against IRQA), not while the voices do not run (SPU disabled).
   if (!(attr_ & kAttrEnable) || irq_possible()) return 0;
   // The SPU writes the capture buffers (0..FFFh) every sample and, with ATTR bit 7, the reverb

@@ -171,8 +171,9 @@ void Spu::generate_sample(u32 skip, u32 later, bool reverb_made) {
 
 bool Spu::quiet_from_here(u32 skip) const {
   // Every voice stepped through the catch-up (step_unheard_voices: silent, unread because
-  // nothing mixes, or read only by its capture buffer), no CD input, no IRQ9 possible (capture and reverb checks) and no reverb output
-  // heard: each remaining sample's mix is 0 before and after the main volume, or not made.
+  // nothing mixes, or read only by its capture buffer), no CD input, no IRQ9 possible (capture
+  // and reverb checks) and no reverb output heard: each remaining sample's mix is 0 before and
+  // after the main volume, or not made.
   constexpr u32 kAllVoices = (1u << kNumVoices) - 1;
   return skip == kAllVoices && cd_audio_.size() == 0 && !irq_possible() && !reverb_heard();
 }

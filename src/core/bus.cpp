@@ -320,6 +320,8 @@ void Bus::dma_read_ram(u32 addr, u32* words, u32 count) const {
 
 void Bus::do_state(StateIO& s) {
   s.section("BUS ", 2);
+  std::vector<std::pair<u32, u32>> compiled;
+  if (s.loading() && code_pages_) compiled = code_pages_->compiled_words(ram_.data());
   s.bytes(ram_.data(), ram_.size());
   s.pod(scratch_);
   s.pod(memctrl_);
@@ -329,6 +331,10 @@ void Bus::do_state(StateIO& s) {
   set_cache_control(cache_control_);
   if (icache_.do_state(s) < ICache::kWordsSince && s.loading())
     icache_.refill_valid([this](u32 p) { return code_memory(p); });
+  if (s.loading()) {
+    recheck_icache_lines();
+    if (code_pages_) code_pages_->written_by_load(ram_.data(), compiled);
+  }
   s.end_section("BUS ");
 }
 

@@ -59,6 +59,11 @@ class Bus {
   // The word fetch() would execute at vaddr (the cached copy on a hit), without timing or fills;
   // false where fetch() would fail.
   bool peek_code(u32 vaddr, u32& word) const;
+  // Whether the memory at vaddr (RAM or the BIOS ROM, past the i-cache) holds `word`.
+  bool memory_holds(u32 vaddr, u32 word) const {
+    const u8* mem = code_memory(physical(vaddr));
+    return mem && load_le32(mem) == word;
+  }
   // A store while SR.IsC isolates the cache never reaches memory. With BCC.TAG and IS1 it writes
   // the addressed i-cache line's tag; without TAG it would write cache data, whose exact effect
   // is not documented and is not modelled.
@@ -150,7 +155,21 @@ class Bus {
   }
 
   // The recompiler's page map (code_pages.h) sees every CPU and DMA write to RAM while attached.
-  void attach_code_pages(CodePages* pages) { code_pages_ = pages; }
+  void attach_code_pages(CodePages* pages) {
+    code_pages_ = pages;
+    if (pages) pages->watch(&icache_);
+  }
+  // A write to `bytes` bytes of RAM from offset `off` made outside the CPU and DMA (a host poke,
+  // the HLE BIOS, an EXE loaded), reported to the code pages as theirs are.
+  void host_wrote_ram(u32 off, u32 bytes) {
+    if (!code_pages_ || bytes == 0) return;
+    for (u32 w = off & ~3u; w != ((off + bytes + 3) & ~3u); w += 4) code_pages_->on_ram_write(w & (kRamSize - 4));
+  }
+  // After the recompiler has dropped the blocks whose code was written: each i-cache line stale
+  // exactly where its words differ from memory (ICache::kStale).
+  void recheck_icache_lines() {
+    icache_.mark_stale_lines([this](u32 p) { return code_memory(p); });
+  }
 
   void do_state(StateIO& s);
 

@@ -157,6 +157,8 @@ void Console::side_load(const PsxExe& exe) {
   for (u32 i = 0; i < exe.text.size(); ++i)
     bus_.ram()[(Bus::physical(exe.text_addr) + i) & (Bus::kRamSize - 1)] = exe.text[i];
   for (u32 i = 0; i < exe.bss_size; ++i) bus_.ram()[(Bus::physical(exe.bss_addr) + i) & (Bus::kRamSize - 1)] = 0;
+  bus_.host_wrote_ram(Bus::physical(exe.text_addr) & (Bus::kRamSize - 1), u32(exe.text.size()));
+  bus_.host_wrote_ram(Bus::physical(exe.bss_addr) & (Bus::kRamSize - 1), exe.bss_size);
   bus_.flush_icache();
   u32 sp = exe.stack_base ? exe.stack_base + exe.stack_offset : PsxExe::kDefaultStack;
   cpu_.set_reg(28, exe.gp);

@@ -103,9 +103,14 @@ class Console : private CpuHooks {
   u8 read8(u32 addr) const { return *host_pointer(addr, 1); }
   u16 read16(u32 addr) const;
   u32 read32(u32 addr) const;
-  void write8(u32 addr, u8 v) { *host_pointer(addr, 1) = v; }
+  void write8(u32 addr, u8 v) {
+    *host_pointer(addr, 1) = v;
+    host_wrote(addr, 1);
+  }
   void write16(u32 addr, u16 v);
   void write32(u32 addr, u32 v);
+  // RAM in place. Writing code through it is not seen by the recompiler, whose blocks compiled
+  // from the old code may then keep running (write8() and the others are seen).
   std::span<u8> ram() { return {bus_.ram(), Bus::kRamSize}; }
   std::span<u8> scratchpad() { return {bus_.scratchpad(), Bus::kScratchSize}; }
   // Writes the 2 MiB of RAM to a file (atomically).
@@ -231,6 +236,7 @@ class Console : private CpuHooks {
   void on_reach(u32 pc) override;
   void drop_stale_audio();
   u8* host_pointer(u32 addr, u32 width) const;
+  void host_wrote(u32 addr, u32 width);
   static int port_index(int port);
   void release_timed_buttons();
   void side_load(const PsxExe& exe);

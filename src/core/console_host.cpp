@@ -31,8 +31,18 @@ u16 Console::read16(u32 addr) const {
 u32 Console::read32(u32 addr) const { return load_le32(host_pointer(addr, 4)); }
 void Console::write16(u32 addr, u16 v) {
   store_le16(host_pointer(addr, 2), v);
+  host_wrote(addr, 2);
 }
-void Console::write32(u32 addr, u32 v) { store_le32(host_pointer(addr, 4), v); }
+void Console::write32(u32 addr, u32 v) {
+  store_le32(host_pointer(addr, 4), v);
+  host_wrote(addr, 4);
+}
+
+// A host write to RAM reaches the recompiler's code pages as a CPU store would.
+void Console::host_wrote(u32 addr, u32 width) {
+  const u32 p = Bus::physical(addr);
+  if (p < 0x00800000) bus_.host_wrote_ram(p & (Bus::kRamSize - 1), width);
+}
 
 void Console::dump_ram(const std::string& path) const {
   const u8* r = bus_.ram();

@@ -252,7 +252,8 @@ void bind_console(py::module_& m) {
             std::span<psx::u8> ram = self.cast<PyConsole&>().console.ram();
             return array_of<psx::u8>({static_cast<py::ssize_t>(ram.size())}, ram.data(), self);
           },
-          "The 2 MiB of main RAM as a writable uint8 view (no copy); writes are not reported to watches.")
+          "The 2 MiB of main RAM as a writable uint8 view (no copy); writes are not reported to watches "
+          "or to the recompiler (write code with write_bytes).")
       .def("dump_ram", [](PyConsole& c, const std::string& path) { c.console.dump_ram(path); }, py::arg("path"),
            py::call_guard<R>())
       // Memory watches (the seed's listeners).

@@ -364,4 +364,129 @@ TEST(RecompilerCode, JumpToAMisalignedAddress) {
   }
 }
 
+// Cached code (KSEG0) that rewrites an instruction on a line further into its own block: psx-spx
+// "Memory Map" (i-Cache) has stores bypass the cache, so the line, evicted each pass by a call to
+// code with the same line index, is filled with the new word when the block reaches it. The
+// block, compiled with the old word, is only dropped once it ends, so until then the written
+// code's lines must not pass a native line check (ICache::kStale).
+TEST(RecompilerCode, SelfModifyingCachedCodeFurtherInItsBlock) {
+  const u32 base = 0x80010000, kS2 = 18, kS3 = 19, kRa = 31;
+  std::vector<u32> code = {
+      itype(0x0F, 0, kT0, 0x8001),                 // lui t0, 8001h
+      itype(0x23, kT0, kT1, 0x24),                 // lw t1, 24h(t0): the word at index 9
+      kNop,
+      itype(0x09, kT1, kT1, 1),                    // addiu t1, t1, 1 (its immediate 1 -> 2 -> 3 ...)
+      itype(0x2B, kT0, kT1, 0x24),                 // sw t1, 24h(t0)
+      kNop, kNop, kNop,
+      itype(0x09, kS1, kS1, 1),                    // line 2: addiu s1, s1, 1
+      itype(0x09, kS2, kS2, 1),                    // addiu s2, s2, 1 (index 9, rewritten)
+      itype(0x09, kS3, kS3, 1),                    // addiu s3, s3, 1
+      kNop,
+      0x03u << 26 | (((base + 0x1020) >> 2) & 0x03FFFFFF),  // jal base + 1020h (line 2 again)
+      kNop,
+      j(base), kNop};
+  code.resize(0x408, kNop);
+  code.push_back(rtype(0x08, kRa, 0, 0));  // base + 1020h: jr ra
+  code.push_back(kNop);
+  expect_same_code(code, base, 0, {}, 2);
+}
+
+// A state loaded over running code: the blocks compiled from the code before are not the code
+// the state holds (its RAM and its i-cache lines differ from them), and must not run natively.
+TEST(RecompilerCode, StateLoadedOverOtherCode) {
+  const u32 base = 0x80010000, kS2 = 18;
+  const auto program = [&](u32 step) {
+    return std::vector<u32>{itype(0x09, kS1, kS1, 1), itype(0x09, kS2, kS2, step), itype(0x09, kS1, kS1, 1),
+                            itype(0x09, kS2, kS2, step), kNop, kNop, j(base), kNop};
+  };
+  std::vector<psx::u8> other;
+  {
+    Console c;
+    load_code(c, program(7), base, 0, {});
+    c.run_frames(1);
+    other = c.save_state(false);
+  }
+  std::vector<std::vector<psx::u8>> states;
+  for (bool recompiled : {false, true}) {
+    Console c;
+    c.set_idle_skip(false);  // which would skip the loop's iterations rather than run them
+    if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+    load_code(c, program(1), base, 0, {});
+    c.run_frames(1);
+    c.load_state(other);
+    c.run_frames(1);
+    states.push_back(state_of(c));
+  }
+  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+}
+
+// A routine rewritten while the i-cache still holds it is compiled again from the cached old
+// word, which must then run through calls (RecompilerT::compile()): once the line is refilled
+// with the new word and no longer stale (after the next written code's recheck), a native copy
+// of the old word would pass the line's check.
+TEST(RecompilerCode, CodeRecompiledWhileTheICacheHoldsItsOldWord) {
+  const u32 base = 0x80010000, kS2 = 18, kRa = 31;
+  const auto jal = [](u32 target) { return 0x03u << 26 | ((target >> 2) & 0x03FFFFFF); };
+  const u32 x = base + 0x100, y = base + 0x400, evict = base + 0x1100;  // x and evict share line 10h
+  std::vector<u32> code = {
+      itype(0x0F, 0, kT0, 0x8001),                                  // lui t0, 8001h
+      jal(x), kNop,
+      itype(0x23, kT0, kT1, 0x100), kNop, itype(0x09, kT1, kT1, 1),  // t1 = x's first word, immediate + 1
+      itype(0x2B, kT0, kT1, 0x100),                                 // sw t1, 100h(t0): x rewritten
+      jal(x), kNop,                                                 // compiled again, the old word cached
+      jal(evict), kNop,                                             // the line evicted
+      jal(x), kNop,                                                 // the new word filled
+      jal(y), kNop,
+      itype(0x2B, kT0, 0, 0x404),                                   // sw zero, 404h(t0): y's code written
+      jal(x), kNop,
+      j(base + 4), kNop};
+  code.resize(0x40, kNop);
+  code.insert(code.end(), {itype(0x09, kS2, kS2, 1), rtype(0x08, kRa, 0, 0), kNop});  // x: s2 += n
+  code.resize(0x100, kNop);
+  code.insert(code.end(), {rtype(0x08, kRa, 0, 0), kNop});  // y
+  code.resize(0x440, kNop);
+  code.insert(code.end(), {rtype(0x08, kRa, 0, 0), kNop});  // evict
+  std::vector<std::vector<psx::u8>> states;
+  for (bool recompiled : {false, true}) {
+    Console c;
+    c.set_idle_skip(false);
+    if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+    load_code(c, code, base, 0, {});
+    c.run_frames(2);
+    states.push_back(state_of(c));
+  }
+  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+}
+
+// A state whose i-cache holds older code than its RAM (code rewritten since it was cached),
+// loaded where blocks were compiled from that RAM: the lines are stale, and the old words they
+// hold keep running until evicted, as they did where the state was saved.
+TEST(RecompilerCode, StateWithOlderCodeCachedThanInRam) {
+  const u32 base = 0x80010000, kS2 = 18;
+  const auto program = [&](u32 step) {
+    return std::vector<u32>{itype(0x09, kS1, kS1, 1), itype(0x09, kS2, kS2, step), kNop, kNop, j(base), kNop};
+  };
+  std::vector<psx::u8> saved;
+  {
+    Console c;
+    c.set_idle_skip(false);
+    load_code(c, program(1), base, 0, {});
+    c.run_frames(1);
+    c.write32(base + 4, program(7)[1]);  // RAM now says 7; the cached line still says 1
+    saved = c.save_state(false);
+  }
+  std::vector<std::vector<psx::u8>> states;
+  for (bool recompiled : {false, true}) {
+    Console c;
+    c.set_idle_skip(false);
+    if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+    load_code(c, program(7), base, 0, {});
+    c.run_frames(1);
+    c.load_state(saved);
+    c.run_frames(1);
+    states.push_back(state_of(c));
+  }
+  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+}
+
 }  // namespace

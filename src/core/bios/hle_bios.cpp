@@ -195,7 +195,9 @@ u32 HleBios::peek32(u32 addr) const {
 
 void HleBios::poke8(u32 addr, u8 v) {
   u32 p = Bus::physical(addr);
-  if (p < 0x00800000) bus_.ram()[p & (Bus::kRamSize - 1)] = v;
+  if (p >= 0x00800000) return;
+  bus_.ram()[p & (Bus::kRamSize - 1)] = v;
+  bus_.host_wrote_ram(p & (Bus::kRamSize - 1), 1);
 }
 
 void HleBios::poke32(u32 addr, u32 v) {

@@ -4,6 +4,15 @@
 // memory into the line, and a hit executes the copy: stores to RAM do not reach the cache, so
 // code rewritten in RAM keeps running in its old form until its line is invalidated (the BIOS's
 // FlushCache, tag writes under SR.IsC) or refilled for another address.
+//
+// Each tag also carries a bit the hardware does not have, kStale, for the recompiler: a line
+// whose valid words may differ from the memory they were filled from. Compiled blocks hold only
+// code that memory still holds (recompiler.h), so a line that is not stale and whose tag matches
+// holds their words, and native code checks a line with one compare of its tag. The bit is set
+// where code a block was compiled from is written (CodePages), where a tag write may have made
+// any words valid (write_tag) and where a loaded state's words differ from memory, and cleared
+// only by mark_stale_lines(), when the recompiler has dropped the blocks written. Nothing else
+// sees it: hit() and tag() leave it out and save states do not hold it.
 #pragma once
 #include <array>
 
@@ -17,6 +26,7 @@ class ICache {
  public:
   static constexpr u32 kLines = 256;
   static constexpr u32 kTagMask = 0xFFFFF000;
+  static constexpr u32 kStale = 0x10;  // above the valid bits, below the address bits
 
   static u32 line(u32 vaddr) { return (vaddr >> 4) & (kLines - 1); }
   static u32 word(u32 vaddr) { return (vaddr >> 2) & 3; }
@@ -46,7 +56,7 @@ class ICache {
     } else {
       first = word(vaddr);
       n = (first == 0 && two_word_refill) ? 2 : 4 - first;
-      t = (phys & kTagMask) | (((1u << n) - 1) << first);
+      t = (phys & kTagMask) | (((1u << n) - 1) << first) | (t & kStale);
     }
     u32* dst = &words_[line(vaddr) * 4];
     for (u32 w = first; w < first + n; ++w) dst[w] = load_le32(mem + 4 * w);
@@ -56,21 +66,47 @@ class ICache {
   // A store with SR.IsC and BCC.TAG set writes the tag of the line it addresses: the address
   // bits from the store's address, the valid bits from the data's low 4 bits (so storing 0 at
   // each line's address invalidates the cache, as the BIOS's FlushCache does).
-  void write_tag(u32 vaddr, u32 phys, u32 data) { tags_[line(vaddr)] = (phys & kTagMask) | (data & 0xF); }
+  // The words it makes valid are whatever the line held, so the line becomes stale.
+  void write_tag(u32 vaddr, u32 phys, u32 data) {
+    u32& t = tags_[line(vaddr)];
+    t = (phys & kTagMask) | (data & 0xF) | (t & kStale) | (data & 0xF ? kStale : 0);
+  }
 
   // Every line invalid, as FlushCache leaves the cache (its tag stores write address 0's tag).
-  void invalidate_all() { tags_.fill(0); }
+  void invalidate_all() {
+    for (u32& t : tags_) t &= kStale;
+  }
 
-  u32 tag(u32 line_index) const { return tags_[line_index]; }
+  u32 tag(u32 line_index) const { return tags_[line_index] & ~kStale; }
+  void mark_stale(u32 line_index) { tags_[line_index] |= kStale; }
+  // Each line is stale exactly where one of its valid words differs from the memory at its
+  // address: `mem(phys)` points at the word at a physical address, or is null where nothing
+  // executable is.
+  template <class Mem>
+  void mark_stale_lines(Mem mem) {
+    for (u32 l = 0; l < kLines; ++l) {
+      u32& t = tags_[l];
+      t &= ~kStale;
+      for (u32 w = 0; w < 4; ++w) {
+        if (!((t >> w) & 1)) continue;
+        const u8* p = mem((t & kTagMask) | l << 4 | w << 2);
+        if (!p || load_le32(p) != words_[l * 4 + w]) t |= kStale;
+      }
+    }
+  }
   // The tags in place (tag(l) is tags()[l]), for the recompiler's native code.
   const u32* tags() const { return tags_.data(); }
 
   // Version 2 added the code words. Reading a version-1 section the caller refills the valid
   // words from memory (refill_valid): the state was made when a hit ran what memory held.
   static constexpr u32 kWordsSince = 2;
+  // The caller marks stale lines after a load (mark_stale_lines()).
   u32 do_state(StateIO& s) {
     const u32 version = s.section("ICAC", 2, 1);
-    s.pod(tags_);
+    std::array<u32, kLines> tags;
+    for (u32 l = 0; l < kLines; ++l) tags[l] = tags_[l] & ~kStale;
+    s.pod(tags);
+    if (s.loading()) tags_ = tags;
     s.pod_since(version, kWordsSince, words_, decltype(words_){});
     s.end_section("ICAC");
     return version;

@@ -153,7 +153,7 @@ void Impl::alu(NativeOp op, u32 i) {
 // checked again before each instruction. Every word must be a fetch without time or fill, an
 // i-cache hit (Bus::fetch_slow: cached code, the line's tag matching and the word's valid bit
 // set; a hit on a line held only in part is as free as on a whole one) that is still the word
-// compiled, checked once per line for the tag and valid bits and once per word for the word:
+// compiled, checked once per line by its tag, valid bits and stale bit (ICache::kStale):
 // here for the run's first line, and for each further line where the run reaches it (native();
 // nothing native changes the i-cache, so checking a line when it is reached is the same as
 // checking it here), so that a run whose later lines miss runs natively up to them. Such a hit

@@ -13,14 +13,15 @@ using Impl = BlockEmitter::Impl;
 
 // The i-cache check for the words of `run` on its first word's line: the line's tag must be the
 // code's physical address (Bus::physical(), as Bus::fetch() tags it) with those words' valid bits
-// set (ICache::hit()), and each must be the word compiled.
+// set (ICache::hit()) and the line not stale. Then the line holds what memory holds, which holds
+// the words compiled (ICache::kStale, RecompilerT::compile()).
 void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label* filled) {
   const u32 line = run[0].pc & ~15u, tag_bits = Bus::physical(line) & ICache::kTagMask;
   u32 need = 0;
   for (size_t n = 0; n < run.size() && (run[n].pc & ~15u) == line; ++n) need |= 1u << ICache::word(run[n].pc);
   const Xbyak::Address tag = icache_tag(line);
   Label& miss = fill ? *fill : fail;
-  cmp(tag, tag_bits | 0xF);  // a tag is the address bits and the valid bits, nothing else
+  cmp(tag, tag_bits | 0xF);  // a tag is the address bits, the valid bits and kStale
   if (need == 0xF) {
     jne(miss, T_NEAR);
   } else {  // mostly the whole line is valid; the words needed alone are tested off the main path
@@ -31,12 +32,11 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
       L(partial);
       mov(eax, tag);
       xor_(eax, tag_bits | need);
-      test(eax, ICache::kTagMask | need);
+      test(eax, ICache::kTagMask | ICache::kStale | need);
       jnz(miss, T_NEAR);
       jmp(hit, T_NEAR);
     });
   }
-  line_words(run, fail, icache_words(line));
   if (filled) L(*filled);
 }
 
@@ -49,8 +49,8 @@ Xbyak::RegExp Impl::icache_words(u32 line) const {
   return r12 + int(at);
 }
 
-// Each word of `run` on its first word's line, in the four words at `at`, must be the word
-// compiled. Three or four words are compared at once with the line's compiled words, kept with
+// Each word of `run` on its first word's line, in the four words at `at` (a line's RAM), must
+// be the word compiled. Three or four words are compared at once with the line's compiled words, kept with
 // the cold code (SSE2: 37 bytes and 5 instructions on the main path instead of 48-61 bytes and
 // 6-8 compares and jumps); clobbers rax and xmm0 (no native code keeps anything there).
 void Impl::line_words(std::span<const Step> run, Label& fail, const Xbyak::RegExp& at) {
@@ -115,7 +115,8 @@ void Impl::icache_fill(u32 pc) {
   mov(ecx, 4);
   jmp(done);
   L(other);
-  mov(tag_at, tag | ((0xFu << first) & 0xF));
+  and_(tag_at, ICache::kStale);
+  or_(tag_at, tag | ((0xFu << first) & 0xF));
   for (u32 w = first; w < 4; ++w) {
     mov(ecx, dword[rsi + int(4 * w)]);
     mov(dword[words + int(4 * w)], ecx);
@@ -133,13 +134,16 @@ void Impl::icache_fill(u32 pc) {
 // still under way, then the fill and a word's time for each word read. Only a fill of the words
 // the run needs from this line that brings exactly the words compiled (RAM still holds them) is
 // made here, and not under a two-word block size (a fill entered at word 0 would leave words 2
-// and 3 missing); otherwise instruction k takes its slow path, nothing changed. The time is
-// left one cycle short: instruction k counts its own cycle.
+// and 3 missing), nor on a stale line, which may be a hit; otherwise instruction k takes its
+// slow path, nothing changed. The time is left one cycle short: instruction k counts its own
+// cycle.
 void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
   const u32 line = rest[0].pc & ~15u;
   L(seg.fill[k]);
-  mov(rax, reinterpret_cast<u64>(lay.cache_control));
   Label& slow = k == 0 ? seg.slow[0] : seg.slow_native[k];
+  test(icache_tag(line), ICache::kStale);
+  jnz(slow, T_NEAR);
+  mov(rax, reinterpret_cast<u64>(lay.cache_control));
   test(dword[rax], lay.icache_block_bits);
   jz(slow, T_NEAR);
   mov(rsi, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));

@@ -61,6 +61,15 @@ class RecompilerT {
 
  private:
   BlockEmitter::BlockFn compile(Cpu& cpu, u32 pc);
+  // The console's bus keeps i-cache lines stale where blocks were dropped (ICache::kStale); other
+  // buses have no i-cache and no native code.
+  bool memory_holds(u32 vaddr, u32 word) const {
+    if constexpr (std::is_same_v<BusT, Bus>) return bus_.memory_holds(vaddr, word);
+    else return true;
+  }
+  void recheck_icache_lines() {
+    if constexpr (std::is_same_v<BusT, Bus>) bus_.recheck_icache_lines();
+  }
   static bool ends_block(u32 instr);
   // The steps (recompiler_ops.h).
   static BlockEmitter::StepFn step_for(u32 word);
@@ -98,6 +107,7 @@ void RecompilerT<BusT>::run(Cpu& cpu) {
     }
     if (pages_.any_dirty()) {
       for (u32 page : pages_.take_dirty()) cache_.invalidate_page(page);
+      recheck_icache_lines();
       ++stats_.invalidated;
     }
     BlockEmitter::BlockFn block = cache_.find(cpu.pc_);
@@ -125,9 +135,11 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
   while (steps_.size() < kMaxBlock && bus_.peek_code(a, word)) {
     // A branch in a delay slot (jumping from where the first one went) stays a call step, and
     // so does a load or store that will likely find I/O.
+    // Native code runs only words that memory still holds (an i-cache line still holding older
+    // code runs it through calls), since it checks a line by its tag alone (ICache::kStale).
     NativeOp native = native_for(word);
     const bool branch_in_slot = delay_slot && ends_block(word);
-    if (branch_in_slot || guess.elsewhere(word)) native = NativeOp::None;
+    if (branch_in_slot || guess.elsewhere(word) || !memory_holds(a, word)) native = NativeOp::None;
     guess.after(word);
     steps_.push_back({a, word, step_for(word), native});
     if (delay_slot) break;
@@ -142,6 +154,7 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
     ++stats_.flushes;
     cache_.clear();
     pages_.clear();
+    recheck_icache_lines();
     emitter_->clear();
     fn = emitter_->emit(lay, steps_);
   }

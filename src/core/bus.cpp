@@ -122,8 +122,8 @@ bool Bus::fetch_slow(u32 vaddr, u32& word, Cycles busy_until) {
   return true;
 }
 
-bool Bus::peek_code(u32 vaddr, u32& word) const {
-  const u32 p = physical(vaddr);
+// peek_code() outside RAM (the BIOS ROM) or misaligned.
+bool Bus::peek_code_elsewhere(u32 vaddr, u32 p, u32& word) const {
   const u8* mem = code_memory(p);
   if ((vaddr & 3) || !mem) return false;
   const bool cached = vaddr < 0xA0000000 && (cache_control_ & kBccIs1) && icache_.hit(vaddr, p);

@@ -57,8 +57,14 @@ class Bus {
     return true;
   }
   // The word fetch() would execute at vaddr (the cached copy on a hit), without timing or fills;
-  // false where fetch() would fail.
-  bool peek_code(u32 vaddr, u32& word) const;
+  // false where fetch() would fail. Inline for RAM, where idle skipping looks at each word of a
+  // loop it repeats.
+  bool peek_code(u32 vaddr, u32& word) const {
+    const u32 p = physical(vaddr);
+    if (p >= 0x00800000 || (vaddr & 3)) return peek_code_elsewhere(vaddr, p, word);
+    word = cached_code(vaddr) && icache_.hit(vaddr, p) ? icache_.code(vaddr) : load_le32(&ram_[p & (kRamSize - 1)]);
+    return true;
+  }
   // Whether the memory at vaddr (RAM or the BIOS ROM, past the i-cache) holds `word`.
   bool memory_holds(u32 vaddr, u32 word) const {
     const u8* mem = code_memory(physical(vaddr));
@@ -201,6 +207,7 @@ class Bus {
   }
   // The memory holding the code word at physical address p (RAM or BIOS ROM), or nullptr.
   const u8* code_memory(u32 p) const;
+  bool peek_code_elsewhere(u32 vaddr, u32 p, u32& word) const;
   void update_read_cycles();
   Cycles io_read_cycles(u32 p, u32 width) const;
   bool read(u32 vaddr, u32& v, u32 width, bool time_ram = true);

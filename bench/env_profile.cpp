@@ -1,0 +1,65 @@
+// The Tumble environment's steady state for profilers: one environment on level 1, `warmup`
+// moves (the recompiler compiles the level's code then), then `moves` moves inside
+// measured_moves(), the function to give callgrind (`--toggle-collect=measured_moves`) or perf.
+// Prints emulated cycles per move and a hash of RAM, which a change meant to be bit-identical
+// must leave as they were. Actions and resets are bench_util.h's, as in env_bench.
+//   valgrind --tool=callgrind --toggle-collect=measured_moves build/bench/env_profile 200 100
+#include <cstdio>
+#include <cstdlib>
+
+#include "bench_util.h"
+#include "core/hash.h"
+
+using namespace psxrl::rl;
+
+namespace {
+
+struct Run {
+  Env env;
+  std::uint64_t seed = 1;
+  std::uint32_t lcg = 7;
+  psx::Cycles cycles = 0;  // emulated in moves, resets left out
+  std::uint64_t instructions = 0;  // executed by the CPU in moves (skipped idle loops are not)
+  explicit Run(const EnvConfig& c) : env(c) { env.reset(1, seed, nullptr); }
+};
+
+void play(Run& run, int moves) {
+  for (int i = 0; i < moves; ++i) {
+    const psx::Cycles before = run.env.console().cycles();
+    const std::uint64_t executed = run.env.console().instructions();
+    auto r = run.env.step(bench::action_at(run.lcg));
+    run.cycles += run.env.console().cycles() - before;
+    run.instructions += run.env.console().instructions() - executed;
+    if (r.terminated || r.truncated) run.env.reset(1, ++run.seed, nullptr);
+  }
+}
+
+// Separate from the warm-up, so that a profiler can be told to count this function alone.
+[[gnu::noinline]] void measured_moves(Run& run, int moves) { play(run, moves); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int warmup = argc > 1 ? std::atoi(argv[1]) : 200;
+  const int moves = argc > 2 ? std::atoi(argv[2]) : 100;
+  EnvConfig c;
+  c.obs = argc > 3 ? argv[3] : "simple";
+  Run run(c);
+  play(run, warmup);
+  run.cycles = run.instructions = 0;
+  const psx::IdleSkip::Stats idle0 = run.env.console().idle_skip_stats();
+  const auto t = bench::Clock::now();
+  measured_moves(run, moves);
+  const double seconds = bench::seconds_since(t);
+  const psx::IdleSkip::Stats& idle = run.env.console().idle_skip_stats();
+  const auto ram = run.env.console().ram();
+  std::printf("Tumble level 1, obs %s: %d moves after %d warm-up, %.3f s (%.1f moves/s)\n", c.obs.c_str(), moves,
+              warmup, seconds, moves / seconds);
+  std::printf("cycles per move %.1f, instructions per move %.1f, RAM hash %016llx\n",
+              static_cast<double>(run.cycles) / moves, static_cast<double>(run.instructions) / moves,
+              static_cast<unsigned long long>(psx::fnv1a(ram.data(), ram.size())));
+  std::printf("idle skipping per move: %.1f cycles in %.1f skips (%.1f made from the head, %.1f proofs)\n",
+              static_cast<double>(idle.cycles - idle0.cycles) / moves, static_cast<double>(idle.skips - idle0.skips) / moves,
+              static_cast<double>(idle.repeats - idle0.repeats) / moves, static_cast<double>(idle.proofs - idle0.proofs) / moves);
+  return 0;
+}

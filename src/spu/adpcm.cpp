@@ -21,6 +21,14 @@ u32 effective_shift(u8 header) {
 }
 u32 effective_filter(u8 header) { return std::min<u32>((header >> 4) & 7, 4); }
 
+// Sample i of a filter-0 block, with `shift` = 16 + the effective shift: filter 0 predicts
+// (0 + 32) >> 6 = 0 and a shifted nibble always fits in 16 bits, so this is the whole sample.
+// (nibble << 28) >> (16 + shift) is the signed nibble << 12 >> shift.
+s16 filter0_sample(const u8* data, u32 i, u32 shift) {
+  const u32 nibble = (data[i / 2] >> ((i & 1) * 4)) & 0xF;
+  return static_cast<s16>(static_cast<s32>(nibble << 28) >> shift);
+}
+
 // One decoder step: sample = (nibble << 12 >> shift) + (old*pos + older*neg + 32) >> 6.
 s16 predict(s32 nibble, u32 shift, u32 filter, const AdpcmHistory& h) {
   s32 s = (nibble * (1 << 12)) >> shift;
@@ -59,16 +67,12 @@ s64 try_encode(const s16* in, u32 shift, u32 filter, AdpcmHistory h, std::array<
 
 void decode_adpcm_block(const u8* block, AdpcmHistory& history, s16* out) {
   // The same steps as predict() (nibbles low first), with the weights and the history in
-  // registers. (nibble << 28) >> (16 + shift) is the signed nibble << 12 >> shift.
+  // registers.
   const u32 shift = 16 + effective_shift(block[0]);
   const u32 filter = effective_filter(block[0]);
   const u8* data = block + 2;
   if (filter == 0) {
-    // Filter 0 predicts (0 + 32) >> 6 = 0 and a shifted nibble always fits in 16 bits.
-    for (u32 i = 0; i < kAdpcmBlockSamples / 2; ++i) {
-      out[2 * i] = static_cast<s16>(static_cast<s32>(static_cast<u32>(data[i]) << 28) >> shift);
-      out[2 * i + 1] = static_cast<s16>(static_cast<s32>(static_cast<u32>(data[i] >> 4) << 28) >> shift);
-    }
+    for (u32 i = 0; i < kAdpcmBlockSamples; ++i) out[i] = filter0_sample(data, i, shift);
     history.old = out[kAdpcmBlockSamples - 1];
     history.older = out[kAdpcmBlockSamples - 2];
     return;
@@ -85,6 +89,14 @@ void decode_adpcm_block(const u8* block, AdpcmHistory& history, s16* out) {
   }
   history.old = static_cast<s16>(old);
   history.older = static_cast<s16>(older);
+}
+
+void decode_adpcm_block_end(const u8* block, AdpcmHistory& history, s16* out) {
+  if (effective_filter(block[0]) != 0) return decode_adpcm_block(block, history, out);
+  const u32 shift = 16 + effective_shift(block[0]);
+  for (u32 i = kAdpcmBlockSamples - 3; i < kAdpcmBlockSamples; ++i) out[i] = filter0_sample(block + 2, i, shift);
+  history.old = out[kAdpcmBlockSamples - 1];
+  history.older = out[kAdpcmBlockSamples - 2];
 }
 
 std::vector<u8> encode_adpcm(const s16* pcm, size_t count, const AdpcmEncodeOptions& options) {

@@ -24,10 +24,11 @@ void Voice::write_repeat_address(u16 value) {
   if (adsr.phase() != Adsr::Phase::Off) ignore_loop_start_ = true;
 }
 
-void Voice::fetch_block(const u8* ram) {
+void Voice::fetch_block(const u8* ram, bool whole) {
   if (has_block_) return;
   const u8* block = ram + ((current_address_ * 8u) & 0x7FFFF);
-  decode_adpcm_block(block, history_, &samples_[3]);
+  if (whole) decode_adpcm_block(block, history_, &samples_[3]);
+  else decode_adpcm_block_end(block, history_, &samples_[3]);
   block_flags_ = block[1];
   has_block_ = true;
   if ((block_flags_ & kAdpcmLoopStart) && !ignore_loop_start_) repeat_address = current_address_;
@@ -70,14 +71,16 @@ bool Voice::step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWi
   };
   u32 done = 0;  // samples stepped so far
   while (true) {
+    const u32 left = samples - done;
+    const u32 to_cross = step == 0 ? left + 1 : (kBlockEnd - counter_ + step - 1) / step;
     if (!has_block_) {
       const u32 addr = (current_address_ * 8u) & 0x7FFFF;
       // The first read sees the RAM of the run's first sample; later ones must not be written.
       if (done > 0 && (addr < unwritten.begin || addr + kAdpcmBlockBytes > unwritten.end)) return false;
-      fetch_block(ram);
+      // A block left with samples of the run to go is followed by the next block's fetch (or by
+      // a refused read, after which the caller restores the voice): its other samples go unread.
+      fetch_block(ram, to_cross >= left);
     }
-    const u32 left = samples - done;
-    const u32 to_cross = step == 0 ? left + 1 : (kBlockEnd - counter_ + step - 1) / step;
     if (to_cross > left) {
       tick(left);
       counter_ += left * step;  // stays inside the block

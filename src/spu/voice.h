@@ -32,8 +32,10 @@ class Voice {
   void write_repeat_address(u16 value);
 
   // Loads and decodes the block at the current address if not loaded yet; a LoopStart flag
-  // copies the current address into LSAX.
-  void fetch_block(const u8* ram);
+  // copies the current address into LSAX. `whole` false: the voice will leave the block before
+  // anything reads a sample of it and then fetch the next one, which overwrites the samples, so
+  // only the three it carries over are decoded where that is cheaper (decode_adpcm_block_end).
+  void fetch_block(const u8* ram, bool whole = true);
   // The interpolated sample at the pitch counter (call after fetch_block).
   s32 interpolate() const;
   // Adds the (already modulated and clipped) step to the pitch counter. Leaving the block

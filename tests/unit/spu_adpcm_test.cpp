@@ -3,6 +3,7 @@
 // 0,0,-52,-55,-60, shifts 13..15 act as 9, clamped to 16 bits), and the encoder's round trip.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -47,6 +48,35 @@ TEST(SpuAdpcm, Filter0IsTheShiftedNibbleAndSetsTheHistory) {
   EXPECT_EQ(out[1], 56);
   EXPECT_EQ(h.old, 0);
   EXPECT_EQ(h.older, 0);
+}
+
+TEST(SpuAdpcm, BlockEndDecodesTheLastThreeSamplesAndTheHistory) {
+  // Filter 0, shift 2: nibble * 1024. The last three nibbles, samples 25..27, are the high one of
+  // byte 12 (-3, 0xD) and both of byte 13 (5, then -8): -3072, 5120, -8192. Samples 0..24 are left
+  // as they were (here 77), and the history is the last two samples, as decode_adpcm_block() sets it.
+  auto b = block(0x02, {0x11, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0xD0, 0x85});
+  AdpcmHistory h{1000, -2000};
+  s16 out[28];
+  std::fill(std::begin(out), std::end(out), s16{77});
+  decode_adpcm_block_end(b.data(), h, out);
+  EXPECT_EQ(out[0], 77);
+  EXPECT_EQ(out[24], 77);
+  EXPECT_EQ(out[25], -3072);
+  EXPECT_EQ(out[26], 5120);
+  EXPECT_EQ(out[27], -8192);
+  EXPECT_EQ(h.old, -8192);
+  EXPECT_EQ(h.older, 5120);
+  // Any other filter links every sample to the ones before: the whole block is decoded. Filter 1,
+  // shift 2, nibble 1 then zeros from history 0: 1024, then each sample (old*60 + 32) >> 6.
+  auto c = block(0x12, {0x01});
+  AdpcmHistory h2;
+  std::fill(std::begin(out), std::end(out), s16{77});
+  decode_adpcm_block_end(c.data(), h2, out);
+  EXPECT_EQ(out[0], 1024);
+  EXPECT_EQ(out[1], 960);  // (1024*60 + 32) >> 6 = 61472 >> 6
+  EXPECT_EQ(out[2], 900);  // (960*60 + 32) >> 6 = 57632 >> 6
+  EXPECT_EQ(h2.old, out[27]);
+  EXPECT_EQ(h2.older, out[26]);
 }
 
 TEST(SpuAdpcm, Filter1ByHand) {

@@ -37,9 +37,9 @@ class RegisterLine {
   // Whether no register moves (every iteration starts from the same registers).
   bool still() const { return moving_count_ == 0; }
 
-  // regs + n*step, in place.
+  // regs + n*step, in place (the registers that do not move add 0).
   void advance(std::array<u32, 32>& regs, u32 n) const {
-    for (u32 r = 0; r < 32; ++r) regs[r] += n * steps_[r];
+    for (u32 i = 0; i < moving_count_; ++i) regs[moving_[i]] += n * steps_[moving_[i]];
   }
 
   // The smallest j with from + j*step == to, if there is one (0 when no register moves); the

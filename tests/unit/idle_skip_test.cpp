@@ -472,4 +472,12 @@ TEST(RegisterLine, IterationsAlongTheLineAndFixedRegisters) {
     EXPECT_TRUE(line.iterations(before, moved, j, 1u << r)) << "r" << r << " not named by the loop";
     EXPECT_EQ(j, 1000u);
   }
+  // advance() walks the line: 1000 steps from `before` reach `to`, 2^32 - 1 steps (one back)
+  // from `after` reach `before`, and the registers without a step stay as they were.
+  std::array<u32, 32> walked = before;
+  line.advance(walked, 1000);
+  EXPECT_EQ(walked, to);
+  walked = after;
+  line.advance(walked, ~0u);
+  EXPECT_EQ(walked, before);
 }

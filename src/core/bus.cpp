@@ -302,20 +302,31 @@ void Bus::expansion2_write(u32 p, u32 v, u32 width) {
 }
 
 void Bus::dma_write_ram(u32 addr, const u32* words, u32 count) {
-  // In runs up to RAM's end, where the address wraps; the code pages hear of a run at once.
+  // In runs up to RAM's end, where the address wraps; the code pages hear of a run at once, and
+  // a run no memory watch sees is one copy.
   for (u32 i = 0; i < count;) {
     const u32 start = (addr + i * 4) & (kRamSize - 4);
     const u32 run = std::min(count - i, (kRamSize - start) / 4);
     if (code_pages_) code_pages_->on_ram_range(start, run * 4);
+    if (!watches_) {
+      store_le32_words(&ram_[start], words + i, run);
+      i += run;
+      continue;
+    }
     for (u32 off = start; off < start + run * 4; off += 4, ++i) {
-      if (watches_ && watches_->ram_block_watched(off)) watched_store(&ram_[off], off, words[i], 4);
+      if (watches_->ram_block_watched(off)) watched_store(&ram_[off], off, words[i], 4);
       else store_le32(&ram_[off], words[i]);
     }
   }
 }
 
 void Bus::dma_read_ram(u32 addr, u32* words, u32 count) const {
-  for (u32 i = 0; i < count; ++i) words[i] = load_le32(&ram_[(addr + i * 4) & (kRamSize - 4)]);
+  for (u32 i = 0; i < count;) {  // in runs up to RAM's end, as dma_write_ram()
+    const u32 start = (addr + i * 4) & (kRamSize - 4);
+    const u32 run = std::min(count - i, (kRamSize - start) / 4);
+    load_le32_words(words + i, &ram_[start], run);
+    i += run;
+  }
 }
 
 void Bus::do_state(StateIO& s) {

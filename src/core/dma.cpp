@@ -258,10 +258,9 @@ u32 Dma::run_otc(u32 ch) {
   u32 n = count_or_max(c.bcr & 0xFFFF);
   u32 top = c.madr & kAddressMask;
   words_.resize(n);
-  for (u32 i = 0; i < n; ++i) {  // words_[0] is the lowest address
-    u32 addr = top - 4 * (n - 1 - i);
-    words_[i] = i == 0 ? kListEnd : (addr - 4) & 0x00FFFFFF;
-  }
+  // words_[0] is the lowest address, top - 4*(n-1); entry i points 4 bytes below its own address.
+  words_[0] = kListEnd;
+  for (u32 i = 1, below = top - 4 * (n - 1); i < n; ++i, below += 4) words_[i] = below & 0x00FFFFFF;
   bus_.dma_write_ram(top - 4 * (n - 1), words_.data(), n);
   charge(ch, n);
   finish(ch);

@@ -451,6 +451,17 @@ TEST_F(DmaTest, BurstIntoRamWrapsAtItsEndAndDropsCodeOnBothSides) {
   bus.attach_code_pages(nullptr);
 }
 
+TEST_F(DmaTest, BurstFromRamWrapsAtItsEnd) {
+  // MADR 1FFFF8h, four words to the device: the last two come from 0 and 4 (RAM repeats every
+  // 2 MiB, psx-spx "Memory Map").
+  set_ram32(0x1FFFF8, 0xB0), set_ram32(0x1FFFFC, 0xB1), set_ram32(0x0, 0xB2), set_ram32(0x4, 0xB3);
+  w(kDpcr, 0x00008000);
+  w(reg(3, kMadr), 0x1FFFF8);
+  w(reg(3, kBcr), 4);
+  w(reg(3, kChcr), 0x11000001);  // RAM to CD-ROM, sync mode 0, start + trigger
+  EXPECT_EQ(cdrom.received, (std::vector<u32>{0xB0, 0xB1, 0xB2, 0xB3}));
+}
+
 TEST_F(DmaTest, EndlessLinkedListDoesNotHangHost) {
   w(kDpcr, 0x00000800);
   set_ram32(0x100, 0x01000100);  // a node that points at itself

@@ -76,6 +76,9 @@ Console::~Console() = default;
 
 void Console::set_cpu_mode(CpuMode mode) {
   const bool recompile = mode == CpuMode::Recompiler;
+  // The code pages saw no RAM write while the interpreter ran, and native code trusts a cached
+  // line whose tag matches unless a write marked it stale (ICache::kStale).
+  if (recompile && cpu_mode() != CpuMode::Recompiler) recompiler_.drop_all();
   cpu_.set_recompiler(recompile ? &recompiler_ : nullptr);
   bus_.attach_code_pages(recompile ? &recompiler_.code_pages() : nullptr);
 }
@@ -87,6 +90,7 @@ void Console::load_bios_image(const std::vector<u8>& image, const std::string& n
     throw InputError::whole(name, "a BIOS image must be exactly 524288 bytes (512 KiB), this file has " +
                                       std::to_string(image.size()));
   bus_.load_bios(image);
+  recompiler_.drop_all();  // blocks compiled from the ROM before: no write reports a new image
   bios_hash_ = fnv1a(image.data(), image.size());
   cpu_.reset();
 }

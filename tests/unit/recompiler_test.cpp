@@ -489,4 +489,65 @@ TEST(RecompilerCode, StateWithOlderCodeCachedThanInRam) {
   EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
 }
 
+// Code rewritten while the interpreter runs (no code pages attached to see the write) and
+// cached again from RAM: the blocks compiled before from the old code must not run when the
+// recompiler takes over again, though the line's tag is the one they were compiled under.
+TEST(RecompilerCode, CodeRewrittenWhileTheInterpreterRan) {
+  const u32 base = 0x80010000, kS2 = 18, kRa = 31;
+  const auto jal = [](u32 target) { return 0x03u << 26 | ((target >> 2) & 0x03FFFFFF); };
+  std::vector<u32> code = {itype(0x09, kS1, kS1, 1), itype(0x09, kS2, kS2, 1),  // s2 += 1, then 7
+                           jal(base + 0x1000), kNop, j(base), kNop};            // evicts base's line
+  code.resize(0x400, kNop);
+  code.insert(code.end(), {rtype(0x08, kRa, 0, 0), kNop});  // base + 1000h: the same line, returns
+  std::vector<std::vector<psx::u8>> states;
+  for (bool recompiled : {false, true}) {
+    Console c;
+    c.set_idle_skip(false);
+    const auto mode = recompiled ? Console::CpuMode::Recompiler : Console::CpuMode::Interpreter;
+    c.set_cpu_mode(mode);
+    load_code(c, code, base, 0, {});
+    c.run_frames(1);
+    c.set_cpu_mode(Console::CpuMode::Interpreter);
+    c.write32(base + 4, itype(0x09, kS2, kS2, 7));
+    c.run_frames(1);  // the line is refilled with the new word
+    c.set_cpu_mode(mode);
+    c.run_frames(1);
+    states.push_back(state_of(c));
+  }
+  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+}
+
+// A BIOS image loaded over another while blocks compiled from the first are kept: the reset
+// code goes through 9FC01100h, which evicts the cached loop's line (9FC00100h, KSEG0), so the
+// loop is cached again from the new ROM, which no write reported.
+TEST(RecompilerCode, BiosLoadedOverAnother) {
+  const auto bios = [](u32 step) {
+    constexpr u32 kS2 = 18;
+    std::vector<psx::u8> image(psx::Bus::kBiosSize, 0);
+    const auto put = [&](u32 off, std::vector<u32> words) {
+      for (u32 w : words) psx::store_le32(&image[off], w), off += 4;
+    };
+    const auto go = [](u32 target) {  // lui t0; ori t0; jr t0; nop
+      return std::vector<u32>{itype(0x0F, 0, kT0, target >> 16), itype(0x0D, kT0, kT0, target & 0xFFFF),
+                              rtype(0x08, kT0, 0, 0), kNop};
+    };
+    put(0, go(0x9FC01100));
+    put(0x1100, go(0x9FC00100));
+    put(0x100, {itype(0x09, kS2, kS2, step), j(0x9FC00100), kNop});
+    return image;
+  };
+  std::vector<std::vector<psx::u8>> states;
+  for (bool recompiled : {false, true}) {
+    Console c;
+    c.set_idle_skip(false);
+    if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+    c.load_bios_image(bios(1), "one.bin");
+    c.run_frames(1);
+    c.load_bios_image(bios(7), "seven.bin");
+    c.run_frames(1);
+    states.push_back(state_of(c));
+  }
+  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+}
+
 }  // namespace

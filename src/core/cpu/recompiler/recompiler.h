@@ -58,6 +58,15 @@ class RecompilerT {
   size_t blocks() const { return cache_.size(); }
   // Bytes of the code buffer in use (what a console holds of it).
   size_t code_bytes() const { return emitter_ ? emitter_->bytes_used() : 0; }
+  // Drops every compiled block and the record of their code, as when the code buffer fills up:
+  // what a block was compiled from may have been written unseen (while the bus reported RAM
+  // writes to no code pages, the interpreter running).
+  void drop_all() {
+    cache_.clear();
+    pages_.clear();
+    recheck_icache_lines();
+    if (emitter_) emitter_->clear();
+  }
 
  private:
   BlockEmitter::BlockFn compile(Cpu& cpu, u32 pc);
@@ -152,10 +161,7 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
   BlockEmitter::BlockFn fn = emitter_->emit(lay, steps_);
   if (!fn) {
     ++stats_.flushes;
-    cache_.clear();
-    pages_.clear();
-    recheck_icache_lines();
-    emitter_->clear();
+    drop_all();
     fn = emitter_->emit(lay, steps_);
   }
   const u32 first = CodePages::page_of(pc), last = CodePages::page_of(steps_.back().pc);

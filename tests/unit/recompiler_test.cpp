@@ -51,6 +51,21 @@ void expect_same(const std::function<void(Console&)>& boot, const std::function<
   EXPECT_EQ(ref.recompiler_stats().compiled, 0u);
 }
 
+// Runs `scenario` on a console without idle skipping (which would skip a test loop's iterations
+// rather than run them) under the interpreter and then under the recompiler, `mode` being the
+// CPU mode it runs in, and expects the same state (state_of()) from both.
+void expect_same_state(const std::function<void(Console&, Console::CpuMode mode)>& scenario) {
+  std::vector<std::vector<psx::u8>> states;
+  for (const auto mode : {Console::CpuMode::Interpreter, Console::CpuMode::Recompiler}) {
+    Console c;
+    c.set_idle_skip(false);
+    c.set_cpu_mode(mode);
+    scenario(c, mode);
+    states.push_back(state_of(c));
+  }
+  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+}
+
 TEST(RecompilerPrograms, EveryTestRom) {
   std::vector<std::filesystem::path> exes;
   for (const auto& e : std::filesystem::directory_iterator(PSXRL_BUILD_DIR "/tests/roms"))
@@ -406,18 +421,12 @@ TEST(RecompilerCode, StateLoadedOverOtherCode) {
     c.run_frames(1);
     other = c.save_state(false);
   }
-  std::vector<std::vector<psx::u8>> states;
-  for (bool recompiled : {false, true}) {
-    Console c;
-    c.set_idle_skip(false);  // which would skip the loop's iterations rather than run them
-    if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+  expect_same_state([&](Console& c, Console::CpuMode) {
     load_code(c, program(1), base, 0, {});
     c.run_frames(1);
     c.load_state(other);
     c.run_frames(1);
-    states.push_back(state_of(c));
-  }
-  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+  });
 }
 
 // A routine rewritten while the i-cache still holds it is compiled again from the cached old
@@ -446,16 +455,10 @@ TEST(RecompilerCode, CodeRecompiledWhileTheICacheHoldsItsOldWord) {
   code.insert(code.end(), {rtype(0x08, kRa, 0, 0), kNop});  // y
   code.resize(0x440, kNop);
   code.insert(code.end(), {rtype(0x08, kRa, 0, 0), kNop});  // evict
-  std::vector<std::vector<psx::u8>> states;
-  for (bool recompiled : {false, true}) {
-    Console c;
-    c.set_idle_skip(false);
-    if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+  expect_same_state([&](Console& c, Console::CpuMode) {
     load_code(c, code, base, 0, {});
     c.run_frames(2);
-    states.push_back(state_of(c));
-  }
-  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+  });
 }
 
 // A state whose i-cache holds older code than its RAM (code rewritten since it was cached),
@@ -475,18 +478,12 @@ TEST(RecompilerCode, StateWithOlderCodeCachedThanInRam) {
     c.write32(base + 4, program(7)[1]);  // RAM now says 7; the cached line still says 1
     saved = c.save_state(false);
   }
-  std::vector<std::vector<psx::u8>> states;
-  for (bool recompiled : {false, true}) {
-    Console c;
-    c.set_idle_skip(false);
-    if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+  expect_same_state([&](Console& c, Console::CpuMode) {
     load_code(c, program(7), base, 0, {});
     c.run_frames(1);
     c.load_state(saved);
     c.run_frames(1);
-    states.push_back(state_of(c));
-  }
-  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+  });
 }
 
 // Code rewritten while the interpreter runs (no code pages attached to see the write) and
@@ -499,12 +496,7 @@ TEST(RecompilerCode, CodeRewrittenWhileTheInterpreterRan) {
                            jal(base + 0x1000), kNop, j(base), kNop};            // evicts base's line
   code.resize(0x400, kNop);
   code.insert(code.end(), {rtype(0x08, kRa, 0, 0), kNop});  // base + 1000h: the same line, returns
-  std::vector<std::vector<psx::u8>> states;
-  for (bool recompiled : {false, true}) {
-    Console c;
-    c.set_idle_skip(false);
-    const auto mode = recompiled ? Console::CpuMode::Recompiler : Console::CpuMode::Interpreter;
-    c.set_cpu_mode(mode);
+  expect_same_state([&](Console& c, Console::CpuMode mode) {
     load_code(c, code, base, 0, {});
     c.run_frames(1);
     c.set_cpu_mode(Console::CpuMode::Interpreter);
@@ -512,9 +504,7 @@ TEST(RecompilerCode, CodeRewrittenWhileTheInterpreterRan) {
     c.run_frames(1);  // the line is refilled with the new word
     c.set_cpu_mode(mode);
     c.run_frames(1);
-    states.push_back(state_of(c));
-  }
-  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+  });
 }
 
 // A BIOS image loaded over another while blocks compiled from the first are kept: the reset
@@ -536,18 +526,12 @@ TEST(RecompilerCode, BiosLoadedOverAnother) {
     put(0x100, {itype(0x09, kS2, kS2, step), j(0x9FC00100), kNop});
     return image;
   };
-  std::vector<std::vector<psx::u8>> states;
-  for (bool recompiled : {false, true}) {
-    Console c;
-    c.set_idle_skip(false);
-    if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
+  expect_same_state([&](Console& c, Console::CpuMode) {
     c.load_bios_image(bios(1), "one.bin");
     c.run_frames(1);
     c.load_bios_image(bios(7), "seven.bin");
     c.run_frames(1);
-    states.push_back(state_of(c));
-  }
-  EXPECT_TRUE(states[0] == states[1]) << "state differs under the recompiler";
+  });
 }
 
 }  // namespace

@@ -354,19 +354,18 @@ TEST(RecompilerMemory, BlockCompiledFromAStaleLineRefusedAfterARefill) {
   for (u32 at = 0; at < 4; ++at) {
     SCOPED_TRACE("P at word " + std::to_string(at) + " of its line");
     const u32 p = kBase + 0x40 + 4 * at, evict = p + 0x1000;
-    const u32 jal_p = 0x03u << 26 | ((p >> 2) & 0x03FFFFFF);
     std::vector<u32> code = {
-        jal_p,                                          // 0: P cached with the old word
+        jal(p),                                          // 0: P cached with the old word
         kNop,
         itype(0x23, kCode, kT0, 0x40 + 4 * at),        // 2: lw t0, P
         kNop,
         itype(0x09, kT0, kT0, 1),                      // 4: addiu s1, s1, 1 -> addiu s1, s1, 2
         itype(0x2B, kCode, kT0, 0x40 + 4 * at),        // 5: sw t0, P (RAM only)
-        jal_p,                                          // 6: the cache's old word
+        jal(p),                                          // 6: the cache's old word
         kNop,
         0x03u << 26 | ((evict >> 2) & 0x03FFFFFF),    // 8: jal evict
         kNop,
-        jal_p,                                          // 10: the loop
+        jal(p),                                          // 10: the loop
         kNop,
         j(kBase + 10 * 4), kNop};
     code.resize(16 + at, kNop);

@@ -254,7 +254,6 @@ TEST(RecompilerCode, NativeBranches) {
   const auto addiu = [](u32 t, u32 s, u32 imm) { return itype(0x09, s, t, imm); };
   const auto addu = [](u32 d, u32 s, u32 t) { return rtype(0x21, s, t, d); };
   const auto lw = [](u32 rt, u32 off) { return itype(0x23, 23, rt, off); };
-  const auto jal = [](u32 target) { return 0x03u << 26 | ((target >> 2) & 0x03FFFFFF); };
   std::vector<u32> code = {
       addiu(kT0, 0, 5),                                  // 0: t0 = 5
       addiu(kT0, kT0, 0xFFFF),                           // 1: loop: t0 -= 1
@@ -435,7 +434,6 @@ TEST(RecompilerCode, StateLoadedOverOtherCode) {
 // of the old word would pass the line's check.
 TEST(RecompilerCode, CodeRecompiledWhileTheICacheHoldsItsOldWord) {
   const u32 base = 0x80010000, kS2 = 18, kRa = 31;
-  const auto jal = [](u32 target) { return 0x03u << 26 | ((target >> 2) & 0x03FFFFFF); };
   const u32 x = base + 0x100, y = base + 0x400, evict = base + 0x1100;  // x and evict share line 10h
   std::vector<u32> code = {
       itype(0x0F, 0, kT0, 0x8001),                                  // lui t0, 8001h
@@ -491,7 +489,6 @@ TEST(RecompilerCode, StateWithOlderCodeCachedThanInRam) {
 // recompiler takes over again, though the line's tag is the one they were compiled under.
 TEST(RecompilerCode, CodeRewrittenWhileTheInterpreterRan) {
   const u32 base = 0x80010000, kS2 = 18, kRa = 31;
-  const auto jal = [](u32 target) { return 0x03u << 26 | ((target >> 2) & 0x03FFFFFF); };
   std::vector<u32> code = {itype(0x09, kS1, kS1, 1), itype(0x09, kS2, kS2, 1),  // s2 += 1, then 7
                            jal(base + 0x1000), kNop, j(base), kNop};            // evicts base's line
   code.resize(0x400, kNop);

@@ -20,6 +20,7 @@ constexpr u32 kT0 = 8, kT1 = 9, kS1 = 17;
 inline u32 itype(u32 op, u32 rs, u32 rt, u32 imm) { return op << 26 | rs << 21 | rt << 16 | (imm & 0xFFFF); }
 inline u32 rtype(u32 funct, u32 rs, u32 rt, u32 rd, u32 sa = 0) { return rs << 21 | rt << 16 | rd << 11 | sa << 6 | funct; }
 inline u32 j(u32 target) { return 0x02u << 26 | ((target >> 2) & 0x03FFFFFF); }
+inline u32 jal(u32 target) { return 0x03u << 26 | ((target >> 2) & 0x03FFFFFF); }
 constexpr u32 kNop = 0;
 
 // Loads `code` at `base` on a console without a BIOS, with an exception handler at 0x80000080

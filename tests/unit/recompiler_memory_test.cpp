@@ -355,17 +355,17 @@ TEST(RecompilerMemory, BlockCompiledFromAStaleLineRefusedAfterARefill) {
     SCOPED_TRACE("P at word " + std::to_string(at) + " of its line");
     const u32 p = kBase + 0x40 + 4 * at, evict = p + 0x1000;
     std::vector<u32> code = {
-        jal(p),                                          // 0: P cached with the old word
+        jal(p),                                        // 0: P cached with the old word
         kNop,
         itype(0x23, kCode, kT0, 0x40 + 4 * at),        // 2: lw t0, P
         kNop,
         itype(0x09, kT0, kT0, 1),                      // 4: addiu s1, s1, 1 -> addiu s1, s1, 2
         itype(0x2B, kCode, kT0, 0x40 + 4 * at),        // 5: sw t0, P (RAM only)
-        jal(p),                                          // 6: the cache's old word
+        jal(p),                                        // 6: the cache's old word
         kNop,
-        0x03u << 26 | ((evict >> 2) & 0x03FFFFFF),    // 8: jal evict
+        jal(evict),                                    // 8: jal evict
         kNop,
-        jal(p),                                          // 10: the loop
+        jal(p),                                        // 10: the loop
         kNop,
         j(kBase + 10 * 4), kNop};
     code.resize(16 + at, kNop);

@@ -1,8 +1,9 @@
 // The Tumble environment's steady state for profilers: one environment on level 1, `warmup`
 // moves (the recompiler compiles the level's code then), then `moves` moves inside
 // measured_moves(), the function to give callgrind (`--toggle-collect=measured_moves`) or perf.
-// Prints emulated cycles per move and a hash of RAM, which a change meant to be bit-identical
-// must leave as they were. Actions and resets are bench_util.h's, as in env_bench.
+// Prints emulated cycles and CPU instructions per move and a hash of RAM, which a change meant to
+// be bit-identical must leave as they were, and what idle skipping skipped. Actions and resets are
+// bench_util.h's, as in env_bench.
 //   valgrind --tool=callgrind --toggle-collect=measured_moves build/bench/env_profile 200 100
 #include <cstdio>
 #include <cstdlib>
@@ -19,7 +20,7 @@ struct Run {
   std::uint64_t seed = 1;
   std::uint32_t lcg = 7;
   psx::Cycles cycles = 0;  // emulated in moves, resets left out
-  std::uint64_t instructions = 0;  // executed by the CPU in moves (skipped idle loops are not)
+  std::uint64_t instructions = 0;  // the CPU's count in moves (skipped idle loops' included)
   explicit Run(const EnvConfig& c) : env(c) { env.reset(1, seed, nullptr); }
 };
 
@@ -58,8 +59,11 @@ int main(int argc, char** argv) {
   std::printf("cycles per move %.1f, instructions per move %.1f, RAM hash %016llx\n",
               static_cast<double>(run.cycles) / moves, static_cast<double>(run.instructions) / moves,
               static_cast<unsigned long long>(psx::fnv1a(ram.data(), ram.size())));
+  const auto per_move = [moves](std::uint64_t now, std::uint64_t before) {
+    return static_cast<double>(now - before) / moves;
+  };
   std::printf("idle skipping per move: %.1f cycles in %.1f skips (%.1f made from the head, %.1f proofs)\n",
-              static_cast<double>(idle.cycles - idle0.cycles) / moves, static_cast<double>(idle.skips - idle0.skips) / moves,
-              static_cast<double>(idle.repeats - idle0.repeats) / moves, static_cast<double>(idle.proofs - idle0.proofs) / moves);
+              per_move(idle.cycles, idle0.cycles), per_move(idle.skips, idle0.skips),
+              per_move(idle.repeats, idle0.repeats), per_move(idle.proofs, idle0.proofs));
   return 0;
 }

@@ -5,8 +5,6 @@
 // KSEG0). Everything else about an access (an address error, user mode, a debug data break armed,
 // an isolated cache for a store, D-cache mode, memory watches, I/O and the other regions) sends
 // the instruction to its call step.
-#include <array>
-
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
 #include "core/cpu/recompiler/code_pages.h"
@@ -23,16 +21,10 @@ constexpr u32 kRamMask = CodePages::kRamSize - 1;
 constexpr u32 kScratchBase = 0x1F800000, kScratchMask = 0x3FF;
 // Address bits that must be zero for RAM (below 8 MiB within the 512 MiB segment).
 constexpr u32 kNotRam = 0x1F800000;
-
-// By address bits 31-23 (the segment and the 8 MiB block within it): 0 where the address is RAM
-// as the native code makes the access (the first 8 MiB of KUSEG, KSEG0 or KSEG1), 1 elsewhere
-// (the scratchpad and everything the call step makes).
-constexpr std::array<u8, 512> kNotRamBlock = [] {
-  std::array<u8, 512> t{};
-  t.fill(1);
-  for (u32 segment : {0u, 4u, 5u}) t[segment << 6] = 0;
-  return t;
-}();
+// Address bits that must be zero for the RAM the main path takes: the first 8 MiB of KUSEG or
+// KSEG0 (segments 0 and 4; bit 30 and bits 28-23 clear, bit 29 clear). KSEG1's RAM (segment 5,
+// bit 29 set) and the scratchpad take the cold path, which sends the rest to the call step.
+constexpr u32 kNotCachedRam = 0x7F800000;
 
 u32 width_of(NativeOp op) {
   switch (op) {
@@ -69,21 +61,26 @@ void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   const u32 width = width_of(op);
   with_reg(rs(i), [&](const Xbyak::Operand& o) { mov(r13d, o); });
   if (simm(i) != 0) add(r13d, simm(i));
-  if (width > 1) {
-    test(r13d, width - 1);
-    jnz(slow, T_NEAR);
-  }
+  // One test on the main path: aligned, and KUSEG's or KSEG0's RAM.
   Label &not_ram = cold_label(), &ok = cold_label();
-  mov(ecx, r13d);
-  shr(ecx, 23);
-  mov(rdx, reinterpret_cast<u64>(kNotRamBlock.data()));
-  cmp(byte[rdx + rcx], 0);
-  jne(not_ram, T_NEAR);
+  test(r13d, kNotCachedRam | (width - 1));
+  jnz(not_ram, T_NEAR);
   L(ok);
-  cold.push_back([this, &not_ram, &ok, &slow] {
+  cold.push_back([this, &not_ram, &ok, &slow, width] {
+    Label not_kseg1;
     L(not_ram);
+    if (width > 1) {
+      test(r13d, width - 1);
+      jnz(slow, T_NEAR);
+    }
     mov(ecx, r13d);
     shr(ecx, 29);  // the segment: 0-3 KUSEG, 4 KSEG0, 5 KSEG1, 6-7 KSEG2
+    cmp(cl, 5);    // KSEG1's RAM: its first 8 MiB
+    jne(not_kseg1);
+    test(r13d, kNotRam);
+    jz(ok, T_NEAR);
+    jmp(slow, T_NEAR);
+    L(not_kseg1);
     test(cl, 3);  // the scratchpad: KUSEG or KSEG0 (segment 0 or 4) ...
     jnz(slow, T_NEAR);
     mov(edx, r13d);

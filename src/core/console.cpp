@@ -69,6 +69,7 @@ Console::Console()
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
   hle_.pad_at = [this](int port) -> SioDevice* { return sio0_.pad(port); };
   cpu_.reset();
+  idle_skip_.set_spu(&spu_);
   set_idle_skip(true);
 }
 

@@ -104,11 +104,18 @@ Cycles Spu::next_booking() const {
   // next instruction), so then every sample is booked.
   if (max_batch_ <= 1 || irq_possible()) return next_sample_;
   // SPUSTAT bit 11 (capture_pos_ >= 100h) flips with the sample that writes position FFh or
-  // 1FFh: the batch ends there, so a SPUSTAT read between events sees no change (idle skipping
-  // relies on that).
-  const u32 to_flip = 0x100 - (capture_pos_ & 0xFF);
-  const u32 batch = std::min(max_batch_, to_flip);
+  // 1FFh: where the batch ends there, a SPUSTAT read between events sees no change.
+  u32 batch = max_batch_;
+  if (batches_end_at_flips_) batch = std::min(batch, 0x100 - (capture_pos_ & 0xFF));
   return next_sample_ + (batch - 1) * kCyclesPerSample;
+}
+
+bool Spu::end_batches_at_flips() {
+  if (batches_end_at_flips_) return false;
+  sync();
+  batches_end_at_flips_ = true;
+  book();
+  return true;
 }
 
 void Spu::book() {

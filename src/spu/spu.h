@@ -33,10 +33,11 @@ class Spu final : public IoDevice, public DmaPort {
   static constexpr u32 kNumVoices = 24;
   static constexpr u32 kSampleRate = 44100;
   static constexpr Cycles kCyclesPerSample = 768;  // 33.8688 MHz / 44.1 kHz
-  // Longest batch, in samples. SPUSTAT bit 11 flips every 256 samples and idle skipping
-  // (cpu/idle_skip.h) counts on SPUSTAT changing only at an event, so no batch crosses a flip;
-  // this bound adds nothing beyond that and keeps a batch under a frame (735 samples at 60 Hz).
-  static constexpr u32 kDefaultMaxBatch = 256;
+  // Longest batch, in samples: more than a frame (882 samples at 50 Hz), so that a frame's own
+  // catch-up (Console::run_frame) ends most batches and the event rarely runs. Each event ends an
+  // idle skip and each catch-up has a fixed cost: batches of 256 cost Tumble's environment four
+  // catch-ups and three more skips a frame.
+  static constexpr u32 kDefaultMaxBatch = 1024;
 
   Spu(Scheduler& sched, InterruptController& irq, AudioFifo& cd_audio);
 
@@ -52,6 +53,13 @@ class Spu final : public IoDevice, public DmaPort {
   // results are bit-identical for any value).
   void set_max_batch(u32 samples);
   u32 max_batch() const { return max_batch_; }
+  // SPUSTAT bit 11 flips every 256 samples (the capture buffers' halves, psx-spx "SPU Status
+  // Register"), between events unless a batch ends at each flip. Idle skipping counts on an I/O
+  // register it lets a loop poll changing only at events (cpu/idle_skip.h), so it calls this when
+  // it meets a loop reading SPUSTAT: from then on batches end at the flips. Returns whether that
+  // was new (the event may then come sooner than the skipper saw). Results are the same bits
+  // either way, as for any batching.
+  bool end_batches_at_flips();
   // Makes the samples due and books the SPU's event at its next sample, whatever the batching, so
   // that a save state made now is the same bytes either way; the console calls it before saving
   // (loading do_state() books the event again by the loaded registers).
@@ -248,6 +256,7 @@ class Spu final : public IoDevice, public DmaPort {
   Scheduler::Handle sample_event_;
   Cycles next_sample_ = 0;
   u32 max_batch_ = kDefaultMaxBatch;
+  bool batches_end_at_flips_ = false;
 
   std::vector<u8> ram_;
   std::array<spu::Voice, kNumVoices> voices_{};

@@ -187,13 +187,20 @@ TEST(SpuLazy, BatchesMatchPerSampleWithIrqAddressInCaptureBuffers) { compare_bat
 TEST(SpuLazy, BatchesMatchPerSampleWithIrqAddressInReverbArea) { compare_batching(kReverbBase + 0x40, 3); }
 
 TEST(SpuLazy, EventsBatchWhileIrq9CannotFire) {
-  // Booking: one event per batch while IRQ9 is off (a batch ends where SPUSTAT bit 11 flips, every
-  // 256 samples), one per sample while it could fire.
+  // Booking: one event per batch while IRQ9 is off (kDefaultMaxBatch samples, or up to where
+  // SPUSTAT bit 11 flips, every 256 samples from power-on, once idle skipping has asked for
+  // that), one per sample while it could fire.
   Rig r(Spu::kDefaultMaxBatch);
   set_up(r, 0x0408 / 8);
   r.spu.sync();
-  const Cycles next = r.sched.when(r.sched.find("spu.sample"));
-  EXPECT_EQ((next - r.sched.now() + Spu::kCyclesPerSample - 1) / Spu::kCyclesPerSample, 256u);
+  const auto samples_to_event = [&r] {
+    const Cycles next = r.sched.when(r.sched.find("spu.sample"));
+    return (next - r.sched.now() + Spu::kCyclesPerSample - 1) / Spu::kCyclesPerSample;
+  };
+  EXPECT_EQ(samples_to_event(), Spu::kDefaultMaxBatch);
+  EXPECT_TRUE(r.spu.end_batches_at_flips());
+  EXPECT_FALSE(r.spu.end_batches_at_flips());  // asked once is enough
+  EXPECT_EQ(samples_to_event(), 256u);
   r.w16(kAttr, kAttrOn | kAttrIrq);
   EXPECT_LE(r.sched.when(r.sched.find("spu.sample")) - r.sched.now(), Spu::kCyclesPerSample);
 }
@@ -294,8 +301,9 @@ FlipRun count_stat_flips(bool idle_skip, u32 max_batch) {
 }  // namespace
 
 TEST(SpuLazy, SpustatPollSkippedIdleSeesEveryFlipOnTime) {
-  // Idle skipping takes SPUSTAT to change only at an event; a batch must not run past a flip. With
-  // 300-sample batches the batch ends alone would not fall on the flips.
+  // Idle skipping takes SPUSTAT to change only at an event, so the loop's first examination has
+  // the SPU end its batches at the flips (Spu::end_batches_at_flips). Batches of 1024 or 300
+  // samples alone would run past them.
   for (u32 batch : {Spu::kDefaultMaxBatch, 300u}) {
     const FlipRun on = count_stat_flips(true, batch), off = count_stat_flips(false, batch);
     EXPECT_GT(on.skips, 0u);

@@ -9,6 +9,7 @@
 #include "core/cpu/cpu.h"
 #include "core/cpu/idle_proof.h"
 #include "core/endian.h"
+#include "spu/spu.h"
 
 namespace psx {
 
@@ -17,10 +18,13 @@ extern template class CpuT<Bus>;
 
 namespace {
 
+constexpr u32 kSpustat = 0x1F801DAE;
+
 // I/O registers whose read changes nothing and whose value changes only when an event runs or
 // the CPU writes somewhere (psx-spx register descriptions; the devices' io_read confirm it):
 // memory control, RAM_SIZE, I_STAT/I_MASK, every DMA register, the CD-ROM status and interrupt
-// enable/flag registers (not the response or data FIFOs), SPUCNT and SPUSTAT; of GPUSTAT bits
+// enable/flag registers (not the response or data FIFOs), SPUCNT and SPUSTAT (bit 11 with the
+// SPU's batches ending at its flips, Spu::end_batches_at_flips); of GPUSTAT bits
 // 0-30, bit 31 being the line parity, which changes at every scanline while the line is counted
 // between events (gpu/video_timing.h); of JOY_STAT (pad/card port status) bits 0-10, bits 11-31
 // being its baud timer, which counts between events. Returns those bits of the 32-bit word at
@@ -33,7 +37,7 @@ u32 pure_io_bits(u32 p, u32 width) {
   if (p >= 0x1F801080 && p < 0x1F801100) return ~0u;
   if (p == 0x1F801800 || p == 0x1F801803) return ~0u;
   if (p >= 0x1F801814 && p < 0x1F801818) return 0x7FFFFFFF;
-  if ((p == 0x1F801DAA || p == 0x1F801DAE) && width <= 2) return ~0u;
+  if ((p == 0x1F801DAA || p == kSpustat) && width <= 2) return ~0u;
   if (p >= 0x1F801044 && p < 0x1F801048) return 0x7FF;
   return 0;
 }
@@ -189,6 +193,9 @@ IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
     if (width) {
       st.load_bits = pure_load_bits(cpu.cop0_.sr, st.addr, width, load_signed(instr));
       if (st.load_bits == 0) return Examined::refused;
+      // The first SPUSTAT poll makes the SPU end its batches at bit 11's flips, which may bring
+      // its event before the deadline this examination started with: examined again next time.
+      if (Bus::physical(st.addr) == kSpustat && spu_ && spu_->end_batches_at_flips()) return Examined::refused;
     }
     if (kind == IdleProof::Kind::Store && !note_store(cpu, st)) return Examined::refused;
     cpu.step();

@@ -48,6 +48,7 @@
 namespace psx {
 
 class Bus;
+class Spu;
 template <class BusT>
 class CpuT;
 
@@ -68,6 +69,9 @@ class IdleSkip {
   // iterations, or executes some, or does nothing.
   void at_loop_head(CpuT<Bus>& cpu);
   const Stats& stats() const { return stats_; }
+  // The console's SPU, whose SPUSTAT changes between events unless told (Spu::
+  // end_batches_at_flips): told when a loop reading SPUSTAT is first examined.
+  void set_spu(Spu* spu) { spu_ = spu; }
 
   // What at_loop_head() reads and writes to let a backing-off loop head pass (below), for native
   // code that does the same without returning to its dispatcher (the recompiler's chain()): byte
@@ -160,6 +164,7 @@ class IdleSkip {
   IdleCells cells_;                   // the words the recorded iteration stores to
   u32 path_len_ = 0;
   Stats stats_;
+  Spu* spu_ = nullptr;
 };
 
 }  // namespace psx

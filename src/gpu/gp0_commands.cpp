@@ -109,8 +109,11 @@ void Gpu::gp0_polygon() {
   if (textured) {
     // The polygon's texpage attribute replaces GP0(E1) bits 0-8 and 11.
     u32 mask = texture_disable_allowed_ ? 0x9FF : 0x1FF;
-    draw_mode_ = (draw_mode_ & ~mask) | (texpage & mask);
-    update_draw_state();
+    const u32 mode = (draw_mode_ & ~mask) | (texpage & mask);
+    if (mode != draw_mode_) {  // most polygons repeat the texpage in force
+      draw_mode_ = mode;
+      update_draw_state();
+    }
   }
   gpu::Triangle t;
   t.clut_x = static_cast<u16>((clut & 0x3F) * 16);

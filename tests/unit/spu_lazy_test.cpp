@@ -284,18 +284,26 @@ struct FlipRun {
   std::vector<u8> state;
   u64 skips;
   u32 flips;
-  Cycles cycles;
+  Cycles cycles, polled_from;
 };
 
-FlipRun count_stat_flips(bool idle_skip, u32 max_batch) {
+// `cycles_first` cycles spent first in a loop that reads nothing (j to itself), which idle
+// skipping skips while the SPU's batches run past the flips, since nothing polls SPUSTAT yet.
+FlipRun count_stat_flips(bool idle_skip, u32 max_batch, Cycles cycles_first = 0) {
   Console c;
   c.set_idle_skip(idle_skip);
   c.spu().set_max_batch(max_batch);
   const std::vector<u32> code = stat_flip_counter();
   for (u32 i = 0; i < code.size(); ++i) c.write32(0x80010000 + 4 * i, code[i]);
+  constexpr u32 kSpin = 0x80010100;
+  c.write32(kSpin, 0x02u << 26 | ((kSpin >> 2) & 0x03FFFFFF));  // j kSpin
+  c.write32(kSpin + 4, 0);                                      // nop
+  c.cpu().set_pc(kSpin);
+  if (cycles_first) c.run_cycles(cycles_first);
+  const Cycles polled_from = c.cycles();
   c.cpu().set_pc(0x80010000);
   c.run_frames(6);
-  return {c.save_state(false), c.idle_skip_stats().skips, c.cpu().reg(kS1), c.cycles()};
+  return {c.save_state(false), c.idle_skip_stats().skips, c.cpu().reg(kS1), c.cycles(), polled_from};
 }
 
 }  // namespace
@@ -312,6 +320,22 @@ TEST(SpuLazy, SpustatPollSkippedIdleSeesEveryFlipOnTime) {
     EXPECT_EQ(on.flips, on.cycles / (256 * Spu::kCyclesPerSample)) << batch;
     EXPECT_EQ(on.flips, off.flips) << batch;
   }
+}
+
+TEST(SpuLazy, SpustatFirstPolledAfterLongBatchesSeesEveryFlipOnTime) {
+  // The SPU has made 1024-sample batches for two frames and more when the loop starts polling,
+  // past VBlank's end, so that the next event (the next VBlank) lies beyond the next flip: the
+  // first examination must catch the SPU up, book that flip, and not skip towards the VBlank.
+  constexpr Cycles kFirst = 1'200'000;
+  const FlipRun on = count_stat_flips(true, Spu::kDefaultMaxBatch, kFirst);
+  const FlipRun off = count_stat_flips(false, Spu::kDefaultMaxBatch, kFirst);
+  EXPECT_GT(on.skips, 0u);
+  EXPECT_TRUE(on.state == off.state) << "state differs with idle skipping";
+  EXPECT_EQ(on.flips, off.flips);
+  // Counted from a first compare with bit 11 at 0: the flips up to the end, less those before
+  // polling began rounded down to an even number (bit 11 is back at 0 after each pair).
+  constexpr Cycles kFlip = 256 * Spu::kCyclesPerSample;
+  EXPECT_EQ(on.flips, on.cycles / kFlip - (on.polled_from / kFlip & ~Cycles{1}));
 }
 
 namespace {

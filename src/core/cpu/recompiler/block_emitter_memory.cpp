@@ -22,8 +22,8 @@ constexpr u32 kScratchBase = 0x1F800000, kScratchMask = 0x3FF;
 // Address bits that must be zero for RAM (below 8 MiB within the 512 MiB segment).
 constexpr u32 kNotRam = 0x1F800000;
 // Address bits that must be zero for the RAM the main path takes: the first 8 MiB of KUSEG or
-// KSEG0 (segments 0 and 4; bit 30 and bits 28-23 clear, bit 29 clear). KSEG1's RAM (segment 5,
-// bit 29 set) and the scratchpad take the cold path, which sends the rest to the call step.
+// KSEG0 (segments 0 and 4: bits 30-23 clear). KSEG1's RAM (segment 5: bit 29 set) and the
+// scratchpad take the cold path, which sends the rest to the call step.
 constexpr u32 kNotCachedRam = 0x7F800000;
 
 u32 width_of(NativeOp op) {

@@ -295,11 +295,13 @@ FlipRun count_stat_flips(bool idle_skip, u32 max_batch, Cycles cycles_first = 0)
   c.spu().set_max_batch(max_batch);
   const std::vector<u32> code = stat_flip_counter();
   for (u32 i = 0; i < code.size(); ++i) c.write32(0x80010000 + 4 * i, code[i]);
-  constexpr u32 kSpin = 0x80010100;
-  c.write32(kSpin, 0x02u << 26 | ((kSpin >> 2) & 0x03FFFFFF));  // j kSpin
-  c.write32(kSpin + 4, 0);                                      // nop
-  c.cpu().set_pc(kSpin);
-  if (cycles_first) c.run_cycles(cycles_first);
+  if (cycles_first) {
+    constexpr u32 kSpin = 0x80010100;
+    c.write32(kSpin, 0x02u << 26 | ((kSpin >> 2) & 0x03FFFFFF));  // j kSpin
+    c.write32(kSpin + 4, 0);                                      // nop
+    c.cpu().set_pc(kSpin);
+    c.run_cycles(cycles_first);
+  }
   const Cycles polled_from = c.cycles();
   c.cpu().set_pc(0x80010000);
   c.run_frames(6);

@@ -25,8 +25,8 @@
 //     keeps its counter in such a word.
 //  3. The largest whole number of iterations that ends before the next event and within that bound
 //     is skipped; the stored words get the values the last of them would have stored.
-// A loop usually reaches its head again right after the event that ended a skip (the SPU's
-// sample event alone falls due every 768 cycles). Its next recorded iteration then mostly repeats
+// A loop usually reaches its head again right after the event that ended a skip (a pad
+// transfer's loops wait out two SIO events a byte). Its next recorded iteration then mostly repeats
 // one proven before, only started further along the same line (a spin counter a few iterations
 // on), and that proof is reused instead of redone: step 2 is most of the cost of an examination.
 // The last few proofs are kept, for loops that take turns. (Not for loops that store: a counter

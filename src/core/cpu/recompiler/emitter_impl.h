@@ -192,11 +192,15 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void guard(std::span<const Step> run, Xbyak::Label& fail, Checks checks, std::optional<u32> budget,
              Xbyak::Label* fill = nullptr, Xbyak::Label* filled = nullptr);
   static constexpr u32 kNeedsMemory = 1, kNeedsStores = 2, kNeedsCop2 = 4;
-  void machine_checks(u32 needs, Xbyak::Label& fail);
+  // `framed`: emitted in the block's frame (rsp), where needs_checks() may use the vouch byte.
+  void machine_checks(u32 needs, Xbyak::Label& fail, bool framed);
   void state_checks(Xbyak::Label& fail);
   void pc_checks(u32 first, Xbyak::Label& fail);
   void loop_head_check(u32 first, u32 bytes, Xbyak::Label& fail);
-  void needs_checks(u32 needs, Xbyak::Label& fail);
+  void needs_checks(u32 needs, Xbyak::Label& fail, bool framed);
+  void specific_needs_checks(u32 needs, Xbyak::Label& fail);
+  // The frame's byte (from rsp) that vouches for every needs check since the last call.
+  static constexpr int kVouched = 1;
   // Nops from getSize() up to `start` + `bytes`; throws where the code since `start` is longer.
   void pad_to(size_t start, size_t bytes, const char* what);
   Xbyak::Label& machine_routine(u32 needs);

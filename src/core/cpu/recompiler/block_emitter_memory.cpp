@@ -275,7 +275,7 @@ void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
 // when the word holds compiled code, or to the scratchpad. Stores take no time (the write queue).
 void Impl::store(NativeOp op, u32 i) {
   const u32 width = width_of(op);
-  Label &scratchpad = cold_label(), &code = cold_label(), &done = cold_label();
+  Label &scratchpad = cold_label(), &done = cold_label();
   const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // SWL/SWR write into the word holding the address
   if (op == NativeOp::Swc2) {  // SWC2: the GTE register, once the GTE is done
     wait_gte();
@@ -298,17 +298,28 @@ void Impl::store(NativeOp op, u32 i) {
   };
   mov(rdx, reinterpret_cast<u64>(lay.ram));
   write();
+  // The page's word bits: mostly none (a page of data), so the word's own bit is tested off the
+  // main path.
   mov(edx, ecx);
   shr(edx, CodePages::kPageBits);
-  mov(rsi, reinterpret_cast<u64>(lay.code_bits));
-  mov(rsi, qword[rsi + rdx * 8]);
-  mov(edx, ecx);
-  shr(edx, 2);
-  bt(rsi, rdx);  // the word's bit (the offset counts modulo 64)
-  jc(code, T_NEAR);
+  Label& page_code = cold_label();
+  if (const auto d = from_context(lay.code_bits); d && from_context(lay.code_bits + CodePages::kPages)) {
+    cmp(qword[rbx + rdx * 8 + *d], 0);
+  } else {
+    mov(rsi, reinterpret_cast<u64>(lay.code_bits));
+    cmp(qword[rsi + rdx * 8], 0);
+  }
+  jne(page_code, T_NEAR);
   L(done);
-  cold.push_back([this, &scratchpad, &code, &done, word_mask, write] {
-    L(code);  // a word holding compiled code: its page's blocks are dropped
+  cold.push_back([this, &scratchpad, &done, &page_code, word_mask, write] {
+    L(page_code);
+    mov(rsi, reinterpret_cast<u64>(lay.code_bits));
+    mov(rsi, qword[rsi + rdx * 8]);
+    mov(edx, ecx);
+    shr(edx, 2);
+    bt(rsi, rdx);  // the word's bit (the offset counts modulo 64)
+    jnc(done, T_NEAR);
+    // A word holding compiled code: its page's blocks are dropped.
     mov(rdi, reinterpret_cast<u64>(lay.code_pages));
     mov(esi, ecx);
     call_leaf(reinterpret_cast<const void*>(lay.code_write));

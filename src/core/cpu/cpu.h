@@ -221,6 +221,9 @@ class CpuT {
   u64 instructions_ = 0;
   bool stop_ = false;
   bool hook_armed_ = false;
+  // The recompiler's written-code flag (CodePages::keep_flag_at): here, so that compiled blocks
+  // test it with stop_ and hook_armed_ in one compare.
+  bool code_written_ = false;
   u32 hook_pc_ = 0;
   // Host-side idle-skip bookkeeping (not machine state, not saved).
   IdleSkip* idle_skip_ = nullptr;

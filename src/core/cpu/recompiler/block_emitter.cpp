@@ -440,7 +440,10 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   clean = clean && !ends_in_branch;  // a branch's delay slot is the next block's (pc_checks())
   const bool deferred = std::exchange(defer_shadow, false);
   Label back, no_loop_head, loop_head_pending;
-  if (clean) cmp(word[rbx + lay.stop], 0);  // stop_ and hook_armed_ together (Layout)
+  // stop_ and hook_armed_ together (Layout), and the written-code flag where it follows them.
+  const bool flag_follows = from_context(lay.any_dirty) == lay.stop + 2;
+  if (flag_follows) test(dword[rbx + lay.stop], clean ? 0x00FFFFFF : 0x00FF00FF);
+  else if (clean) cmp(word[rbx + lay.stop], 0);
   else cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
   cmp(now, deadline);
@@ -459,13 +462,15 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
       jnz(back, T_NEAR);
     }
   }
-  if (const auto d = from_context(lay.any_dirty)) {
-    cmp(byte[rbx + *d], 0);
-  } else {
-    mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
-    cmp(byte[rcx], 0);
+  if (!flag_follows) {
+    if (const auto d = from_context(lay.any_dirty)) {
+      cmp(byte[rbx + *d], 0);
+    } else {
+      mov(rcx, reinterpret_cast<u64>(lay.any_dirty));
+      cmp(byte[rcx], 0);
+    }
+    jne(back, T_NEAR);
   }
-  jne(back, T_NEAR);
   // This block is find()'s for its own pc while no code page is written.
   if (clean && self_loop && (!target || *target == block_pc)) {
     Label other;

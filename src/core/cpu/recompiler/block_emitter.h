@@ -95,7 +95,8 @@ class BlockEmitter {
     u32 (*gte_cycles)(u32 command);              // the same cycles, known when compiling
     u32 gte_longest;                             // the most cycles of any command
     // Going on to the next block without the dispatcher (RecompilerT::run): CodePages::
-    // any_dirty_cell() and BlockCache::recent_table() (kRecent entries).
+    // any_dirty_cell() (mostly the byte after hook_armed, tested with it) and
+    // BlockCache::recent_table() (kRecent entries).
     const bool* any_dirty;
     const void* recent_blocks;
     u32 recent_count;

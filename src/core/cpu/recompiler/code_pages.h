@@ -17,6 +17,9 @@ namespace psx {
 
 class CodePages {
  public:
+  CodePages() = default;
+  CodePages(const CodePages&) = delete;  // any_dirty_ may point into this one
+  CodePages& operator=(const CodePages&) = delete;
   static constexpr u32 kRamSize = 2 * 1024 * 1024;
   // Word bits, so that stores to data next to code (a program's variables right after its code)
   // drop no blocks: recompiling is far dearer than a store. 64 words a page: one u64 of bits.
@@ -77,20 +80,25 @@ class CodePages {
   // The word bits in place (kPages u64s, never reallocated), for native stores, which call
   // on_ram_write() only for a word whose bit is set.
   const u64* bits() const { return code_.data(); }
-  bool any_dirty() const { return any_dirty_; }
+  bool any_dirty() const { return *any_dirty_; }
   // any_dirty() in place, for compiled blocks that go on to the next block themselves.
-  const bool* any_dirty_cell() const { return &any_dirty_; }
+  const bool* any_dirty_cell() const { return any_dirty_; }
+  // Keeps any_dirty() at `cell` from now on (the CPU's, next to what blocks test with it).
+  void keep_flag_at(bool* cell) {
+    *cell = *any_dirty_;
+    any_dirty_ = cell;
+  }
   // The pages written since the last call, each once.
   std::vector<u32> take_dirty() {
     std::vector<u32> out;
     out.swap(dirty_);
-    any_dirty_ = false;
+    *any_dirty_ = false;
     return out;
   }
   void clear() {
     std::fill(code_.begin(), code_.end(), 0);  // in place: bits() stays valid
     dirty_.clear();
-    any_dirty_ = false;
+    *any_dirty_ = false;
   }
 
  private:
@@ -108,12 +116,13 @@ class CodePages {
     }
     code_[page] = 0;
     dirty_.push_back(page);
-    any_dirty_ = true;
+    *any_dirty_ = true;
   }
 
   std::vector<u64> code_ = std::vector<u64>(kPages);  // bit w of page p: word p * 64 + w
   std::vector<u32> dirty_;
-  bool any_dirty_ = false;  // !dirty_.empty()
+  bool own_flag_ = false;
+  bool* any_dirty_ = &own_flag_;  // !dirty_.empty()
   ICache* icache_ = nullptr;
 };
 

@@ -195,7 +195,8 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   static_assert(sizeof(c.muldiv_ready_at_) == 8 && sizeof(c.gte_ready_at_) == 8);
   static_assert(sizeof(c.hi_) == 4 && sizeof(bool) == 1);
   static_assert(sizeof(c.pc_) == 4 && sizeof(c.load_reg_) == 4 && sizeof(c.shadow_reg_) == 4);
-  static_assert(sizeof(c.stop_) == 1 && sizeof(c.hook_armed_) == 1 && sizeof(c.idle_skip_) == 8);
+  static_assert(sizeof(c.stop_) == 1 && sizeof(c.hook_armed_) == 1 && sizeof(c.code_written_) == 1);
+  static_assert(sizeof(c.idle_skip_) == 8);
   static_assert(sizeof(c.hooks_) == 8 && sizeof(c.hook_pc_) == 4 && sizeof(c.extra_hook_pc_) == 4);
   BlockEmitter::Layout l{};
   l.context = &c;
@@ -251,6 +252,7 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.lo = cpu_at(&c.lo_);
   l.load_issue = int(Cpu::kLoadIssue);
   l.load_bus = int(Cpu::kLoadBus);
+  pages_.keep_flag_at(&c.code_written_);
   l.any_dirty = pages_.any_dirty_cell();
   l.recent_blocks = cache_.recent_table();
   l.recent_count = BlockCache::kRecent;

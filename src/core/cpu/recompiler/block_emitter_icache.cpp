@@ -98,12 +98,22 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
 // ICache::fill() and Bus::icache_miss() for a miss at pc under a four-word block size, from the
 // line's RAM at rsi: a line whose tag holds pc's address is refilled whole, any other is
 // replaced from pc's word to the line's end; fetch_hit()'s table then names the line where all
-// four words are valid. Leaves the words read in eax.
-void Impl::icache_fill(u32 pc) {
+// four words are valid. Each way then calls `done` with the number of words read.
+template <class Done>
+void Impl::icache_fill(u32 pc, Done done) {
   const u32 line = pc & ~15u, first = ICache::word(pc), tag = Bus::physical(line) & ICache::kTagMask;
   const Xbyak::Address tag_at = icache_tag(line);
   const Xbyak::RegExp words = icache_words(line);
-  Label other, done;
+  u32* const hot = &lay.hot_lines[ICache::line(line)];
+  const auto note_hot = [&](u32 value) {
+    if (const auto d = from_context(hot)) {
+      mov(dword[rbx + *d], value);
+    } else {
+      mov(rax, reinterpret_cast<u64>(hot));
+      mov(dword[rax], value);
+    }
+  };
+  Label other;
   mov(ecx, tag_at);
   xor_(ecx, tag);
   test(ecx, ICache::kTagMask);
@@ -111,9 +121,8 @@ void Impl::icache_fill(u32 pc) {
   or_(tag_at, 0xF);
   movdqu(xmm0, ptr[rsi]);
   movdqu(ptr[words], xmm0);
-  mov(edx, line);
-  mov(ecx, 4);
-  jmp(done);
+  note_hot(line);
+  done(4);
   L(other);
   and_(tag_at, ICache::kStale);
   or_(tag_at, tag | ((0xFu << first) & 0xF));
@@ -121,12 +130,8 @@ void Impl::icache_fill(u32 pc) {
     mov(ecx, dword[rsi + int(4 * w)]);
     mov(dword[words + int(4 * w)], ecx);
   }
-  mov(edx, first == 0 ? line : lay.no_hot_line);
-  mov(ecx, 4 - first);
-  L(done);
-  mov(rax, reinterpret_cast<u64>(&lay.hot_lines[ICache::line(line)]));
-  mov(dword[rax], edx);
-  mov(eax, ecx);
+  note_hot(first == 0 ? line : lay.no_hot_line);
+  done(4 - first);
 }
 
 // The fetch of rest[0] (instruction k) missing the i-cache, as CpuT::execute_at_pc() and
@@ -148,14 +153,14 @@ void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
   jz(slow, T_NEAR);
   mov(rsi, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
   line_words(rest, slow, rsi);
-  icache_fill(rest[0].pc);
-  lea(rcx, ptr[now + int(seg.time_in[k]) + 1]);  // the time (Impl::owed) and the cycle
+  lea(r8, ptr[now + int(seg.time_in[k]) + 1]);  // the time (Impl::owed) and the cycle
   mov(rdx, cpu64(lay.load_done_at));
-  cmp(rcx, rdx);
-  cmovb(rcx, rdx);
-  imul(eax, eax, lay.fetch_word_cycles);
-  lea(now, ptr[rcx + rax - 1 - int(seg.time_in[k])]);
-  jmp(seg.filled[k], T_NEAR);
+  cmp(r8, rdx);
+  cmovb(r8, rdx);
+  icache_fill(rest[0].pc, [&](u32 words) {
+    lea(now, ptr[r8 + int(words * lay.fetch_word_cycles) - 1 - int(seg.time_in[k])]);
+    jmp(seg.filled[k], T_NEAR);
+  });
 }
 
 }  // namespace psx

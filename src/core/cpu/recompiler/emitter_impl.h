@@ -214,7 +214,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   bool fills_natively(u32 pc) const;
   Xbyak::Label* fill_entry(u32 pc, Segment& seg, size_t k) const;
   void fill_stub(std::span<const Step> rest, size_t k, Segment& seg);
-  void icache_fill(u32 pc);
+  template <class Done>
+  void icache_fill(u32 pc, Done done);
   // block_emitter.cpp
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);

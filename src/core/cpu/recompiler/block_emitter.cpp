@@ -508,10 +508,18 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
     mov(ecx, eax);
     and_(ecx, (lay.recent_count - 1) << 2);
     shl(ecx, 2);
-    mov(rdx, reinterpret_cast<u64>(lay.recent_blocks));
-    cmp(dword[rdx + rcx], eax);
-    jne(back, T_NEAR);
-    mov(rax, qword[rdx + rcx + 8]);
+    const auto* table = static_cast<const char*>(lay.recent_blocks);
+    const auto d = from_context(table);
+    if (d && from_context(table + lay.recent_count * 16)) {  // the whole table within reach of rbx
+      cmp(dword[rbx + rcx + *d], eax);
+      jne(back, T_NEAR);
+      mov(rax, qword[rbx + rcx + *d + 8]);
+    } else {
+      mov(rdx, reinterpret_cast<u64>(table));
+      cmp(dword[rdx + rcx], eax);
+      jne(back, T_NEAR);
+      mov(rax, qword[rdx + rcx + 8]);
+    }
   }
   add(rax, clean ? kCleanEntry : kPrologueBytes);
   jmp(rax);

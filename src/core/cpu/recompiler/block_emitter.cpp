@@ -195,6 +195,7 @@ void Impl::guard(std::span<const Step> run, Label& fail, Checks checks, std::opt
     return;
   }
   if (budget) budget_check(*budget, fail);
+  else if (checks == Checks::entry) budget_check(0, fail);  // the deadline, for a clean chain()
   line_check(run, fail, fill, filled);
 }
 
@@ -425,7 +426,10 @@ void Impl::sync_pc(std::span<const Step> run, size_t j) {
 // since. It skips the next block's loop_head_check() too, having seen no loop head pending, or
 // none that matters (no idle skipping), or the one at its pc cleared by loop_head_routine(); a
 // loop head pending elsewhere (left by an exception before the branch's target was reached)
-// sends it back to the dispatcher.
+// sends it back to the dispatcher. Nor does it check the deadline itself: the clean entry does
+// before anything changes (its budget check, or a deadline check where the first run has no
+// budget, or the first call's may_step()), and at the deadline its refusal leaves by a call that
+// answers false to the exit's chain, which does check (else it would enter the block again).
 // A block that is one native segment and branches back to its start (loops_natively) goes, on that
 // branch, straight to its first instruction (`loop`, the segment's resume[0]) past its whole guard
 // when no call was made since the guard passed (the frame's spare byte at rsp says; a load or
@@ -446,8 +450,10 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   else if (clean) cmp(word[rbx + lay.stop], 0);
   else cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
-  cmp(now, deadline);
-  jae(back, T_NEAR);
+  if (!clean) {  // a clean chain leaves the deadline to the next block's clean entry (above)
+    cmp(now, deadline);
+    jae(back, T_NEAR);
+  }
   if (clean) {  // mostly no loop head is pending: then on, past the next block's loop-head check
     cmp(cpu32(lay.loop_head), lay.no_loop_head);
     jne(loop_head_pending, T_NEAR);
@@ -525,6 +531,8 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   jmp(rax);
   if (clean) {  // a loop head pending: without idle skipping none matters; else at the pc only
     L(loop_head_pending);
+    cmp(now, deadline);  // at the deadline, the loop head stays for the dispatcher
+    jae(back, T_NEAR);
     cmp(qword[rbx + lay.idle_skip], 0);
     je(no_loop_head, T_NEAR);
     loop_head_at_pc(target, no_loop_head, back);  // the routine cleared it where it goes on

@@ -192,6 +192,36 @@ TEST(RecompilerTiming, ProbedEveryFewCycles) {
   expect_same_trace(code, 3, 3, 1);
 }
 
+// Blocks go on past conditional branches that fall through (BlockEmitter::goes_on()): runs of a
+// load, a short forward branch (never, always or about half the time taken) with an ALU delay
+// slot at no line's start (the load before it leaves no stall to check), and an ALU operation,
+// so that blocks reach kMaxBlock with branches split inside them, probed at
+// gaps shorter and longer than a block (a return inside a segment, or where a chain finds the
+// deadline reached): the position and delay-slot flags after a branch that fell through, at
+// every return.
+TEST(RecompilerTiming, ProbedBranchesFallingThrough) {
+  std::vector<u32> code;
+  std::mt19937 rng(11);
+  for (u32 i = 0; i < 240; i += 4) {
+    const u32 s = kT0 + rng() % 4, d = kT0 + rng() % 4;
+    code.push_back(itype(0x23, kS7, d, (rng() % 256) * 4));  // LW
+    switch (rng() % 4) {  // to the ADDU (where it falls through too) or past it
+      case 0: code.push_back(itype(0x05, 0, 0, 1 + rng() % 2)); break;  // BNE r0, r0: never taken
+      case 1: code.push_back(itype(0x04, 0, 0, 1 + rng() % 2)); break;  // BEQ r0, r0: always
+      case 2: code.push_back(itype(0x07, s, 0, 1 + rng() % 2)); break;  // BGTZ s
+      default: code.push_back(itype(0x01, s, 0, 1 + rng() % 2)); break;  // BLTZ s
+    }
+    code.push_back(itype(0x09, s, kT0 + rng() % 4, rng() & 0xFF));  // ADDIU (the delay slot)
+    code.push_back(rtype(0x21, s, d, kT0 + rng() % 4));             // ADDU
+  }
+  code.push_back(j(kBase));
+  code.push_back(kNop);
+  for (u32 gap : {3u, 17u, 60u, 150u}) {
+    SCOPED_TRACE("gap " + std::to_string(gap));
+    expect_same_trace(code, gap, gap, 1);
+  }
+}
+
 // Native code checks the deadline once per segment, against a bound on the cycles the segment's
 // instructions can take (BlockEmitter's budget_check): each load's issue and bus access, each
 // multiply's, divide's and GTE command's duration, the fill of each line, and the wait for a

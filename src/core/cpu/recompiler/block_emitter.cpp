@@ -367,13 +367,13 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
     mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
     mov(byte[rbx + lay.in_delay_slot], 1);
     if (!delay_dest) mov(byte[rbx + lay.next_in_delay], 0);  // a split branch left it so
-  } else if (k == 0) {
+  } else if (k == 0 || (k >= 2 && seg.mid[k - 2])) {  // after a delay slot, not in one
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
   ++owed;  // the instruction's cycle
   shadow(s, k, seg);
   if (uses_time(op)) settle();
-  const bool split = seg.split && k + 2 == seg.count;  // a split branch (Segment::split)
+  const bool split = (seg.split && k + 2 == seg.count) || seg.mid[k];  // a split branch (Segment)
   if (after_branch && delay_dest) {
     mov(cpu32(lay.pc), *delay_dest);
     mov(cpu32(lay.next_pc), *delay_dest + 4);
@@ -648,16 +648,15 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
     seg.pipe[k] = {false, is_delayed(run[k - 1].native), cpu_detail::rt(run[k - 1].word)};
     seg.lazy[k - 1] = is_delayed(run[k - 1].native) && lazy_lands(run[k].native);
   }
-  // Instructions since the last that may have left a load shadowed, this one included.
-  const size_t reach = size_t(lay.load_issue + lay.load_bus - 1);
-  seg.shadow.resize(seg.count);
-  seg.shadowed.assign(seg.count, Segment::kUnknownShadow);
-  for (size_t k = 0, since = 1, last = 0; k < seg.count; ++k) {
-    seg.shadow[k] = since < reach ? Shadow::check : since == reach ? Shadow::clear : Shadow::none;
-    if (seg.shadow[k] == Shadow::check && k > 0 && is_load(run[last].native) && k - last < reach)
-      seg.shadowed[k] = cpu_detail::rt(run[last].word);
-    if (is_load(run[k].native)) last = k;
-    since = is_load(run[k].native) ? 1 : since + 1;
+  plan_shadow(run, u32(lay.load_issue + lay.load_bus - 1), seg.shadow, seg.shadowed);
+  // Branches with their delay slot and more of the segment after them split (compile() went on
+  // past them only where they do, BlockEmitter::goes_on()).
+  seg.mid.assign(seg.count, false);
+  for (size_t k = 0; k + 2 <= seg.count; ++k) {
+    if (!is_branch(run[k].native) || (k + 2 == seg.count && seg.ends_block)) continue;
+    if (!splits_at(run, k, seg.shadow, seg.shadowed))
+      throw std::logic_error("recompiler: a block goes on past a branch it cannot split");
+    seg.mid[k] = true;
   }
   // budget[k]: waits and cycles of instructions k .. count - 2 (none for the last instruction).
   seg.budget.assign(seg.count, 0);
@@ -683,7 +682,7 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
     L(seg.slow[k]);
     if (k > 0) sync_pc(run, k - 1);  // from native code (or the call before: the same values)
     // A split branch has no native delay slot to resume (split_end()): on into its slow path.
-    const bool split_branch = seg.split && k + 2 == seg.count;
+    const bool split_branch = (seg.split && k + 2 == seg.count) || seg.mid[k];
     if (!split_branch && (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count)) {
       call_and_resume(run, k, seg);
     } else {
@@ -789,17 +788,19 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     while (i < steps.size() && steps[i].native != NativeOp::None) ++i;
     seg.count = i - seg.first;
     const std::span<const Step> run = steps.subspan(seg.first, seg.count);
+    seg.ends_block = i == steps.size();
     g.plan(run, seg);
     // A run of one instruction checks no deadline within it.
     const std::optional<u32> budget = seg.count > 1 ? std::optional<u32>(seg.budget[0]) : std::nullopt;
     g.guard(run, seg.slow[0], seg.first == 0 ? Impl::Checks::entry : Impl::Checks::all, budget,
             g.fill_entry(run[0].pc, seg, 0), &seg.filled[0]);
-    seg.ends_block = i == steps.size();
     seg.split = seg.ends_block && g.splits(run, seg);
     for (size_t k = 0; k < seg.count - (seg.split ? 1 : 0); ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
+      if (after_branch && seg.mid[k - 1]) continue;  // emitted for each way by split_mid()
       g.L(seg.resume[k]);
       g.native(run.subspan(k), k, after_branch, seg);
+      if (seg.mid[k]) g.split_mid(run, seg, k, budget);
     }
     if (seg.split) {
       g.split_end(run, seg, budget);

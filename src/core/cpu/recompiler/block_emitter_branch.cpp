@@ -123,17 +123,36 @@ void Impl::taken(NativeOp op, u32 pc, u32 target) {
 }
 
 // Whether the block's last native segment splits at its branch (Segment::split): the segment
-// ends in a branch or J/JAL, whose target is known now, and its delay slot, an ALU operation that
-// starts no i-cache line and waits for no load (no line check, no stall stub): so nothing between
-// the branch and the end of the segment leaves native code, and each way can run the delay slot
-// knowing where it goes.
+// ends in a branch or J/JAL, whose target is known now, and its delay slot (splits_at()).
 bool Impl::splits(std::span<const Step> run, const Segment& seg) {
-  if (seg.count < 2) return false;
-  const size_t k = seg.count - 1;
-  const Step &b = run[k - 1], &d = run[k];
+  return seg.count >= 2 && splits_at(run, seg.count - 2, seg.shadow, seg.shadowed);
+}
+
+// Whether instruction k of a segment, a branch or J/JAL whose target is known now, splits with
+// its delay slot: an ALU operation that starts no i-cache line and waits for no load (no line
+// check, no stall stub), so nothing between the branch and the delay slot's end leaves native
+// code, and each way can run the delay slot knowing where it goes.
+bool Impl::splits_at(std::span<const Step> run, size_t k, const std::vector<Shadow>& shadow,
+                     const std::vector<u32>& shadowed) {
+  const Step &b = run[k], &d = run[k + 1];
   if (!is_branch(b.native) || b.native == NativeOp::Jr || b.native == NativeOp::Jalr) return false;
   if (d.native < NativeOp::Addiu || d.native > NativeOp::Sltu || (d.pc & 15) == 0) return false;
-  return !has_stall(d, seg, k);
+  return !has_stall(d, shadow[k + 1], shadowed[k + 1]);
+}
+
+bool BlockEmitter::goes_on(std::span<const Step> steps, u32 shadow_reach) {
+  if (steps.size() < 2) return false;
+  const NativeOp b = steps[steps.size() - 2].native;
+  const bool conditional = b >= NativeOp::Beq && b != NativeOp::J && b != NativeOp::Jal && b != NativeOp::Jr &&
+                           b != NativeOp::Jalr;
+  if (!conditional) return false;
+  size_t first = steps.size() - 2;  // the native segment holding the branch starts there
+  while (first > 0 && steps[first - 1].native != NativeOp::None) --first;
+  const std::span<const Step> run = steps.subspan(first);
+  std::vector<Shadow> shadow;
+  std::vector<u32> shadowed;
+  Impl::plan_shadow(run, shadow_reach, shadow, shadowed);
+  return Impl::splits_at(run, run.size() - 2, shadow, shadowed);
 }
 
 // A split segment's end: the branch has set r8b when taken (branch()), or is J/JAL. Each way
@@ -165,6 +184,34 @@ void Impl::split_end(std::span<const Step> run, Segment& seg, std::optional<u32>
   if (always) return;
   L(not_taken);
   way(b.pc + 8);
+}
+
+// A conditional branch split inside the block (Segment::mid), instruction k of the segment: it
+// has set r8b when taken (branch()). The taken way makes what the branch does when taken, runs
+// the delay slot knowing where it goes and chains to the target, as split_end() does; the other
+// runs the delay slot and goes on with the segment at k + 2, whose instructions then see the
+// pipeline, the time owed and eax as on a straight run.
+void Impl::split_mid(std::span<const Step> run, Segment& seg, size_t k, std::optional<u32> budget) {
+  const Step& b = run[k];
+  const u32 target = static_target(b.native, b.pc, b.word);
+  const u32 owed_then = owed, eax_then = eax_reg;
+  Label not_taken;
+  test(r8b, r8b);
+  jz(not_taken, T_NEAR);
+  taken(b.native, b.pc, target);
+  delay_dest = target;
+  exit_way = true;
+  native(run.subspan(k + 1), k + 1, true, seg);
+  exit_way = false;
+  settle();
+  add(instructions, int(k + 2));
+  chain(true, loops_natively ? &seg.resume[0] : nullptr, budget, target);
+  L(not_taken);
+  owed = owed_then;
+  eax_reg = eax_then;
+  delay_dest = b.pc + 8;
+  native(run.subspan(k + 1), k + 1, true, seg);
+  delay_dest.reset();
 }
 
 }  // namespace psx

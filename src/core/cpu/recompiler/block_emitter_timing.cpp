@@ -113,8 +113,26 @@ void Impl::shadow_check(const Step& s, Label& stall) {
 // segment made: its check of the load shadow is dynamic and it reads a register a load may
 // shadow, so it has a stall_stub().
 bool Impl::has_stall(const Step& s, const Segment& seg, size_t k) {
-  return seg.shadow[k] == Shadow::check && seg.shadowed[k] == Segment::kUnknownShadow &&
-         !shadowable_reads(s).empty();
+  return has_stall(s, seg.shadow[k], seg.shadowed[k]);
+}
+
+bool Impl::has_stall(const Step& s, Shadow shadow, u32 shadowed) {
+  return shadow == Shadow::check && shadowed == Segment::kUnknownShadow && !shadowable_reads(s).empty();
+}
+
+// Segment::shadow and Segment::shadowed for a segment's instructions; `reach`: instructions
+// since the last that may have left a load shadowed, this one included (kLoadIssue + kLoadBus - 1).
+void Impl::plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>& shadow,
+                       std::vector<u32>& shadowed) {
+  shadow.resize(run.size());
+  shadowed.assign(run.size(), Segment::kUnknownShadow);
+  for (size_t k = 0, since = 1, last = 0; k < run.size(); ++k) {
+    shadow[k] = since < reach ? Shadow::check : since == reach ? Shadow::clear : Shadow::none;
+    if (shadow[k] == Shadow::check && k > 0 && is_load(run[last].native) && k - last < reach)
+      shadowed[k] = cpu_detail::rt(run[last].word);
+    if (is_load(run[k].native)) last = k;
+    since = is_load(run[k].native) ? 1 : since + 1;
+  }
 }
 
 // CpuT::shadow_stall() before instruction k, as seg.shadow[k] and seg.shadowed[k] say.
@@ -127,8 +145,8 @@ bool Impl::has_stall(const Step& s, const Segment& seg, size_t k) {
 // interrupts; no native instruction raises an interrupt, and a hook armed by a branch ending the
 // block is left alone in its delay slot, where the next block starts (CpuT::step()).
 void Impl::shadow(const Step& s, size_t k, Segment& seg) {
-  const bool last = k + 1 == seg.count;
-  const bool deferred = last && seg.ends_block && !uses_time(s.native);
+  const bool last = k + 1 == seg.count || exit_way;
+  const bool deferred = last && (seg.ends_block || exit_way) && !uses_time(s.native);
   if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
     shadow_known(s, seg.pipe[k], seg.shadowed[k], last && !deferred);
     defer_shadow = deferred;

@@ -15,7 +15,8 @@
 // Within a native segment rbp stays the count at the segment's start: instruction k adds nothing,
 // and every way out of the segment adds the k instructions run (its end, a slow or fallback call).
 // Likewise r14 runs behind the time by the cycles the emitter knows are owed (Impl::owed).
-// r8b = whether a split branch is taken, from the branch to its delay slot's end (split_end()).
+// r8b = whether a split branch is taken, from the branch to its delay slot's end (split_end(),
+// split_mid()).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -83,6 +84,9 @@ struct Segment {
   // The block's last segment, ending in a branch whose target is known now and a delay slot
   // emitted once for each way (splits(), split_end()); the delay slot has no resume[] entry.
   bool split = false;
+  // mid[k]: instruction k is a conditional branch split inside the block (BlockEmitter::goes_on(),
+  // split_mid()): its delay slot is emitted once for each way, the taken one leaving the block.
+  std::vector<bool> mid;
   bool ends_block = false;  // the block's native end: chain(true) follows the segment
 };
 
@@ -175,7 +179,12 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void taken(NativeOp op, u32 pc, u32 target);
   static u32 static_target(NativeOp op, u32 pc, u32 i);
   static bool splits(std::span<const Step> run, const Segment& seg);
+  static bool splits_at(std::span<const Step> run, size_t k, const std::vector<Shadow>& shadow,
+                        const std::vector<u32>& shadowed);
   void split_end(std::span<const Step> run, Segment& seg, std::optional<u32> budget);
+  void split_mid(std::span<const Step> run, Segment& seg, size_t k, std::optional<u32> budget);
+  // Emitting the delay slot of split_mid()'s taken way: for the load shadow it ends the block.
+  bool exit_way = false;
   // Where the delay slot split_end() is emitting goes (pc_ after it), else empty.
   std::optional<u32> delay_dest;
   // The last instruction's shadow check is left to the chain that follows (shadow()).
@@ -270,6 +279,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void budget_check(u32 budget, Xbyak::Label& fail);
   static std::vector<u32> shadowable_reads(const Step& s);
   static bool has_stall(const Step& s, const Segment& seg, size_t k);
+  static bool has_stall(const Step& s, Shadow shadow, u32 shadowed);
+  static void plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>& shadow,
+                          std::vector<u32>& shadowed);
   void shadow(const Step& s, size_t k, Segment& seg);
   void shadow_check(const Step& s, Xbyak::Label& stall);
   void shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last);

@@ -3,7 +3,9 @@
 // holding them is written (block_cache.h, code_pages.h).
 //
 // Exact by construction: a block is the straight-line code from its first address up to and
-// including a branch or jump and its delay slot (or kMaxBlock instructions), and each of its
+// including a branch or jump and its delay slot (or kMaxBlock instructions), going on past a
+// conditional branch that falls through where native code splits it (BlockEmitter::goes_on()),
+// and each of its
 // instructions is one step that does what one pass of the interpreter's run() loop does, minus
 // the block lookup: the same deadline, stop and idle-loop checks, the BIOS hooks and interrupts
 // through CpuT::step(), and the instruction itself through CpuT::execute_at_pc() (fetch through
@@ -151,8 +153,8 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
     if (branch_in_slot || guess.elsewhere(word) || !memory_holds(a, word)) native = NativeOp::None;
     guess.after(word);
     steps_.push_back({a, word, step_for(word), native});
-    if (delay_slot) break;
-    delay_slot = ends_block(word);
+    if (delay_slot && !BlockEmitter::goes_on(steps_, u32(Cpu::kLoadIssue + Cpu::kLoadBus - 1))) break;
+    delay_slot = ends_block(word);  // a delay slot that goes on is no branch (goes_on())
     a += 4;
   }
   if (steps_.empty()) return nullptr;  // no code there: the interpreter raises the bus error

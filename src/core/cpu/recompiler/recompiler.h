@@ -37,7 +37,9 @@ template <class BusT>
 class RecompilerT {
  public:
   using Cpu = CpuT<BusT>;
-  static constexpr u32 kMaxBlock = 32;
+  // A block's words lie in at most two code pages (BlockCache::insert() records its first and last).
+  static constexpr u32 kMaxBlock = 64;
+  static_assert(kMaxBlock * 4 <= 1u << CodePages::kPageBits);
   // Tumble in play compiles to about 1500 blocks of 4.3 KB on average (slow paths included): a
   // 4 MiB buffer filled and was dropped every ~120 moves. Pages become resident only once
   // written, so a console holds what it compiled, not the whole buffer.

@@ -146,6 +146,7 @@ class Console : private CpuHooks {
     std::vector<u8> payload_;
     u64 bios_hash_ = 0;
     u64 program_hash_ = 0;
+    std::shared_ptr<const void> vram_token_;  // Gpu::vram_token() when it was taken
   };
   void snapshot(Snapshot& out);
   void restore(const Snapshot& snap);

@@ -121,6 +121,7 @@ void Console::snapshot(Snapshot& out) {
   out.payload_ = w.buffer();
   out.bios_hash_ = bios_hash_;
   out.program_hash_ = program_hash_;
+  out.vram_token_ = gpu_.vram_token();
 }
 
 // The payload was written by do_state of a console with this BIOS and program, so it reads back
@@ -130,8 +131,14 @@ void Console::restore(const Snapshot& snap) {
   if (snap.bios_hash_ != bios_hash_ || snap.program_hash_ != program_hash_)
     throw StateError("snapshot: taken with a different BIOS, disc or EXE than the one loaded");
   StateIO r(snap.payload_.data(), snap.payload_.size());
-  do_state(r);
-  r.finish();
+  gpu_.expect_vram(snap.vram_token_);
+  try {
+    do_state(r);
+    r.finish();
+  } catch (...) {
+    gpu_.expect_vram(nullptr);  // no later load may take it for its own
+    throw;
+  }
   drop_stale_audio();
 }
 

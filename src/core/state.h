@@ -53,15 +53,10 @@ class StateIO {
       out_.insert(out_.end(), b, b + n);
       return;
     }
-    const size_t limit = open_.empty() || !sized_ ? in_size_ : open_.back().end;
-    if (n > limit - pos_) {
-      if (limit == in_size_) fail("state ends early (wanted " + std::to_string(n) + " more bytes)");
-      fail("section '" + open_.back().tag + "' version " + std::to_string(open_.back().version) +
-           " ends early (wanted " + std::to_string(n) + " more bytes, " + std::to_string(limit - pos_) + " left)");
-    }
-    std::memcpy(p, in_ + pos_, n);
-    pos_ += n;
+    std::memcpy(p, take(n), n);
   }
+  // Reading: passes over n bytes that the caller knows it holds already (checked as bytes()).
+  void skip(size_t n) { take(n); }
 
   // Any trivially copyable value: integers, enums, plain structs, fixed arrays of those.
   template <typename T>
@@ -172,6 +167,19 @@ class StateIO {
     u32 version;
     size_t end;  // reading: where the body ends; writing: where its length field is
   };
+  // The next n bytes of the input, past the checks that they are there.
+  const u8* take(size_t n) {
+    const size_t limit = open_.empty() || !sized_ ? in_size_ : open_.back().end;
+    if (n > limit - pos_) {
+      if (limit == in_size_) fail("state ends early (wanted " + std::to_string(n) + " more bytes)");
+      fail("section '" + open_.back().tag + "' version " + std::to_string(open_.back().version) +
+           " ends early (wanted " + std::to_string(n) + " more bytes, " + std::to_string(limit - pos_) + " left)");
+    }
+    const u8* p = in_ + pos_;
+    pos_ += n;
+    return p;
+  }
+
   bool loading_ = false;
   bool sized_ = true;
   std::vector<u8> out_;

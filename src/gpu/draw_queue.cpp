@@ -141,6 +141,7 @@ void DrawQueue::write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m
   if (!deferred_) {
     // Drawn now: the pixels need not be kept (execute reads them from `pixels`).
     if (frame_pending_ && c.write_rect().intersects(frame_rect_)) convert_frame();
+    ++executed_;
     target_->write_row(x, y, pixels, count, m);
     return;
   }
@@ -197,6 +198,7 @@ void DrawQueue::execute(const DrawCommand& c, bool after_frame) {
   if (frame_pending_ && after_frame && c.write.intersects(frame_rect_)) convert_frame();
   using Kind = DrawCommand::Kind;
   const VramBlock& b = c.block;  // read only for the kinds that have one
+  ++executed_;
   switch (c.kind) {
     case Kind::Triangle: return target_->draw_triangle(c.triangle, c.ds);
     case Kind::Line: return target_->draw_line(c.line, c.ds);

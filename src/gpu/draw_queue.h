@@ -45,6 +45,8 @@ class DrawQueue {
   void set_deferred(bool on);
   bool deferred() const { return deferred_; }
   size_t size() const { return queue_.size(); }
+  // The calls made to the renderer so far, each of which may have changed VRAM.
+  u64 executed() const { return executed_; }
 
   void triangle(const Triangle& t, const DrawState& ds);
   void line(const Line& l, const DrawState& ds);
@@ -92,6 +94,7 @@ class DrawQueue {
   FrameOutput& output_;
   Renderer* target_ = nullptr;
   bool deferred_ = false;
+  u64 executed_ = 0;
   std::vector<DrawCommand> queue_;
   std::vector<u16> pixels_;  // the kept GP0(A0) rows' pixels
   std::vector<u8> keep_;     // prune()'s verdict per queued call

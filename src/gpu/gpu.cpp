@@ -3,6 +3,7 @@
 #include "gpu/gpu.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "gpu/png_writer.h"
 #include "gpu/software_renderer.h"
@@ -204,6 +205,14 @@ gpu::DisplayArea Gpu::display_area() const {
   return a;
 }
 
+std::shared_ptr<const void> Gpu::vram_token() {
+  if (!vram_token_ || draw_.executed() != token_draws_) {
+    vram_token_ = std::make_shared<const int>(0);  // stands for VRAM's contents now
+    token_draws_ = draw_.executed();
+  }
+  return vram_token_;
+}
+
 // The picture is taken again from the new renderer, at its scale, from VRAM as it is now.
 void Gpu::set_renderer(std::unique_ptr<gpu::Renderer> renderer) {
   renderer->load_vram(vram());
@@ -257,11 +266,18 @@ void Gpu::do_state(StateIO& s) {
   if (!s.loading()) {
     s.bytes(const_cast<u16*>(renderer_->vram()), kVramBytes);
   } else if (u16* direct = renderer_->vram_in_place()) {
-    s.bytes(direct, kVramBytes);
+    // A snapshot of VRAM as it still is (vram_token()) needs no copy. Only where VRAM is the
+    // renderer's own memory: a scaled one holds more than the state would give back.
+    std::shared_ptr<const void> expected = std::exchange(expected_vram_, nullptr);
+    if (expected && expected == vram_token_ && draw_.executed() == token_draws_) s.skip(kVramBytes);
+    else s.bytes(direct, kVramBytes);
+    vram_token_ = std::move(expected);
+    token_draws_ = draw_.executed();
   } else {
     std::vector<u16> vram(gpu::kVramPixels);
     s.bytes(vram.data(), kVramBytes);
     renderer_->load_vram(vram.data());
+    vram_token_ = nullptr;
   }
   s.pod(gp0_mode_);
   if (s.loading() && gp0_mode_ > Gp0Mode::CpuToVram) s.fail("bad GP0 mode");

@@ -79,6 +79,12 @@ class Gpu final : public IoDevice, public DmaPort {
   const gpu::VideoTiming& timing() const { return timing_; }
 
   void do_state(StateIO& s);
+  // A token for VRAM as it is now, which a snapshot keeps (Console::Snapshot): VRAM keeps its
+  // token while nothing draws into it, and restoring a snapshot whose token it still holds
+  // passes over the 1 MiB the snapshot holds instead of copying it back.
+  std::shared_ptr<const void> vram_token();
+  // The next do_state() load restores a snapshot taken with `token` (null: any other state).
+  void expect_vram(std::shared_ptr<const void> token) { expected_vram_ = std::move(token); }
 
  private:
   enum class Gp0Mode : u8 { Command, Polyline, CpuToVram };
@@ -129,6 +135,9 @@ class Gpu final : public IoDevice, public DmaPort {
   mutable gpu::DrawQueue draw_{output_};
   std::vector<u8> vram_rgb_;
   bool deferral_wanted_ = false;
+  // vram_token(): the token VRAM holds and draw_.executed() when it got it; expect_vram()'s.
+  std::shared_ptr<const void> vram_token_, expected_vram_;
+  u64 token_draws_ = 0;
 
   // GP0 state
   Gp0Mode gp0_mode_ = Gp0Mode::Command;

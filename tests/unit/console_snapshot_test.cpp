@@ -39,6 +39,36 @@ TEST(ConsoleSnapshot, RestoreThenRunRepeatsTheRunExactly) {
   EXPECT_TRUE(c.save_state(false) == first);
 }
 
+// A restore passes over VRAM where VRAM still is what the snapshot holds (Gpu::vram_token()):
+// nothing drawn since, or only draws still waiting in the deferred queue, which the restore drops.
+// Draws made since, by a read of VRAM that runs the queue, or a console that never held the
+// snapshot's VRAM, must still get the snapshot's VRAM back.
+TEST(ConsoleSnapshot, RestoreGivesBackVramWhateverWasDrawnSince) {
+  Console c, other;
+  c.boot_exe(TUMBLE_EXE);
+  other.boot_exe(TUMBLE_EXE);
+  c.set_pixels_observed(false);  // draws wait in the queue
+  c.run_frames(60);
+  Console::Snapshot snap;
+  c.snapshot(snap);
+  const std::vector<psx::u8> at_snapshot = c.save_state(false);
+  const std::vector<psx::u16> vram(c.vram(), c.vram() + Console::kVramWidth * Console::kVramHeight);
+
+  c.run_frames(20);  // queued only
+  c.restore(snap);
+  EXPECT_TRUE(c.save_state(false) == at_snapshot);
+
+  c.run_frames(20);
+  ASSERT_FALSE(std::equal(vram.begin(), vram.end(), c.vram()));  // the read draws the queue
+  c.restore(snap);
+  EXPECT_TRUE(std::equal(vram.begin(), vram.end(), c.vram()));
+  EXPECT_TRUE(c.save_state(false) == at_snapshot);
+
+  other.run_frames(75);
+  other.restore(snap);
+  EXPECT_TRUE(other.save_state(false) == at_snapshot);
+}
+
 TEST(ConsoleSnapshot, RestoreMatchesLoadState) {
   Console a, b;
   a.boot_exe(TUMBLE_EXE);

@@ -319,6 +319,30 @@ TEST(RecompilerCode, LoopsOfOneBlock) {
   expect_same_code(code, base, 0, regs, 3);
 }
 
+// A block goes on past a conditional branch that falls through, but not past one taken whatever
+// the registers hold: GCC's `b` (BEQ r0, r0), BLEZ r0, `bal` (BGEZAL r0), BGEZ r0, a loop's last
+// word with the loop's data right after it. A block that took those words for code would be
+// dropped by every store to them: each loop stores there, and must run with its blocks compiled
+// once (and the same results as the interpreter).
+TEST(RecompilerCode, NoBlockGoesOnPastABranchAlwaysTaken) {
+  const u32 base = 0x80010000, kT2 = 10;
+  const u32 always[] = {itype(0x04, kT1, kT1, 0), itype(0x06, 0, 0, 0), itype(0x01, 0, 0x11, 0),
+                        itype(0x01, 0, 0x01, 0)};  // BEQ t1, t1; BLEZ r0; BGEZAL r0; BGEZ r0
+  for (u32 branch : always) {
+    SCOPED_TRACE("branch " + std::to_string(branch >> 16));
+    // loop: t2 += 1; sw t2, data(t0); ALWAYS loop; nop, then the data word the loop stores to.
+    const std::vector<u32> code = {itype(0x09, kT2, kT2, 1), itype(0x2B, kT0, kT2, 16),
+                                   branch | 0xFFFD, kNop, 0x24420001};  // back to the ADDIU
+    const std::vector<u32> regs = {0, 0, 0, 0, 0, 0, 0, base};  // t0 (r8) = base
+    expect_same_code(code, base, 0, regs, 2);
+    Console c;
+    c.set_cpu_mode(Console::CpuMode::Recompiler);
+    load_code(c, code, base, 0, regs);
+    c.run_frames(2);
+    EXPECT_LE(c.recompiler_stats().invalidated, 1u);
+  }
+}
+
 // Cached code entered in the middle of i-cache lines: a miss fills from the fetched word to the
 // line's end (psx-spx "Memory Map", i-Cache), so the loop's first line and the subroutine's
 // line are held only in part, and their hits are as free as on whole lines (native code must

@@ -142,10 +142,17 @@ bool Impl::splits_at(std::span<const Step> run, size_t k, const std::vector<Shad
 
 bool BlockEmitter::goes_on(std::span<const Step> steps, u32 shadow_reach) {
   if (steps.size() < 2) return false;
-  const NativeOp b = steps[steps.size() - 2].native;
+  const Step& branch = steps[steps.size() - 2];
+  const NativeOp b = branch.native;
   const bool conditional = b >= NativeOp::Beq && b != NativeOp::J && b != NativeOp::Jal && b != NativeOp::Jr &&
                            b != NativeOp::Jalr;
-  if (!conditional) return false;
+  // Never past one taken whatever the registers hold: GCC's `b` (BEQ r0, r0) and `bal` (BGEZAL r0),
+  // often the last word of a function, before data that the block would take for code (and be
+  // dropped by every store to it).
+  const u32 s = cpu_detail::rs(branch.word), t = cpu_detail::rt(branch.word);
+  const bool always = (b == NativeOp::Beq && s == t) ||
+                      (s == 0 && (b == NativeOp::Blez || b == NativeOp::Bgez || b == NativeOp::Bgezal));
+  if (!conditional || always) return false;
   size_t first = steps.size() - 2;  // the native segment holding the branch starts there
   while (first > 0 && steps[first - 1].native != NativeOp::None) --first;
   const std::span<const Step> run = steps.subspan(first);

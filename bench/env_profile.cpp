@@ -2,8 +2,8 @@
 // moves (the recompiler compiles the level's code then), then `moves` moves inside
 // measured_moves(), the function to give callgrind (`--toggle-collect=measured_moves`) or perf.
 // Prints emulated cycles and CPU instructions per move and a hash of RAM, which a change meant to
-// be bit-identical must leave as they were, and what idle skipping skipped. Actions and resets are
-// bench_util.h's, as in env_bench.
+// be bit-identical must leave as they were, what idle skipping skipped and what the recompiler
+// compiled. Actions and resets are bench_util.h's, as in env_bench.
 //   valgrind --tool=callgrind --toggle-collect=measured_moves build/bench/env_profile 200 100
 #include <cstdio>
 #include <cstdlib>
@@ -62,6 +62,10 @@ int main(int argc, char** argv) {
   const auto per_move = [moves](std::uint64_t now, std::uint64_t before) {
     return static_cast<double>(now - before) / moves;
   };
+  const auto& rec = run.env.console().recompiler_stats();
+  std::printf("recompiler: %llu blocks compiled, %llu invalidations, %llu code-buffer flushes (warm-up included)\n",
+              static_cast<unsigned long long>(rec.compiled), static_cast<unsigned long long>(rec.invalidated),
+              static_cast<unsigned long long>(rec.flushes));
   std::printf("idle skipping per move: %.1f cycles in %.1f skips (%.1f made from the head, %.1f proofs)\n",
               per_move(idle.cycles, idle0.cycles), per_move(idle.skips, idle0.skips),
               per_move(idle.repeats, idle0.repeats), per_move(idle.proofs, idle0.proofs));

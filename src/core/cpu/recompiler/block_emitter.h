@@ -102,9 +102,10 @@ class BlockEmitter {
     u32 recent_count;
   };
 
-  // Whether a block may go on past its last two steps, a conditional branch and its delay slot:
-  // native code splits the branch there (Impl::splits_at()), its taken way chaining to the target
-  // and its other way going on in the block. `shadow_reach`: CpuT::kLoadIssue + kLoadBus - 1.
+  // Whether a block may go on past its last two steps, a branch that may fall through (not `b` or
+  // `bal`) and its delay slot: native code splits the branch there (Impl::splits_at()), its taken
+  // way chaining to the target and its other way going on in the block. `shadow_reach`:
+  // CpuT::kLoadIssue + kLoadBus - 1.
   static bool goes_on(std::span<const Step> steps, u32 shadow_reach);
 
   explicit BlockEmitter(size_t buffer_bytes);

@@ -1,6 +1,7 @@
 // The code generator behind BlockEmitter (block_emitter.h), shared by its sources:
 // block_emitter.cpp (a block's frame, the segment guard, each instruction's bookkeeping, ALU
-// operations), block_emitter_branch.cpp (branches and jumps), block_emitter_icache.cpp (i-cache
+// operations), block_emitter_chain.cpp (the block's end and the jump to the next block),
+// block_emitter_branch.cpp (branches and jumps), block_emitter_icache.cpp (i-cache
 // line checks and fills), block_emitter_memory.cpp (loads, stores, the load delay slot, HI/LO
 // moves), block_emitter_muldiv.cpp (multiplies and divides), block_emitter_cop2.cpp (GTE moves and
 // commands) and block_emitter_timing.cpp (the deadline's budget, the cycles owed, the load
@@ -232,6 +233,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);
+  // block_emitter_chain.cpp
   void chain(bool clean, Xbyak::Label* loop = nullptr, std::optional<u32> loop_budget = std::nullopt,
              std::optional<u32> target = std::nullopt);
   // The block being emitted: its pc, its entry, and whether a branch of it goes back there (a

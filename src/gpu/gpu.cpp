@@ -263,12 +263,13 @@ void Gpu::do_state(StateIO& s) {
   // VRAM goes straight between the state and the renderer where it can (no 1 MiB copy; it was
   // most of a snapshot restore). Saving only reads through the pointer.
   constexpr size_t kVramBytes = size_t{gpu::kVramPixels} * sizeof(u16);
+  // expect_vram() speaks for this load only, whichever way it goes.
+  std::shared_ptr<const void> expected = s.loading() ? std::exchange(expected_vram_, nullptr) : nullptr;
   if (!s.loading()) {
     s.bytes(const_cast<u16*>(renderer_->vram()), kVramBytes);
   } else if (u16* direct = renderer_->vram_in_place()) {
     // A snapshot of VRAM as it still is (vram_token()) needs no copy. Only where VRAM is the
     // renderer's own memory: a scaled one holds more than the state would give back.
-    std::shared_ptr<const void> expected = std::exchange(expected_vram_, nullptr);
     if (expected && expected == vram_token_ && draw_.executed() == token_draws_) s.skip(kVramBytes);
     else s.bytes(direct, kVramBytes);
     vram_token_ = std::move(expected);

@@ -4,18 +4,17 @@
 //
 // Exact by construction: a block is the straight-line code from its first address up to and
 // including a branch or jump and its delay slot (or kMaxBlock instructions), going on past a
-// conditional branch that falls through where native code splits it (BlockEmitter::goes_on()),
-// and each of its
-// instructions is one step that does what one pass of the interpreter's run() loop does, minus
-// the block lookup: the same deadline, stop and idle-loop checks, the BIOS hooks and interrupts
-// through CpuT::step(), and the instruction itself through CpuT::execute_at_pc() (fetch through
-// the i-cache model with its timing, the load shadow, execute, the load delay slot), or, when the
-// i-cache holds the compiled word on a whole line (a fetch without time or fill), the same
-// bookkeeping without fetch and decode (recompiler_ops.h). A step goes
-// on to the next only while the CPU is where the block expects (pc + 4): an exception, an
-// interrupt, a hook that redirects, or code changed since compilation so that a branch appears
-// where none was, all leave the block for the dispatcher. Since each step fetches the word it
-// executes, a stale block still runs what the interpreter would.
+// conditional branch that falls through where native code splits it (BlockEmitter::goes_on()), and
+// each of its instructions is one step that does what one pass of the interpreter's run() loop
+// does, minus the block lookup: the same deadline, stop and idle-loop checks, the BIOS hooks and
+// interrupts through CpuT::step(), and the instruction itself through CpuT::execute_at_pc() (fetch
+// through the i-cache model with its timing, the load shadow, execute, the load delay slot), or,
+// when the i-cache holds the compiled word on a whole line (a fetch without time or fill), the same
+// bookkeeping without fetch and decode (recompiler_ops.h). A step goes on to the next only while
+// the CPU is where the block expects (pc + 4): an exception, an interrupt, a hook that redirects,
+// or code changed since compilation so that a branch appears where none was, all leave the block
+// for the dispatcher. Since each step fetches the word it executes, a stale block still runs what
+// the interpreter would.
 //
 // The interpreter stays the reference (tests/unit/recompiler_test.cpp runs both and compares
 // whole save states) and the fallback: where no code can be read, run() steps the interpreter.

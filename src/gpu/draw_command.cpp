@@ -124,6 +124,27 @@ Rect DrawCommand::overwrite_rect() const {
   return {};
 }
 
+bool may_pair_cover(const DrawCommand& first, const DrawCommand& second) {
+  using Kind = DrawCommand::Kind;
+  if (first.kind != Kind::Triangle || second.kind != Kind::Triangle) return false;
+  if (!replaces_covered(first.triangle, first.ds) || !replaces_covered(second.triangle, second.ds)) return false;
+  if (!same_area(first.ds, second.ds)) return false;
+  const DrawState& ds = first.ds;
+  const Vertex* v[6] = {&first.triangle.v[0],  &first.triangle.v[1],  &first.triangle.v[2],
+                        &second.triangle.v[0], &second.triangle.v[1], &second.triangle.v[2]};
+  s32 x0 = v[0]->x, x1 = v[0]->x, y0 = v[0]->y, y1 = v[0]->y;
+  for (const Vertex* p : v) {
+    x0 = std::min(x0, p->x), x1 = std::max(x1, p->x);
+    y0 = std::min(y0, p->y), y1 = std::max(y1, p->y);
+  }
+  for (const Vertex* p : v) {
+    const bool x_inside = p->x > ds.area_left && p->x <= ds.area_right;
+    const bool y_inside = p->y > ds.area_top && p->y <= ds.area_bottom;
+    if ((x_inside && p->x != x0 && p->x != x1) || (y_inside && p->y != y0 && p->y != y1)) return false;
+  }
+  return true;
+}
+
 Rect triangle_pair_cover(const DrawCommand& first, const DrawCommand& second) {
   using Kind = DrawCommand::Kind;
   if (first.kind != Kind::Triangle || second.kind != Kind::Triangle) return {};

@@ -75,5 +75,11 @@ struct DrawCommand {
 // halves, e.g. a full-screen Gouraud background), or empty when their union is not a rectangle
 // or either could keep old pixels (textured, semi-transparent, mask check, interlaced rows).
 Rect triangle_pair_cover(const DrawCommand& first, const DrawCommand& second);
+// A test that costs a few comparisons, false for most pairs triangle_pair_cover() would answer
+// empty: either triangle may keep old pixels, their drawing areas differ, or a vertex inside the
+// drawing area lies off the corners of the pair's bounding box (two triangles make a rectangle
+// only with their six vertices at its four corners; clipped away, a vertex may lie anywhere).
+// The last is a shortcut, not an exact test: an odd pair it turns away only drops less.
+bool may_pair_cover(const DrawCommand& first, const DrawCommand& second);
 
 }  // namespace psx::gpu

@@ -175,8 +175,7 @@ void DrawQueue::push(DrawCommand& c) {
 }
 
 Rect DrawQueue::pair_cover(const DrawCommand& first, const DrawCommand& second) {
-  using Kind = DrawCommand::Kind;
-  if (first.kind != Kind::Triangle || second.kind != Kind::Triangle) return {};
+  if (!may_pair_cover(first, second)) return {};
   PairKey key;
   const DrawCommand* pair[2] = {&first, &second};
   for (u32 i = 0; i < 2; ++i) {

@@ -303,6 +303,22 @@ TEST(GpuDeferred, ReadsBesideADrawingDoNotKeepIt) {
   ASSERT_EQ(t.eager.state(), t.lazy.state());
 }
 
+// A background quad that reaches past the drawing area on every side covers the whole area
+// however skewed it is (only its clipped rows count), so the small triangle drawn before it goes
+// at the next prune: may_pair_cover() lets through pairs whose off-corner vertices all lie outside
+// the area. The quad (-50,-40) (400,-10) (-20,300) (380,280) keeps x <= -20 on its left edge and
+// x >= 380 on its right one, and the drawing area is x 0..319, y 0..239.
+TEST(GpuDeferred, SkewedQuadPastTheAreaCoversIt) {
+  Twins t;
+  t.gp0(0xE3000000), t.gp0(0xE4000000 | 239u << 10 | 319), t.gp0(0xE5000000);
+  t.gp0(0x20FF00FF), t.gp0(xy(100, 100)), t.gp0(xy(120, 100)), t.gp0(xy(100, 120));
+  t.gp0(0x28102030), t.gp0(xy(-50, -40)), t.gp0(xy(400, -10)), t.gp0(xy(-20, 300)), t.gp0(xy(380, 280));
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), 3u);
+  queue_until_prune(t);
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), psx::gpu::DrawQueue::kPruneAt - 1);
+  ASSERT_EQ(t.eager.state(), t.lazy.state());
+}
+
 // The queue remembers the last background quads it met (DrawQueue::pair_cover): the same
 // positions drawn semi-transparent, textured, under the mask check or in another drawing area
 // replace less or nothing, so the small triangles drawn before them must stay. Each variant

@@ -66,8 +66,10 @@ int main(int argc, char** argv) {
   std::printf("recompiler: %llu blocks compiled, %llu invalidations, %llu code-buffer flushes (warm-up included)\n",
               static_cast<unsigned long long>(rec.compiled), static_cast<unsigned long long>(rec.invalidated),
               static_cast<unsigned long long>(rec.flushes));
-  std::printf("idle skipping per move: %.1f cycles in %.1f skips (%.1f made from the head, %.1f proofs)\n",
+  std::printf("idle skipping per move: %.1f cycles in %.1f skips (%.1f made from the head, %.1f proofs), "
+              "%.1f visits left unexamined\n",
               per_move(idle.cycles, idle0.cycles), per_move(idle.skips, idle0.skips),
-              per_move(idle.repeats, idle0.repeats), per_move(idle.proofs, idle0.proofs));
+              per_move(idle.repeats, idle0.repeats), per_move(idle.proofs, idle0.proofs),
+              per_move(idle.unexamined, idle0.unexamined));
   return 0;
 }

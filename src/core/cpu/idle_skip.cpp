@@ -2,6 +2,7 @@
 #include "core/cpu/idle_skip.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <type_traits>
 
@@ -138,10 +139,24 @@ void IdleSkip::at_loop_head(Cpu& cpu) {
   } else if (b.head == head && b.visits > 0) {
     --b.visits;
   } else {
-    if (b.head != head) b = Backoff{head, 0, 0};
+    if (b.head != head) b = Backoff{head, 0, 0, 0};
     ++stats_.examinations;
     Examined e = repeat(cpu);
-    if (e == Examined::refused) e = examine(cpu);
+    if (e == Examined::refused) {
+      // No proof made here covers this iteration, which most often leaves the loop (the status
+      // bit it waited for is set): an examination would interpret the way out until something
+      // disqualifies it. Where the last ones here all were refused, only the 1st, 2nd, 4th, 8th...
+      // such visit is examined (one may also find a second way round the loop, which is then
+      // proven and repeated).
+      const bool proven_here =
+          std::any_of(proven_.begin(), proven_.end(), [head](const Proven& p) { return p.head == head; });
+      if (!proven_here || std::has_single_bit(++b.leaving)) {
+        e = examine(cpu);
+        if (e != Examined::refused) b.leaving = 0;
+      } else {
+        ++stats_.unexamined;
+      }
+    }
     if (e != Examined::refused) {
       b.failures = 0;
       // The recorded iteration's back branch left the loop head set, so the head is met again

@@ -63,6 +63,7 @@ class IdleSkip {
     u64 proofs = 0;      // proofs made (the other skips reused one)
     u64 examinations = 0;  // visits to a loop head that tried to skip (the rest back off)
     u64 repeats = 0;       // skips made from the head without recording an iteration (repeat())
+    u64 unexamined = 0;    // visits where no proof covered the iteration and none was attempted
   };
 
   // Called by the CPU's run loop with pc at a loop head (and the loop head cleared); skips
@@ -76,15 +77,16 @@ class IdleSkip {
   // What at_loop_head() reads and writes to let a backing-off loop head pass (below), for native
   // code that does the same without returning to its dispatcher (the recompiler's chain()): byte
   // offsets in an IdleSkip of last_head_ and of the backoff table, whose kBackoffEntries entries
-  // of kBackoffBytes are {u32 head, visits, failures}, head at entry (head >> 2) % kBackoffEntries.
+  // of kBackoffBytes are {u32 head, visits, failures, leaving}, head at entry
+  // (head >> 2) % kBackoffEntries.
   struct BackoffCells {
     int last_head, table;
   };
-  // 1024 entries (12 KiB) cover 4 KiB of code without two heads sharing one: with 64, loop heads
+  // 1024 entries (16 KiB) cover 4 KiB of code without two heads sharing one: with 64, loop heads
   // 256 bytes apart took turns resetting each other's entry, so loops that can never qualify
   // (a GTE call in their body, say) were examined at every visit (a third of Tumble's
   // examinations, and 2.6% of its host instructions).
-  static constexpr u32 kBackoffEntries = 1024, kBackoffBytes = 12, kBackoffVisits = 4;  // visits' offset
+  static constexpr u32 kBackoffEntries = 1024, kBackoffBytes = 16, kBackoffVisits = 4;  // visits' offset
   static BackoffCells backoff_cells();
 
  private:
@@ -104,10 +106,13 @@ class IdleSkip {
   // or an event is due within its iteration) is examined again only after 2^failures - 1 more
   // visits to its head, so loops that never qualify cost little.
   static constexpr u32 kMaxBackoff = 8;
+  // `leaving` counts the visits since an examination last succeeded here where a loop proven
+  // here refused repeat() (at_loop_head()).
   struct Backoff {
     u32 head = 1;
     u32 visits = 0;
     u32 failures = 0;
+    u32 leaving = 0;
   };
   std::array<Backoff, kBackoffEntries> backoff_{};
   // A proof made: the iteration recorded, the registers it started from and added, the load in

@@ -117,6 +117,16 @@ void Impl::alu(NativeOp op, u32 i) {
     else setb(al);
     movzx(eax, al);
   };
+  // r0 reads 0: GCC's `li` (ADDIU/ORI from r0) and `move` (OR/ADDU with r0) become one move.
+  if (s == 0 && (op == NativeOp::Addiu || op == NativeOp::Ori || op == NativeOp::Xori)) {
+    mov(eax, op == NativeOp::Addiu ? simm(i) : imm(i));
+    return;
+  }
+  if ((s == 0 || t == 0) && (op == NativeOp::Addu || op == NativeOp::Or || op == NativeOp::Xor)) {
+    if (s == t) xor_(eax, eax);
+    else read_eax(s == 0 ? t : s);
+    return;
+  }
   switch (op) {
     case NativeOp::Addiu: read_eax(s); add(eax, simm(i)); break;
     case NativeOp::Slti: set_if(s, [&] { cmp(ecx, simm(i)); }, true); break;

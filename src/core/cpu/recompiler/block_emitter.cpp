@@ -405,6 +405,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   else if (is_cop2(op)) cop2(op, s.word);
   else if (d != 0) alu(op, s.word);  // an ALU operation into r0 (a NOP) changes nothing
   if (d != 0) mov(reg(d), eax);
+  if (pipe.dynamic) keep_split_flags();  // commit() compares
   commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), keeps_r10(op), seg.lazy[k],
          k > 0 && seg.lazy[k - 1]);  // leaves eax
   eax_reg = d;
@@ -566,6 +567,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.routines.fill(nullptr);
   g.step_entry = nullptr;
   g.loop_head_entry = nullptr;
+  g.split_cond.reset();
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   g.block_pc = steps[0].pc;

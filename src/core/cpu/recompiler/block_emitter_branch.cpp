@@ -58,29 +58,11 @@ void Impl::branch(NativeOp op, u32 pc, u32 i, bool split) {
   Label not_taken;
   const u32 target = static_target(op, pc, i);
   const auto with_rs_zero = [&] { with_reg(rs(i), [&](const Xbyak::Operand& o) { cmp(o, 0); }); };
-  // Taken when the flags say equal, not equal, less, greater or equal, less or equal, greater.
-  enum Cond { e, ne, l, ge, le, g };
   const auto taken_if = [&](Cond c) {
-    if (split) {
-      switch (c) {
-        case e: sete(r8b); break;
-        case ne: setne(r8b); break;
-        case l: setl(r8b); break;
-        case ge: setge(r8b); break;
-        case le: setle(r8b); break;
-        case g: setg(r8b); break;
-      }
-      return;
-    }
-    switch (c) {
-      case e: jne(not_taken, T_NEAR); break;
-      case ne: je(not_taken, T_NEAR); break;
-      case l: jge(not_taken, T_NEAR); break;
-      case ge: jl(not_taken, T_NEAR); break;
-      case le: jg(not_taken, T_NEAR); break;
-      case g: jle(not_taken, T_NEAR); break;
-    }
+    if (split) split_cond = c;
+    else jump_if(negated(c), not_taken);
   };
+  using enum Cond;
   switch (op) {
     case NativeOp::Beq: case NativeOp::Bne:  // compared from whichever eax holds
       if (in_eax(rt(i))) {
@@ -113,6 +95,53 @@ void Impl::branch(NativeOp op, u32 pc, u32 i, bool split) {
   }
   L(not_taken);
   mov(byte[rbx + lay.next_in_delay], 1);
+}
+
+Impl::Cond Impl::negated(Cond c) {
+  using enum Cond;
+  switch (c) {
+    case e: return ne;
+    case ne: return e;
+    case l: return ge;
+    case ge: return l;
+    case le: return g;
+    case g: break;
+  }
+  return le;
+}
+
+void Impl::jump_if(Cond c, Label& to) {
+  switch (c) {
+    case Cond::e: return je(to, T_NEAR);
+    case Cond::ne: return jne(to, T_NEAR);
+    case Cond::l: return jl(to, T_NEAR);
+    case Cond::ge: return jge(to, T_NEAR);
+    case Cond::le: return jle(to, T_NEAR);
+    case Cond::g: return jg(to, T_NEAR);
+  }
+}
+
+void Impl::keep_split_flags() {
+  if (!split_cond) return;
+  switch (*split_cond) {
+    case Cond::e: sete(r8b); break;
+    case Cond::ne: setne(r8b); break;
+    case Cond::l: setl(r8b); break;
+    case Cond::ge: setge(r8b); break;
+    case Cond::le: setle(r8b); break;
+    case Cond::g: setg(r8b); break;
+  }
+  split_cond.reset();
+}
+
+void Impl::unless_split_taken(Label& not_taken) {
+  if (split_cond) {
+    jump_if(negated(*split_cond), not_taken);
+    split_cond.reset();
+  } else {
+    test(r8b, r8b);
+    jz(not_taken, T_NEAR);
+  }
 }
 
 // What a branch or J/JAL at pc does when taken to a target known now, besides next_pc_: CpuT's
@@ -182,10 +211,7 @@ void Impl::split_end(std::span<const Step> run, Segment& seg, std::optional<u32>
   };
   Label not_taken;
   const bool always = b.native == NativeOp::J || b.native == NativeOp::Jal;
-  if (!always) {
-    test(r8b, r8b);
-    jz(not_taken, T_NEAR);
-  }
+  if (!always) unless_split_taken(not_taken);
   taken(b.native, b.pc, target);
   way(target);
   if (always) return;
@@ -203,8 +229,7 @@ void Impl::split_mid(std::span<const Step> run, Segment& seg, size_t k, std::opt
   const u32 target = static_target(b.native, b.pc, b.word);
   const u32 owed_then = owed, eax_then = eax_reg;
   Label not_taken;
-  test(r8b, r8b);
-  jz(not_taken, T_NEAR);
+  unless_split_taken(not_taken);
   taken(b.native, b.pc, target);
   delay_dest = target;
   exit_way = true;

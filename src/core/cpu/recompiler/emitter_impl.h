@@ -17,7 +17,7 @@
 // and every way out of the segment adds the k instructions run (its end, a slow or fallback call).
 // Likewise r14 runs behind the time by the cycles the emitter knows are owed (Impl::owed).
 // r8b = whether a split branch is taken, from the branch to its delay slot's end (split_end(),
-// split_mid()).
+// split_mid()), where the flags no longer say so (Impl::split_cond).
 #pragma once
 #include <xbyak/xbyak.h>
 
@@ -184,6 +184,17 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
                         const std::vector<u32>& shadowed);
   void split_end(std::span<const Step> run, Segment& seg, std::optional<u32> budget);
   void split_mid(std::span<const Step> run, Segment& seg, size_t k, std::optional<u32> budget);
+  // The flags a branch's compare leaves say it is taken when equal, not equal, less, greater or
+  // equal, less or equal, greater (signed). jump_if() jumps when they say `c`.
+  enum class Cond { e, ne, l, ge, le, g };
+  static Cond negated(Cond c);
+  void jump_if(Cond c, Xbyak::Label& to);
+  // A split branch's condition while the flags its compare left still say whether it is taken:
+  // split_mid() or split_end() jumps on them. Where code between them would change the flags,
+  // keep_split_flags() saves the outcome in r8b first.
+  std::optional<Cond> split_cond;
+  void keep_split_flags();
+  void unless_split_taken(Xbyak::Label& not_taken);
   // Emitting the delay slot of split_mid()'s taken way: for the load shadow it ends the block.
   bool exit_way = false;
   // Where the delay slot split_end() is emitting goes (pc_ after it), else empty.

@@ -91,9 +91,19 @@ void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   });
 }
 
-// eax = the value a load of `op`'s width and signedness reads at [rdx + rcx].
-static void read_width(Impl& g, NativeOp op) {
-  const Xbyak::RegExp at = g.rdx + g.rcx;
+// Where native code finds byte rcx of `area` (RAM or the scratchpad, `bytes` long): rbx-relative
+// where the whole area lies within a signed 32-bit displacement of the context (one instruction
+// fewer), else through rdx, loaded here. LWL/LWR/SWL/SWR, which also reach the word through
+// other index registers, always take rdx.
+Xbyak::RegExp Impl::host_at(const void* area, u32 bytes, bool via_rdx) {
+  const auto d = from_context(area);
+  if (!via_rdx && d && from_context(static_cast<const u8*>(area) + bytes)) return rbx + rcx + *d;
+  mov(rdx, reinterpret_cast<u64>(area));
+  return rdx + rcx;
+}
+
+// eax = the value a load of `op`'s width and signedness reads at `at`.
+static void read_width(Impl& g, NativeOp op, const Xbyak::RegExp& at) {
   switch (op) {
     case NativeOp::Lb: g.movsx(g.eax, g.byte[at]); break;
     case NativeOp::Lbu: g.movzx(g.eax, g.byte[at]); break;
@@ -132,8 +142,7 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // LWL/LWR read the word holding the address
   mov(ecx, r13d);
   and_(ecx, kRamMask & word_mask);
-  mov(rdx, reinterpret_cast<u64>(lay.ram));
-  read_width(*this, op);
+  read_width(*this, op, host_at(lay.ram, CodePages::kRamSize, is_unaligned(op)));
   L(done);
   cold.push_back([this, &scratchpad, &done, op, word_mask] {
     L(scratchpad);
@@ -142,8 +151,7 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
     cmovb(now, rcx);
     mov(ecx, r13d);
     and_(ecx, kScratchMask & word_mask);
-    mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
-    read_width(*this, op);
+    read_width(*this, op, host_at(lay.scratchpad, kScratchMask + 1, is_unaligned(op)));
     jmp(done, T_NEAR);
   });
   if (is_unaligned(op)) merge_unaligned(op, t, pipe);
@@ -289,15 +297,14 @@ void Impl::store(NativeOp op, u32 i) {
   test(r13d, kNotRam);
   jnz(scratchpad, T_NEAR);
   and_(ecx, kRamMask & word_mask);
-  const auto write = [this, op, width] {
-    const Xbyak::RegExp at = rdx + rcx;
+  const auto write = [this, op, width](const void* area, u32 bytes) {
+    const Xbyak::RegExp at = host_at(area, bytes, is_unaligned(op));
     if (is_unaligned(op)) store_unaligned(*this, op);
     else if (width == 4) mov(dword[at], eax);
     else if (width == 2) mov(word[at], ax);
     else mov(byte[at], al);
   };
-  mov(rdx, reinterpret_cast<u64>(lay.ram));
-  write();
+  write(lay.ram, CodePages::kRamSize);
   // The page's word bits: mostly none (a page of data), so the word's own bit is tested off the
   // main path.
   mov(edx, ecx);
@@ -326,8 +333,7 @@ void Impl::store(NativeOp op, u32 i) {
     jmp(done, T_NEAR);
     L(scratchpad);
     and_(ecx, kScratchMask & word_mask);
-    mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
-    write();
+    write(lay.scratchpad, kScratchMask + 1);
     jmp(done, T_NEAR);
   });
 }

@@ -132,6 +132,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   }
   Xbyak::Address cpu32(int off) { return dword[rbx + off]; }
   std::optional<int> from_context(const void* p) const;
+  Xbyak::RegExp host_at(const void* area, u32 bytes, bool via_rdx);
   Xbyak::Address cpu64(int off) { return qword[rbx + off]; }
   // Time lives in registers inside a block: `now` counts native instructions' cycles without a
   // memory read-modify-write per instruction and `deadline` is compared without loads.

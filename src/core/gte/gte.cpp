@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstddef>
+#include <type_traits>
 
 namespace psx {
 
@@ -50,6 +52,30 @@ u32 Gte::read_data(u32 r) {
       return orgb_component(r_.ir[1]) | (orgb_component(r_.ir[2]) << 5) | (orgb_component(r_.ir[3]) << 10);
     case 30: return r_.lzcs;
     default: return r_.lzcr;
+  }
+}
+
+std::optional<Gte::Field> Gte::data_field(u32 r, bool write) {
+  static_assert(std::is_standard_layout_v<Gte> && std::is_standard_layout_v<Registers>);
+  // Byte `at` of the register file, `bytes` wide.
+  const auto field = [](size_t at, u32 bytes, bool sign) { return Field{u32(offsetof(Gte, r_) + at), bytes, sign}; };
+  constexpr size_t kVec = sizeof(Vec16), kS16 = sizeof(s16), kU32 = sizeof(u32);
+  r &= 31;
+  switch (r) {
+    case 0: case 2: case 4: return field(offsetof(Registers, v) + r / 2 * kVec, 4, false);  // VXY: X low, Y high
+    case 1: case 3: case 5: return field(offsetof(Registers, v) + r / 2 * kVec + 2 * kS16, 2, true);
+    case 6: return field(offsetof(Registers, rgbc), 4, false);
+    case 7: return field(offsetof(Registers, otz), 2, false);
+    case 8: case 9: case 10: case 11: return field(offsetof(Registers, ir) + (r - 8) * kS16, 2, true);
+    case 12: case 13: case 14: return field(offsetof(Registers, sxy) + (r - 12) * kU32, 4, false);
+    case 15: return write ? std::nullopt : std::optional(field(offsetof(Registers, sxy) + 2 * kU32, 4, false));
+    case 16: case 17: case 18: case 19: return field(offsetof(Registers, sz) + (r - 16) * sizeof(u16), 2, false);
+    case 20: case 21: case 22: return field(offsetof(Registers, rgb) + (r - 20) * kU32, 4, false);
+    case 23: return field(offsetof(Registers, res1), 4, false);
+    case 24: case 25: case 26: case 27: return field(offsetof(Registers, mac) + (r - 24) * kU32, 4, false);
+    case 30: return write ? std::nullopt : std::optional(field(offsetof(Registers, lzcs), 4, false));
+    case 31: return write ? std::nullopt : std::optional(field(offsetof(Registers, lzcr), 4, false));
+    default: return std::nullopt;  // IRGB, ORGB
   }
 }
 

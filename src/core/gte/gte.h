@@ -9,6 +9,7 @@
 // commands), gte_color.cpp (lighting and depth-cueing commands).
 #pragma once
 #include <array>
+#include <optional>
 
 #include "core/state.h"
 #include "core/types.h"
@@ -36,6 +37,18 @@ class Gte {
       write_control(r - 32, v);
     }
   }
+
+  // A data register that reads (`write` false) or writes as one field of the register file and
+  // nothing else: the field's byte offset in the Gte, its width (2 or 4 bytes; a write keeps the
+  // value's low bytes) and whether a 2-byte read is sign-extended. Empty for IRGB/ORGB, for
+  // writes to SXYP (a push), LZCS (sets LZCR) and LZCR (read-only). For the recompiler, whose
+  // native MFC2/MTC2/LWC2/SWC2 then move the field themselves.
+  struct Field {
+    u32 offset;
+    u32 bytes;
+    bool sign;
+  };
+  static std::optional<Field> data_field(u32 r, bool write);
 
   // Cycles a command takes (psx-spx "GTE Command Summary"); unknown opcodes take 1. NCDT's are
   // the most.

@@ -6,6 +6,7 @@
 // Coprocessor Unusable through their call steps).
 #include "core/cpu/decode.h"
 #include "core/cpu/recompiler/emitter_impl.h"
+#include "core/gte/gte.h"
 
 namespace psx {
 
@@ -18,10 +19,41 @@ void Impl::wait_gte() {
   cmovb(now, rcx);
 }
 
-// MFC2/CFC2 leave the value in eax (native() makes it the pending load).
+// Where native code finds byte `offset` of the Gte: rbx-relative where it can, else through rdi.
+Xbyak::RegExp Impl::gte_at(u32 offset) {
+  if (const auto d = from_context(static_cast<const u8*>(lay.gte) + offset)) return rbx + *d;
+  mov(rdi, reinterpret_cast<u64>(lay.gte));
+  return rdi + offset;
+}
+
+// eax = a GTE data register that reads as field f (Gte::data_field()), as Gte::read_data().
+void Impl::gte_read(const Gte::Field& f) {
+  const Xbyak::RegExp at = gte_at(f.offset);
+  if (f.bytes == 4) mov(eax, dword[at]);
+  else if (f.sign) movsx(eax, word[at]);
+  else movzx(eax, word[at]);
+}
+
+// A GTE data register that writes as field f = value's low bytes, as Gte::write_data().
+void Impl::gte_write(const Gte::Field& f, const Xbyak::Reg32& value) {
+  const Xbyak::RegExp at = gte_at(f.offset);
+  if (f.bytes == 4) mov(dword[at], value);
+  else mov(word[at], value.cvt16());
+}
+
+// MFC2/CFC2 leave the value in eax (native() makes it the pending load). The data registers
+// that are plain fields move natively, the rest through the GTE's functions.
 void Impl::cop2(NativeOp op, u32 i) {
   using namespace cpu_detail;
   wait_gte();
+  if (op == NativeOp::Mfc2) {
+    if (const auto f = Gte::data_field(rd(i), false)) return gte_read(*f);
+  } else if (op == NativeOp::Mtc2) {
+    if (const auto f = Gte::data_field(rd(i), true)) {
+      mov(edx, reg(rt(i)));
+      return gte_write(*f, edx);
+    }
+  }
   mov(rdi, reinterpret_cast<u64>(lay.gte));
   switch (op) {
     case NativeOp::Mfc2:

@@ -287,9 +287,13 @@ void Impl::store(NativeOp op, u32 i) {
   const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // SWL/SWR write into the word holding the address
   if (op == NativeOp::Swc2) {  // SWC2: the GTE register, once the GTE is done
     wait_gte();
-    mov(rdi, reinterpret_cast<u64>(lay.gte));
-    mov(esi, cpu_detail::rt(i));
-    call_leaf(reinterpret_cast<const void*>(lay.gte_read_data));
+    if (const auto f = Gte::data_field(cpu_detail::rt(i), false)) {
+      gte_read(*f);
+    } else {
+      mov(rdi, reinterpret_cast<u64>(lay.gte));
+      mov(esi, cpu_detail::rt(i));
+      call_leaf(reinterpret_cast<const void*>(lay.gte_read_data));
+    }
   } else {
     read_eax(cpu_detail::rt(i));
   }
@@ -358,6 +362,7 @@ void Impl::lwc2(u32 i) {
   L(read);
   mov(r8d, dword[rdx + rcx]);
   wait_gte();
+  if (const auto f = Gte::data_field(cpu_detail::rt(i), true)) return gte_write(*f, r8d);
   mov(rdi, reinterpret_cast<u64>(lay.gte));
   mov(esi, cpu_detail::rt(i));
   mov(edx, r8d);

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/cpu/recompiler/block_emitter.h"
+#include "core/gte/gte.h"
 
 namespace psx {
 
@@ -133,6 +134,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   Xbyak::Address cpu32(int off) { return dword[rbx + off]; }
   std::optional<int> from_context(const void* p) const;
   Xbyak::RegExp host_at(const void* area, u32 bytes, bool via_rdx);
+  Xbyak::RegExp gte_at(u32 offset);
+  void gte_read(const Gte::Field& f);
+  void gte_write(const Gte::Field& f, const Xbyak::Reg32& value);
   Xbyak::Address cpu64(int off) { return qword[rbx + off]; }
   // Time lives in registers inside a block: `now` counts native instructions' cycles without a
   // memory read-modify-write per instruction and `deadline` is compared without loads.

@@ -182,37 +182,43 @@ u32 Gte::command_cycles(u32 command) {
 }
 
 u32 Gte::execute(u32 command) {
-  r_.flag = 0;  // every command starts with a clear FLAG
-  run_command(command);
+  command_function(command)(*this, command);
   return command_cycles(command);
 }
 
-void Gte::run_command(u32 command) {
-  const Op op{(command & (1u << 19)) ? 12u : 0u, (command & (1u << 10)) != 0};
+Gte::Op Gte::op_of(u32 command) { return {(command & (1u << 19)) ? 12u : 0u, (command & (1u << 10)) != 0}; }
+
+template <void (Gte::*F)(Gte::Op)>
+void Gte::run_op(Gte& g, u32 command) {
+  g.r_.flag = 0;  // every command starts with a clear FLAG
+  (g.*F)(op_of(command));
+}
+
+Gte::Command Gte::command_function(u32 command) {
   switch (command & 0x3F) {
-    case 0x01: rtps(op); break;
-    case 0x06: nclip(); break;
-    case 0x0C: op_cross(op); break;
-    case 0x10: dpcs(op); break;
-    case 0x11: intpl(op); break;
-    case 0x12: mvmva(command, op); break;
-    case 0x13: ncds(op); break;
-    case 0x14: cdp(op); break;
-    case 0x16: ncdt(op); break;
-    case 0x1B: nccs(op); break;
-    case 0x1C: cc(op); break;
-    case 0x1E: ncs(op); break;
-    case 0x20: nct(op); break;
-    case 0x28: sqr(op); break;
-    case 0x29: dcpl(op); break;
-    case 0x2A: dpct(op); break;
-    case 0x2D: avsz3(); break;
-    case 0x2E: avsz4(); break;
-    case 0x30: rtpt(op); break;
-    case 0x3D: gpf(op); break;
-    case 0x3E: gpl(op); break;
-    case 0x3F: ncct(op); break;
-    default: break;  // opcodes psx-spx does not list compute nothing (FLAG was still cleared)
+    case 0x01: return &run_op<&Gte::rtps>;
+    case 0x06: return [](Gte& g, u32) { g.r_.flag = 0, g.nclip(); };
+    case 0x0C: return &run_op<&Gte::op_cross>;
+    case 0x10: return &run_op<&Gte::dpcs>;
+    case 0x11: return &run_op<&Gte::intpl>;
+    case 0x12: return [](Gte& g, u32 c) { g.r_.flag = 0, g.mvmva(c, op_of(c)); };
+    case 0x13: return &run_op<&Gte::ncds>;
+    case 0x14: return &run_op<&Gte::cdp>;
+    case 0x16: return &run_op<&Gte::ncdt>;
+    case 0x1B: return &run_op<&Gte::nccs>;
+    case 0x1C: return &run_op<&Gte::cc>;
+    case 0x1E: return &run_op<&Gte::ncs>;
+    case 0x20: return &run_op<&Gte::nct>;
+    case 0x28: return &run_op<&Gte::sqr>;
+    case 0x29: return &run_op<&Gte::dcpl>;
+    case 0x2A: return &run_op<&Gte::dpct>;
+    case 0x2D: return [](Gte& g, u32) { g.r_.flag = 0, g.avsz3(); };
+    case 0x2E: return [](Gte& g, u32) { g.r_.flag = 0, g.avsz4(); };
+    case 0x30: return &run_op<&Gte::rtpt>;
+    case 0x3D: return &run_op<&Gte::gpf>;
+    case 0x3E: return &run_op<&Gte::gpl>;
+    case 0x3F: return &run_op<&Gte::ncct>;
+    default: return [](Gte& g, u32) { g.r_.flag = 0; };  // opcodes psx-spx does not list compute nothing
   }
 }
 

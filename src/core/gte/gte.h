@@ -24,6 +24,10 @@ class Gte {
   void write_control(u32 r, u32 v);
   // Runs a command (the low 25 bits of the COP2 instruction); returns its duration in cycles.
   u32 execute(u32 command);
+  // What execute() runs for `command` (FLAG cleared, then the command), without the dispatch:
+  // for the recompiler, which knows the command when it compiles it.
+  using Command = void (*)(Gte& gte, u32 command);
+  static Command command_function(u32 command);
 
   void do_state(StateIO& s);
 
@@ -150,7 +154,9 @@ class Gte {
   void cc(Op op);
   void cdp(Op op);
 
-  void run_command(u32 command);
+  static Op op_of(u32 command);
+  template <void (Gte::*F)(Op)>
+  static void run_op(Gte& g, u32 command);
 
   Registers r_;
 };

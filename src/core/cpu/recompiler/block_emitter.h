@@ -85,14 +85,14 @@ class BlockEmitter {
     const u64* code_bits;     // CodePages::bits(): which RAM words hold compiled code
     void* code_pages;         // the CodePages, and what a store to such a word calls
     void (*code_write)(void* code_pages, u32 ram_offset);
-    // The GTE and its register moves and commands (Gte's member functions).
+    // The GTE and its register moves (Gte's member functions; the commands compile to
+    // Gte::command_function()'s).
     void* gte;
     u32 (*gte_read_data)(void* gte, u32 r);
     u32 (*gte_read_control)(void* gte, u32 r);
     void (*gte_write_data)(void* gte, u32 r, u32 v);
     void (*gte_write_control)(void* gte, u32 r, u32 v);
-    u32 (*gte_execute)(void* gte, u32 command);  // returns the command's cycles
-    u32 (*gte_cycles)(u32 command);              // the same cycles, known when compiling
+    u32 (*gte_cycles)(u32 command);              // a command's cycles, known when compiling
     u32 gte_longest;                             // the most cycles of any command
     // Going on to the next block without the dispatcher (RecompilerT::run): CodePages::
     // any_dirty_cell() (mostly the byte after hook_armed, tested with it) and

@@ -67,13 +67,14 @@ void Impl::cop2(NativeOp op, u32 i) {
       mov(edx, reg(rt(i)));
       call_leaf(reinterpret_cast<const void*>(op == NativeOp::Mtc2 ? lay.gte_write_data : lay.gte_write_control));
       break;
-    default:  // a command: the GTE is busy for the cycles it returns
-      mov(esi, i & 0x1FFFFFF);
-      call_leaf(reinterpret_cast<const void*>(lay.gte_execute));
-      mov(eax, eax);
-      add(rax, now);
+    default: {  // a command, known now: its own function, and the GTE busy for its cycles
+      const u32 command = i & 0x1FFFFFF;
+      mov(esi, command);
+      call_leaf(reinterpret_cast<const void*>(Gte::command_function(command)));
+      lea(rax, ptr[now + int(lay.gte_cycles(command))]);
       mov(cpu64(lay.gte_ready_at), rax);
       break;
+    }
   }
 }
 

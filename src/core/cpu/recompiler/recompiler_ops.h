@@ -245,7 +245,6 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.gte_read_control = [](void* g, u32 r) { return static_cast<Gte*>(g)->read_control(r); };
   l.gte_write_data = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_data(r, v); };
   l.gte_write_control = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_control(r, v); };
-  l.gte_execute = [](void* g, u32 command) { return static_cast<Gte*>(g)->execute(command); };
   l.gte_cycles = &Gte::command_cycles;
   l.gte_longest = Gte::kLongestCommandCycles;
   l.hi = cpu_at(&c.hi_);

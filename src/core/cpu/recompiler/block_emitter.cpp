@@ -383,9 +383,9 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   shadow(s, k, seg);
   if (uses_time(op)) settle();
   const bool split = (seg.split && k + 2 == seg.count) || seg.mid[k];  // a split branch (Segment)
-  if (after_branch && delay_dest) {
-    mov(cpu32(lay.pc), *delay_dest);
-    mov(cpu32(lay.next_pc), *delay_dest + 4);
+  if (const auto dest = delay_dest ? delay_dest : jump_dest; after_branch && dest) {
+    mov(cpu32(lay.pc), *dest);
+    mov(cpu32(lay.next_pc), *dest + 4);
   } else if (after_branch) {
     mov(eax, cpu32(lay.next_pc));
     mov(cpu32(lay.pc), eax);
@@ -568,6 +568,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.step_entry = nullptr;
   g.loop_head_entry = nullptr;
   g.split_cond.reset();
+  g.jump_dest.reset();
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   g.block_pc = steps[0].pc;
@@ -611,6 +612,9 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     for (size_t k = 0; k < seg.count - (seg.split ? 1 : 0); ++k) {
       const bool after_branch = k > 0 && Impl::is_branch(run[k - 1].native);
       if (after_branch && seg.mid[k - 1]) continue;  // emitted for each way by split_mid()
+      const NativeOp before = k > 0 ? run[k - 1].native : NativeOp::None;
+      if (after_branch && k + 1 == seg.count && (before == NativeOp::J || before == NativeOp::Jal))
+        g.jump_dest = Impl::static_target(before, run[k - 1].pc, run[k - 1].word);
       g.L(seg.resume[k]);
       g.native(run.subspan(k), k, after_branch, seg);
       if (seg.mid[k]) g.split_mid(run, seg, k, budget);
@@ -622,8 +626,9 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
       g.add(g.instructions, int(seg.count));
       g.sync_pc(run, seg.count - 1);
       if (seg.ends_block)  // the block's native end
-        g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, budget);
+        g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, budget, g.jump_dest);
     }
+    g.jump_dest.reset();
     g.L(seg.end);
   }
   g.L(done);

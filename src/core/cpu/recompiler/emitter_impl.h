@@ -204,6 +204,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   bool exit_way = false;
   // Where the delay slot split_end() is emitting goes (pc_ after it), else empty.
   std::optional<u32> delay_dest;
+  // Where the delay slot of a J/JAL ending an unsplit segment goes (its branch wrote next_pc_
+  // and next_in_delay_ as usual, for a call the delay slot may make), else empty.
+  std::optional<u32> jump_dest;
   // The last instruction's shadow check is left to the chain that follows (shadow()).
   bool defer_shadow = false;
   // block_emitter.cpp

@@ -40,7 +40,7 @@ void store_width(u8* p, u32 v, u32 width) {
 }  // namespace
 
 Bus::Bus(Scheduler& sched, InterruptController& irq)
-    : sched_(sched), irq_(irq), ram_(kRamSize, 0), bios_(kBiosSize, 0) {
+    : sched_(sched), irq_(irq), ram_(kRamSize + kScratchSize, 0), bios_(kBiosSize, 0) {
   // Power-on values of memory control 1 as the BIOS leaves them (psx-spx "Memory Control").
   memctrl_ = {0x1F000000, 0x1F802000, 0x0013243F, 0x00003022, 0x0013243F,
               0x200931E1, 0x00020843, 0x00070777, 0x00031125};
@@ -140,7 +140,7 @@ bool Bus::read(u32 vaddr, u32& v, u32 width, bool time_ram) {
     return true;
   }
   if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
-    v = scratchpad_access(vaddr) ? load_width(&scratch_[p - kScratchBase], width) : 0;
+    v = scratchpad_access(vaddr) ? load_width(scratchpad() + (p - kScratchBase), width) : 0;
     return true;
   }
   if (p >= kIoBase && p < kIoEnd) {
@@ -174,7 +174,7 @@ bool Bus::peek_data(u32 vaddr, u32 width, u32& v) {
   const u32 p = physical(vaddr);
   if (p < 0x00800000) v = load_width(&ram_[p & (kRamSize - 1)], width);
   else if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000 && !dcache_mode_)
-    v = load_width(&scratch_[p - kScratchBase], width);
+    v = load_width(scratchpad() + (p - kScratchBase), width);
   else if (p >= kIoBase && p < kIoEnd) v = io_read(p, width);
   else if (p >= kBiosBase && p < kBiosBase + kBiosSize) v = load_width(&bios_[p - kBiosBase], width);
   else return false;
@@ -199,8 +199,8 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
   }
   if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
     if (!scratchpad_access(vaddr)) return true;
-    if (watches_) watched_store(&scratch_[p - kScratchBase], p, v, width);
-    else store_width(&scratch_[p - kScratchBase], v, width);
+    if (watches_) watched_store(scratchpad() + (p - kScratchBase), p, v, width);
+    else store_width(scratchpad() + (p - kScratchBase), v, width);
     return true;
   }
   if (p >= kIoBase && p < kIoEnd) {
@@ -333,8 +333,8 @@ void Bus::do_state(StateIO& s) {
   s.section("BUS ", 2);
   std::vector<std::pair<u32, u32>> compiled;
   if (s.loading() && code_pages_) compiled = code_pages_->compiled_words(ram_.data());
-  s.bytes(ram_.data(), ram_.size());
-  s.pod(scratch_);
+  s.bytes(ram_.data(), kRamSize);
+  s.bytes(scratchpad(), kScratchSize);
   s.pod(memctrl_);
   s.pod(ram_size_);
   s.pod(cache_control_);

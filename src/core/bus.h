@@ -139,7 +139,9 @@ class Bus {
 
   u8* ram() { return ram_.data(); }
   const u8* ram() const { return ram_.data(); }
-  u8* scratchpad() { return scratch_.data(); }
+  // The scratchpad's 1 KiB lie right after RAM's 2 MiB (the recompiler's native loads and stores
+  // reach both from one base: offset kRamSize + n is scratchpad byte n).
+  u8* scratchpad() { return ram_.data() + kRamSize; }
   u8* bios() { return bios_.data(); }
 
   // Debug ports in expansion region 2 (DESIGN.md "Debug ports").
@@ -222,7 +224,7 @@ class Bus {
   // D-cache mode (psx-spx "Memory Control", BCC RAM=0 DS=1): every load from a cached segment
   // misses and copies the whole word holding the loaded byte into scratchpad slot (addr>>2)&FFh.
   void dcache_fill(u32 vaddr, u32 word) {
-    if (vaddr < 0xA0000000) store_le32(&scratch_[vaddr & 0x3FC], word);
+    if (vaddr < 0xA0000000) store_le32(scratchpad() + (vaddr & 0x3FC), word);
   }
   // Device events fall due between instructions; an I/O access in the middle of an instruction
   // (after its wait states) first runs the ones already due, so the device answers as of "now".
@@ -232,8 +234,7 @@ class Bus {
 
   Scheduler& sched_;
   InterruptController& irq_;
-  std::vector<u8> ram_;
-  std::array<u8, kScratchSize> scratch_{};
+  std::vector<u8> ram_;  // RAM, then the scratchpad (scratchpad())
   std::vector<u8> bios_;
   bool has_bios_ = false;
 

@@ -78,8 +78,7 @@ class BlockEmitter {
     u32 icache_block_bits;     // Bus::icache_block_bits()
     const u32* cache_control;  // Bus::cache_control_cell()
     u32 icache_enable;         // Bus::icache_enable_bit()
-    u8* ram;                  // Bus::ram(), 2 MiB
-    u8* scratchpad;           // Bus::scratchpad(), 1 KiB
+    u8* ram;                  // Bus::ram(), 2 MiB, then the scratchpad's 1 KiB (Bus::scratchpad())
     const bool* dcache_mode;  // Bus::dcache_mode_cell()
     const void* watches;      // Bus::watches_cell(): a pointer, non-null while watches are attached
     const u64* code_bits;     // CodePages::bits(): which RAM words hold compiled code

@@ -19,6 +19,10 @@ namespace {
 
 constexpr u32 kRamMask = CodePages::kRamSize - 1;
 constexpr u32 kScratchBase = 0x1F800000, kScratchMask = 0x3FF;
+// Past address_checks(), r13d is the access's offset from Layout::ram: RAM's byte, or for the
+// scratchpad, which follows RAM there (Bus::scratchpad()), kRamSize plus its byte.
+constexpr u32 kAreaBytes = CodePages::kRamSize + kScratchMask + 1;
+constexpr u32 kScratchOffset = CodePages::kRamSize;
 // Address bits that must be zero for RAM (below 8 MiB within the 512 MiB segment).
 constexpr u32 kNotRam = 0x1F800000;
 // Address bits that must be zero for the RAM the main path takes: the first 8 MiB of KUSEG or
@@ -55,7 +59,8 @@ void Impl::memory_guard(bool stores, Label& fail) {
 
 // r13d = the address (rs + offset). Before the instruction changes anything, whether its access
 // is one the native code makes (past memory_guard()): aligned (LWL/LWR/SWL/SWR need not be), and
-// RAM or the scratchpad.
+// RAM or the scratchpad. Then r13d becomes the access's offset from Layout::ram (kAreaBytes):
+// nothing after this reads the address, and the offset keeps its low two bits.
 void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   using namespace cpu_detail;
   const u32 width = width_of(op);
@@ -65,6 +70,7 @@ void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   Label &not_ram = cold_label(), &ok = cold_label();
   test(r13d, kNotCachedRam | (width - 1));
   jnz(not_ram, T_NEAR);
+  and_(r13d, kRamMask);
   L(ok);
   cold.push_back([this, &not_ram, &ok, &slow, width] {
     Label not_kseg1;
@@ -78,8 +84,9 @@ void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
     cmp(cl, 5);    // KSEG1's RAM: its first 8 MiB
     jne(not_kseg1);
     test(r13d, kNotRam);
-    jz(ok, T_NEAR);
-    jmp(slow, T_NEAR);
+    jnz(slow, T_NEAR);
+    and_(r13d, kRamMask);
+    jmp(ok, T_NEAR);
     L(not_kseg1);
     test(cl, 3);  // the scratchpad: KUSEG or KSEG0 (segment 0 or 4) ...
     jnz(slow, T_NEAR);
@@ -87,19 +94,30 @@ void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
     and_(edx, 0x1FFFFFFF & ~kScratchMask);  // ... at physical 1F800000h-1F8003FFh
     cmp(edx, kScratchBase);
     jne(slow, T_NEAR);
+    and_(r13d, kScratchMask);
+    or_(r13d, kScratchOffset);
     jmp(ok, T_NEAR);
   });
 }
 
-// Where native code finds byte rcx of `area` (RAM or the scratchpad, `bytes` long): rbx-relative
-// where the whole area lies within a signed 32-bit displacement of the context (one instruction
-// fewer), else through rdx, loaded here. LWL/LWR/SWL/SWR, which also reach the word through
-// other index registers, always take rdx.
-Xbyak::RegExp Impl::host_at(const void* area, u32 bytes, bool via_rdx) {
-  const auto d = from_context(area);
-  if (!via_rdx && d && from_context(static_cast<const u8*>(area) + bytes)) return rbx + rcx + *d;
-  mov(rdx, reinterpret_cast<u64>(area));
-  return rdx + rcx;
+// Where native code finds the byte at offset `index` (zero-extended) of Layout::ram's RAM and
+// scratchpad: rbx-relative where the whole area lies within a signed 32-bit displacement of the
+// context (one instruction fewer), else through rdx, loaded here. LWL/LWR/SWL/SWR, which also
+// reach the word through other index registers, always take rdx.
+Xbyak::RegExp Impl::host_at(const Xbyak::Reg64& index, bool via_rdx) {
+  const auto d = from_context(lay.ram);
+  if (!via_rdx && d && from_context(lay.ram + kAreaBytes)) return rbx + index + *d;
+  mov(rdx, reinterpret_cast<u64>(lay.ram));
+  return rdx + index;
+}
+
+// Where `op` accesses RAM or the scratchpad (r13d: address_checks()): LWL/LWR/SWL/SWR the word
+// holding the address (its offset in rcx, which they also use), the rest the address itself.
+Xbyak::RegExp Impl::word_at(NativeOp op) {
+  if (!is_unaligned(op)) return host_at(r13, false);
+  mov(ecx, r13d);
+  and_(ecx, ~3u);
+  return host_at(rcx, true);
 }
 
 // eax = the value a load of `op`'s width and signedness reads at `at`.
@@ -121,7 +139,7 @@ static void read_width(Impl& g, NativeOp op, const Xbyak::RegExp& at) {
 void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   const u32 t = cpu_detail::rt(i);
   Label &scratchpad = cold_label(), &done = cold_label();
-  test(r13d, kNotRam);
+  test(r13d, kScratchOffset);
   jnz(scratchpad, T_NEAR);
   lea(rcx, ptr[now + lay.load_issue]);  // issue_end + 1
   mov(rdx, cpu64(lay.load_done_at));
@@ -139,19 +157,14 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
   add(rcx, lay.load_bus);
   mov(cpu64(lay.load_done_at), rcx);
   mov(cpu32(lay.shadow_reg), t);
-  const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // LWL/LWR read the word holding the address
-  mov(ecx, r13d);
-  and_(ecx, kRamMask & word_mask);
-  read_width(*this, op, host_at(lay.ram, CodePages::kRamSize, is_unaligned(op)));
+  read_width(*this, op, word_at(op));
   L(done);
-  cold.push_back([this, &scratchpad, &done, op, word_mask] {
+  cold.push_back([this, &scratchpad, &done, op] {
     L(scratchpad);
     mov(rcx, cpu64(lay.load_done_at));
     cmp(now, rcx);
     cmovb(now, rcx);
-    mov(ecx, r13d);
-    and_(ecx, kScratchMask & word_mask);
-    read_width(*this, op, host_at(lay.scratchpad, kScratchMask + 1, is_unaligned(op)));
+    read_width(*this, op, word_at(op));
     jmp(done, T_NEAR);
   });
   if (is_unaligned(op)) merge_unaligned(op, t, pipe);
@@ -283,8 +296,7 @@ void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
 // when the word holds compiled code, or to the scratchpad. Stores take no time (the write queue).
 void Impl::store(NativeOp op, u32 i) {
   const u32 width = width_of(op);
-  Label &scratchpad = cold_label(), &done = cold_label();
-  const u32 word_mask = is_unaligned(op) ? ~3u : ~0u;  // SWL/SWR write into the word holding the address
+  Label& done = cold_label();
   if (op == NativeOp::Swc2) {  // SWC2: the GTE register, once the GTE is done
     wait_gte();
     if (const auto f = Gte::data_field(cpu_detail::rt(i), false)) {
@@ -297,24 +309,18 @@ void Impl::store(NativeOp op, u32 i) {
   } else {
     read_eax(cpu_detail::rt(i));
   }
-  mov(ecx, r13d);
-  test(r13d, kNotRam);
-  jnz(scratchpad, T_NEAR);
-  and_(ecx, kRamMask & word_mask);
-  const auto write = [this, op, width](const void* area, u32 bytes) {
-    const Xbyak::RegExp at = host_at(area, bytes, is_unaligned(op));
-    if (is_unaligned(op)) store_unaligned(*this, op);
-    else if (width == 4) mov(dword[at], eax);
-    else if (width == 2) mov(word[at], ax);
-    else mov(byte[at], al);
-  };
-  write(lay.ram, CodePages::kRamSize);
-  // The page's word bits: mostly none (a page of data), so the word's own bit is tested off the
-  // main path.
-  mov(edx, ecx);
+  const Xbyak::RegExp at = word_at(op);
+  if (is_unaligned(op)) store_unaligned(*this, op);
+  else if (width == 4) mov(dword[at], eax);
+  else if (width == 2) mov(word[at], ax);
+  else mov(byte[at], al);
+  // The page's word bits: mostly none (a page of data; the scratchpad's "pages" past RAM's never
+  // hold any), so the word's own bit is tested off the main path.
+  mov(edx, r13d);
   shr(edx, CodePages::kPageBits);
   Label& page_code = cold_label();
-  if (const auto d = from_context(lay.code_bits); d && from_context(lay.code_bits + CodePages::kPages)) {
+  if (const auto d = from_context(lay.code_bits);
+      d && from_context(lay.code_bits + CodePages::kPages + CodePages::kSparePages)) {
     cmp(qword[rbx + rdx * 8 + *d], 0);
   } else {
     mov(rsi, reinterpret_cast<u64>(lay.code_bits));
@@ -322,22 +328,18 @@ void Impl::store(NativeOp op, u32 i) {
   }
   jne(page_code, T_NEAR);
   L(done);
-  cold.push_back([this, &scratchpad, &done, &page_code, word_mask, write] {
+  cold.push_back([this, &done, &page_code] {
     L(page_code);
     mov(rsi, reinterpret_cast<u64>(lay.code_bits));
     mov(rsi, qword[rsi + rdx * 8]);
-    mov(edx, ecx);
+    mov(edx, r13d);
     shr(edx, 2);
     bt(rsi, rdx);  // the word's bit (the offset counts modulo 64)
     jnc(done, T_NEAR);
     // A word holding compiled code: its page's blocks are dropped.
     mov(rdi, reinterpret_cast<u64>(lay.code_pages));
-    mov(esi, ecx);
+    mov(esi, r13d);
     call_leaf(reinterpret_cast<const void*>(lay.code_write));
-    jmp(done, T_NEAR);
-    L(scratchpad);
-    and_(ecx, kScratchMask & word_mask);
-    write(lay.scratchpad, kScratchMask + 1);
     jmp(done, T_NEAR);
   });
 }
@@ -345,22 +347,15 @@ void Impl::store(NativeOp op, u32 i) {
 // LWC2 past its checks: wait_load() (the GTE load is not shadowed but waits its turn), Bus::read32
 // (RAM: kRamRead cycles; the scratchpad: none), wait_gte(), and the GTE register write.
 void Impl::lwc2(u32 i) {
-  Label scratchpad, read;
+  Label read;
   mov(rcx, cpu64(lay.load_done_at));
   cmp(now, rcx);
   cmovb(now, rcx);
-  mov(ecx, r13d);
-  test(r13d, kNotRam);
-  jnz(scratchpad);
+  test(r13d, kScratchOffset);
+  jnz(read);
   add(now, lay.ram_read);
-  and_(ecx, kRamMask);
-  mov(rdx, reinterpret_cast<u64>(lay.ram));
-  jmp(read);
-  L(scratchpad);
-  and_(ecx, kScratchMask);
-  mov(rdx, reinterpret_cast<u64>(lay.scratchpad));
   L(read);
-  mov(r8d, dword[rdx + rcx]);
+  mov(r8d, dword[host_at(r13, false)]);
   wait_gte();
   if (const auto f = Gte::data_field(cpu_detail::rt(i), true)) return gte_write(*f, r8d);
   mov(rdi, reinterpret_cast<u64>(lay.gte));

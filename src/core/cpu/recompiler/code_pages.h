@@ -25,6 +25,9 @@ class CodePages {
   // drop no blocks: recompiling is far dearer than a store. 64 words a page: one u64 of bits.
   static constexpr u32 kPageBits = 8;
   static constexpr u32 kPages = kRamSize >> kPageBits;
+  // bits() has this many more u64s after RAM's pages, always zero: native stores address the
+  // scratchpad as the 1 KiB after RAM (Bus::scratchpad()) and look its "pages" up there.
+  static constexpr u32 kSparePages = 1024 >> kPageBits;
   static constexpr u32 kNoPage = 0xFFFFFFFF;
 
   // The i-cache whose lines a write makes stale (the bus's; null: none).
@@ -77,8 +80,8 @@ class CodePages {
     for (const auto& [off, word] : before)
       if (load_le32(ram + off) != word) on_ram_write(off);
   }
-  // The word bits in place (kPages u64s, never reallocated), for native stores, which call
-  // on_ram_write() only for a word whose bit is set.
+  // The word bits in place (kPages + kSparePages u64s, never reallocated), for native stores,
+  // which call on_ram_write() only for a word whose bit is set.
   const u64* bits() const { return code_.data(); }
   bool any_dirty() const { return *any_dirty_; }
   // any_dirty() in place, for compiled blocks that go on to the next block themselves.
@@ -119,7 +122,7 @@ class CodePages {
     *any_dirty_ = true;
   }
 
-  std::vector<u64> code_ = std::vector<u64>(kPages);  // bit w of page p: word p * 64 + w
+  std::vector<u64> code_ = std::vector<u64>(kPages + kSparePages);  // bit w of page p: word p * 64 + w
   std::vector<u32> dirty_;
   bool own_flag_ = false;
   bool* any_dirty_ = &own_flag_;  // !dirty_.empty()

@@ -10,9 +10,10 @@
 // rbx = the context (the CPU) plus Layout::bias, r12 = the i-cache's tags (its words lie at a
 // fixed distance from them), r10d = the value of the load the previous instruction made
 // (load_val_, which native() lands from r10d where nothing called out since), r13d = a load's or
-// store's address, r14 = the scheduler's time and r15 = its deadline, rbp = the CPU's instruction
-// count (the cells in memory are stale while native code runs: flush() writes the time and the
-// count back before anything outside the block can look, reload() reads all three after a call).
+// store's address (past address_checks(), its offset from Layout::ram), r14 = the scheduler's
+// time and r15 = its deadline, rbp = the CPU's instruction count (the cells in memory are stale
+// while native code runs: flush() writes the time and the count back before anything outside the
+// block can look, reload() reads all three after a call).
 // Within a native segment rbp stays the count at the segment's start: instruction k adds nothing,
 // and every way out of the segment adds the k instructions run (its end, a slow or fallback call).
 // Likewise r14 runs behind the time by the cycles the emitter knows are owed (Impl::owed).
@@ -133,7 +134,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   }
   Xbyak::Address cpu32(int off) { return dword[rbx + off]; }
   std::optional<int> from_context(const void* p) const;
-  Xbyak::RegExp host_at(const void* area, u32 bytes, bool via_rdx);
+  Xbyak::RegExp host_at(const Xbyak::Reg64& index, bool via_rdx);
+  Xbyak::RegExp word_at(NativeOp op);
   Xbyak::RegExp gte_at(u32 offset);
   void gte_read(const Gte::Field& f);
   void gte_write(const Gte::Field& f, const Xbyak::Reg32& value);

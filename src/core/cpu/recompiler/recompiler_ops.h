@@ -270,7 +270,6 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
     l.fetch_word_cycles = u32(BusT::kRamFetchUncached);
     l.icache_block_bits = BusT::icache_block_bits();
     l.ram = c.bus_.ram();
-    l.scratchpad = c.bus_.scratchpad();
     l.dcache_mode = c.bus_.dcache_mode_cell();
     l.watches = c.bus_.watches_cell();
     // Native stores report to this recompiler's pages, which the console attaches to the bus

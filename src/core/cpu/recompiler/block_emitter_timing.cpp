@@ -122,15 +122,27 @@ bool Impl::has_stall(const Step& s, Shadow shadow, u32 shadowed) {
 
 // Segment::shadow and Segment::shadowed for a segment's instructions; `reach`: instructions
 // since the last that may have left a load shadowed, this one included (kLoadIssue + kLoadBus - 1).
+// An instruction that waits for the segment's last load (shadow_known(): it reads the load's rt
+// outside a load delay slot of that register) leaves the shadow clear and the time at the
+// access's end: the instructions after it, up to and including the next load, check nothing.
 void Impl::plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>& shadow,
                        std::vector<u32>& shadowed) {
   shadow.resize(run.size());
   shadowed.assign(run.size(), Segment::kUnknownShadow);
+  bool waited = false;
   for (size_t k = 0, since = 1, last = 0; k < run.size(); ++k) {
-    shadow[k] = since < reach ? Shadow::check : since == reach ? Shadow::clear : Shadow::none;
-    if (shadow[k] == Shadow::check && k > 0 && is_load(run[last].native) && k - last < reach)
-      shadowed[k] = cpu_detail::rt(run[last].word);
-    if (is_load(run[k].native)) last = k;
+    shadow[k] = waited || since > reach ? Shadow::none : since < reach ? Shadow::check : Shadow::clear;
+    if (shadow[k] == Shadow::check && k > 0 && is_load(run[last].native) && k - last < reach) {
+      const u32 r = cpu_detail::rt(run[last].word);
+      const std::vector<u32> reads = shadowable_reads(run[k]);
+      shadowed[k] = r;
+      const bool delay_slot = is_delayed(run[k - 1].native) && cpu_detail::rt(run[k - 1].word) == r;
+      waited = r != 0 && !delay_slot && std::find(reads.begin(), reads.end(), r) != reads.end();
+    }
+    if (is_load(run[k].native)) {
+      last = k;
+      waited = false;
+    }
     since = is_load(run[k].native) ? 1 : since + 1;
   }
 }

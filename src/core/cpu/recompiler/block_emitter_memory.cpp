@@ -135,35 +135,48 @@ static void read_width(Impl& g, NativeOp op, const Xbyak::RegExp& at) {
 // guard's i-cache hits are cached code) the load-shadow arithmetic: the access starts when the
 // load has issued or the previous access ends (a cycle later for a load in the delay slot of a
 // load to the same register), the CPU waits only until it starts, and rt is shadowed until it
-// ends. From the scratchpad: wait_load(), then a read without time.
-void Impl::load(NativeOp op, u32 i, const Pipe& pipe) {
+// ends. From the scratchpad: wait_load(), then a read without time. `bus_free`: the load's shadow
+// check is known to find the previous access over (plan_shadow(): time has reached its end), so
+// the access starts as the load issues and neither path waits; the main path's extra cycles
+// stay owed (Impl::owed), and the scratchpad's path takes them back.
+void Impl::load(NativeOp op, u32 i, const Pipe& pipe, bool bus_free) {
   const u32 t = cpu_detail::rt(i);
   Label &scratchpad = cold_label(), &done = cold_label();
   test(r13d, kScratchOffset);
   jnz(scratchpad, T_NEAR);
-  lea(rcx, ptr[now + lay.load_issue]);  // issue_end + 1
-  mov(rdx, cpu64(lay.load_done_at));
-  if (t != 0 && pipe.dynamic) {
-    xor_(eax, eax);
-    cmp(cpu32(lay.load_reg), t);
-    sete(al);
-    add(rdx, rax);
-  } else if (t != 0 && pipe.after_load && pipe.load_reg == t) {
-    add(rdx, 1);
+  if (bus_free) {
+    lea(rcx, ptr[now + lay.load_issue + lay.load_bus]);
+  } else {
+    lea(rcx, ptr[now + lay.load_issue]);  // issue_end + 1
+    mov(rdx, cpu64(lay.load_done_at));
+    if (t != 0 && pipe.dynamic) {
+      xor_(eax, eax);
+      cmp(cpu32(lay.load_reg), t);
+      sete(al);
+      add(rdx, rax);
+    } else if (t != 0 && pipe.after_load && pipe.load_reg == t) {
+      add(rdx, 1);
+    }
+    cmp(rcx, rdx);
+    cmovb(rcx, rdx);  // the access's start
+    lea(now, ptr[rcx - 1]);
+    add(rcx, lay.load_bus);
   }
-  cmp(rcx, rdx);
-  cmovb(rcx, rdx);  // the access's start
-  lea(now, ptr[rcx - 1]);
-  add(rcx, lay.load_bus);
   mov(cpu64(lay.load_done_at), rcx);
   mov(cpu32(lay.shadow_reg), t);
   read_width(*this, op, word_at(op));
   L(done);
-  cold.push_back([this, &scratchpad, &done, op] {
+  const u32 issue = bus_free ? u32(lay.load_issue - 1) : 0;
+  owed += issue;
+  cold.push_back([this, &scratchpad, &done, op, issue] {
     L(scratchpad);
-    mov(rcx, cpu64(lay.load_done_at));
-    cmp(now, rcx);
-    cmovb(now, rcx);
+    if (issue != 0) {
+      sub(now, int(issue));
+    } else {
+      mov(rcx, cpu64(lay.load_done_at));
+      cmp(now, rcx);
+      cmovb(now, rcx);
+    }
     read_width(*this, op, word_at(op));
     jmp(done, T_NEAR);
   });

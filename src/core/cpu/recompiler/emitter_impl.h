@@ -280,7 +280,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter_memory.cpp
   void memory_guard(bool stores, Xbyak::Label& fail);
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
-  void load(NativeOp op, u32 i, const Pipe& pipe);
+  void load(NativeOp op, u32 i, const Pipe& pipe, bool bus_free);
   void merge_unaligned(NativeOp op, u32 rt, const Pipe& pipe);
   void store(NativeOp op, u32 i);
   void lwc2(u32 i);

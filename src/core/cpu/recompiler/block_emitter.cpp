@@ -372,21 +372,22 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
     eax_reg = 0;
   }
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
-  if (after_branch) {
-    mov(cpu32(lay.current_pc), s.pc);  // else sync_pc()
+  if (after_branch && !quiet_delay) {  // else sync_pc()
+    mov(cpu32(lay.current_pc), s.pc);
     mov(byte[rbx + lay.in_delay_slot], 1);
     if (!delay_dest) mov(byte[rbx + lay.next_in_delay], 0);  // a split branch left it so
-  } else if (k == 0 || (k >= 2 && seg.mid[k - 2])) {  // after a delay slot, not in one
+  } else if (k == 0) {  // not in a delay slot (a split one on the way on wrote none: quiet_delay)
     mov(byte[rbx + lay.in_delay_slot], 0);
   }
   ++owed;  // the instruction's cycle
   shadow(s, k, seg);
   if (uses_time(op)) settle();
   const bool split = (seg.split && k + 2 == seg.count) || seg.mid[k];  // a split branch (Segment)
-  if (const auto dest = delay_dest ? delay_dest : jump_dest; after_branch && dest) {
+  const bool writes_pc = after_branch && !quiet_delay;
+  if (const auto dest = delay_dest ? delay_dest : jump_dest; writes_pc && dest) {
     mov(cpu32(lay.pc), *dest);
     mov(cpu32(lay.next_pc), *dest + 4);
-  } else if (after_branch) {
+  } else if (writes_pc) {
     mov(eax, cpu32(lay.next_pc));
     mov(cpu32(lay.pc), eax);
     add(eax, 4);
@@ -414,14 +415,18 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
 // current_pc_, pc_ and next_pc_ after instruction j of a segment, which native code writes only
 // where someone outside the block can look (sync_pc() at a segment's end, before a slow or
 // fallback call, at a deadline exit): a delay slot writes its own, which depend on where the
-// branch went; any other instruction's are its address, the next and the one after, except that
-// a branch has set next_pc_ itself. Nothing called from inside an instruction reads them (the
-// GTE, the code pages).
-void Impl::sync_pc(std::span<const Step> run, size_t j) {
-  if (j > 0 && is_branch(run[j - 1].native)) return;
+// branch went, except the one of a branch split inside the segment (seg.mid), whose way on is
+// the segment's rest: its values are those of any other instruction, with in_delay_slot_ set
+// (quiet_delay). Any other instruction's are its address, the next and the one after, except
+// that a branch has set next_pc_ itself. Nothing called from inside an instruction reads them
+// (the GTE, the code pages).
+void Impl::sync_pc(std::span<const Step> run, size_t j, const Segment& seg) {
+  const bool delay_slot = j > 0 && is_branch(run[j - 1].native);
+  if (delay_slot && !seg.mid[j - 1]) return;
   mov(cpu32(lay.current_pc), run[j].pc);
   mov(cpu32(lay.pc), run[j].pc + 4);
   if (!is_branch(run[j].native)) mov(cpu32(lay.next_pc), run[j].pc + 8);
+  if (delay_slot) mov(byte[rbx + lay.in_delay_slot], 1);
 }
 
 // Six callee-saved pushes and 8 bytes more leave the stack 16-byte aligned at each call, as the
@@ -492,7 +497,7 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
 void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
   for (size_t k = 0; k < seg.count; ++k) {
     L(seg.slow[k]);
-    if (k > 0) sync_pc(run, k - 1);  // from native code (or the call before: the same values)
+    if (k > 0) sync_pc(run, k - 1, seg);  // from native code (or the call before: the same values)
     // A split branch has no native delay slot to resume (split_end()): on into its slow path.
     const bool split_branch = (seg.split && k + 2 == seg.count) || seg.mid[k];
     if (!split_branch && (k == 0 || (run[k].pc & 15) == 0 || k + 1 == seg.count)) {
@@ -508,7 +513,7 @@ void Impl::segment_stubs(std::span<const Step> run, Segment& seg) {
     if (seg.time_in[k] != 0) add(now, int(seg.time_in[k]));
     if (k > 0) {
       add(instructions, int(k));
-      sync_pc(run, k - 1);
+      sync_pc(run, k - 1, seg);
     }
     call_and_resume(run, k, seg);
   }
@@ -624,7 +629,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     } else {
       g.settle();
       g.add(g.instructions, int(seg.count));
-      g.sync_pc(run, seg.count - 1);
+      g.sync_pc(run, seg.count - 1, seg);
       if (seg.ends_block)  // the block's native end
         g.chain(true, g.loops_natively ? &seg.resume[0] : nullptr, budget, g.jump_dest);
     }

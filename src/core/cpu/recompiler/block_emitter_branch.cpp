@@ -242,7 +242,9 @@ void Impl::split_mid(std::span<const Step> run, Segment& seg, size_t k, std::opt
   owed = owed_then;
   eax_reg = eax_then;
   delay_dest = b.pc + 8;
+  quiet_delay = true;
   native(run.subspan(k + 1), k + 1, true, seg);
+  quiet_delay = false;
   delay_dest.reset();
 }
 

@@ -206,6 +206,10 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   bool exit_way = false;
   // Where the delay slot split_end() is emitting goes (pc_ after it), else empty.
   std::optional<u32> delay_dest;
+  // Emitting the delay slot of split_mid()'s way on (not taken): it writes no pc_, next_pc_,
+  // current_pc_ or in_delay_slot_, which the segment's stubs write where a call may read them
+  // (sync_pc()); in_delay_slot_ stays 0 for the instructions after it.
+  bool quiet_delay = false;
   // Where the delay slot of a J/JAL ending an unsplit segment goes (its branch wrote next_pc_
   // and next_in_delay_ as usual, for a call the delay slot may make), else empty.
   std::optional<u32> jump_dest;
@@ -250,7 +254,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter.cpp
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);
-  void sync_pc(std::span<const Step> run, size_t j);
+  void sync_pc(std::span<const Step> run, size_t j, const Segment& seg);
   void plan(std::span<const Step> run, Segment& seg);
   void segment_stubs(std::span<const Step> run, Segment& seg);
   void call_and_resume(std::span<const Step> run, size_t k, Segment& seg);

@@ -43,12 +43,12 @@ void Scheduler::run_due_events() {
     ~EndDispatch() { h = -1; }
   } end_dispatch{dispatching_};
   for (;;) {
-    recompute_next();
-    if (next_ > now_) return;
-    // Earliest due event; ties go to the lowest handle.
+    // The earliest event (ties go to the lowest handle) is next_, and the one to run when due.
     Handle due = -1;
+    next_ = kNever;
     for (Handle h = 0; h < static_cast<Handle>(events_.size()); ++h)
-      if (events_[h].when <= now_ && (due < 0 || events_[h].when < events_[due].when)) due = h;
+      if (events_[h].when < next_) next_ = events_[h].when, due = h;
+    if (next_ > now_) return;
     Cycles late = now_ - events_[due].when;
     dispatching_ = due;
     dispatch_time_ = events_[due].when;

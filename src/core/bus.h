@@ -27,6 +27,8 @@ class Bus {
  public:
   static constexpr u32 kRamSize = 2 * 1024 * 1024;
   static constexpr u32 kScratchSize = 1024;
+  // The recompiler's pages cover this RAM and the scratchpad after it (scratchpad()).
+  static_assert(kRamSize == CodePages::kRamSize && kScratchSize == CodePages::kScratchBytes);
   static constexpr u32 kBiosSize = 512 * 1024;
 
   Bus(Scheduler& sched, InterruptController& irq);

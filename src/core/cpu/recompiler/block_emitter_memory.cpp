@@ -21,7 +21,7 @@ constexpr u32 kRamMask = CodePages::kRamSize - 1;
 constexpr u32 kScratchBase = 0x1F800000, kScratchMask = 0x3FF;
 // Past address_checks(), r13d is the access's offset from Layout::ram: RAM's byte, or for the
 // scratchpad, which follows RAM there (Bus::scratchpad()), kRamSize plus its byte.
-constexpr u32 kAreaBytes = CodePages::kRamSize + kScratchMask + 1;
+constexpr u32 kAreaBytes = CodePages::kRamSize + CodePages::kScratchBytes;
 constexpr u32 kScratchOffset = CodePages::kRamSize;
 // Address bits that must be zero for RAM (below 8 MiB within the 512 MiB segment).
 constexpr u32 kNotRam = 0x1F800000;

@@ -82,6 +82,14 @@ std::vector<u32> Impl::shadowable_reads(const Step& s) {
   return regs;
 }
 
+// Whether instruction s, which a load to r (not r0) shadows, waits for that load's access: it
+// reads r, and not in a load delay slot of r (`delay_slot`), where it reads the old value.
+// shadow_known() emits the wait, and plan_shadow() knows the shadow clear after it.
+bool Impl::waits_for_load(const Step& s, u32 r, bool delay_slot) {
+  const std::vector<u32> reads = shadowable_reads(s);
+  return r != 0 && !delay_slot && std::find(reads.begin(), reads.end(), r) != reads.end();
+}
+
 // CpuT::shadow_stall() where shadow_reg_ is nonzero, in the cold code up to the wait: the
 // shadow clears once the access has ended, and only an instruction reading the shadowed register
 // may wait (`stall`: stall_stub(), with ecx = the register). Goes on inline where nothing waits;
@@ -134,10 +142,9 @@ void Impl::plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>
     shadow[k] = waited || since > reach ? Shadow::none : since < reach ? Shadow::check : Shadow::clear;
     if (shadow[k] == Shadow::check && k > 0 && is_load(run[last].native) && k - last < reach) {
       const u32 r = cpu_detail::rt(run[last].word);
-      const std::vector<u32> reads = shadowable_reads(run[k]);
       shadowed[k] = r;
       const bool delay_slot = is_delayed(run[k - 1].native) && cpu_detail::rt(run[k - 1].word) == r;
-      waited = r != 0 && !delay_slot && std::find(reads.begin(), reads.end(), r) != reads.end();
+      waited = waits_for_load(run[k], r, delay_slot);
     }
     if (is_load(run[k].native)) {
       last = k;
@@ -193,9 +200,7 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
 // would have (time only grows, so a check that would have cleared earlier clears there), and
 // the last instruction's check leaves it as the instructions between would have.
 void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last) {
-  const std::vector<u32> reads = shadowable_reads(s);
-  const bool delay_slot = pipe.after_load && pipe.load_reg == r;
-  if (r != 0 && !delay_slot && std::find(reads.begin(), reads.end(), r) != reads.end()) {
+  if (waits_for_load(s, r, pipe.after_load && pipe.load_reg == r)) {
     settle();
     mov(rcx, cpu64(lay.load_done_at));
     cmp(now, rcx);

@@ -21,13 +21,14 @@ class CodePages {
   CodePages(const CodePages&) = delete;  // any_dirty_ may point into this one
   CodePages& operator=(const CodePages&) = delete;
   static constexpr u32 kRamSize = 2 * 1024 * 1024;
+  static constexpr u32 kScratchBytes = 1024;  // the scratchpad's, after RAM (Bus::scratchpad())
   // Word bits, so that stores to data next to code (a program's variables right after its code)
   // drop no blocks: recompiling is far dearer than a store. 64 words a page: one u64 of bits.
   static constexpr u32 kPageBits = 8;
   static constexpr u32 kPages = kRamSize >> kPageBits;
   // bits() has this many more u64s after RAM's pages, always zero: native stores address the
   // scratchpad as the 1 KiB after RAM (Bus::scratchpad()) and look its "pages" up there.
-  static constexpr u32 kSparePages = 1024 >> kPageBits;
+  static constexpr u32 kSparePages = kScratchBytes >> kPageBits;
   static constexpr u32 kNoPage = 0xFFFFFFFF;
 
   // The i-cache whose lines a write makes stale (the bus's; null: none).

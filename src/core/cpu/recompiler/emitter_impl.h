@@ -305,6 +305,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   u32 longest_wait(const Step& s) const;
   void budget_check(u32 budget, Xbyak::Label& fail);
   static std::vector<u32> shadowable_reads(const Step& s);
+  static bool waits_for_load(const Step& s, u32 r, bool delay_slot);
   static bool has_stall(const Step& s, const Segment& seg, size_t k);
   static bool has_stall(const Step& s, Shadow shadow, u32 shadowed);
   static void plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>& shadow,

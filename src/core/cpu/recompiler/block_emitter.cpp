@@ -563,7 +563,8 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   // bytes and a line check of at most 90) and on the frame's (prologue and padded checks,
   // kCleanEntry bytes, then up to three chain()s of about 250 bytes each, two of them after a
   // split branch, and the loop-head routine).
-  const size_t step_bytes = 1536, frame_bytes = 1536;
+  // The fill routines, when this block emits them first, take about 800 bytes.
+  const size_t step_bytes = 1536, frame_bytes = 1536 + (impl_->fill_routines[0] ? 0 : 1024);
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;
   g.lay = layout;
@@ -574,6 +575,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.loop_head_entry = nullptr;
   g.split_cond.reset();
   g.jump_dest.reset();
+  g.fill_routines_once();
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   g.block_pc = steps[0].pc;
@@ -649,7 +651,10 @@ void Impl::emit_cold() {
   cold_labels.clear();
 }
 
-void BlockEmitter::clear() { impl_->reset(); }
+void BlockEmitter::clear() {
+  impl_->reset();
+  impl_->fill_routines.fill(nullptr);
+}
 
 size_t BlockEmitter::bytes_used() const { return impl_->getSize(); }
 

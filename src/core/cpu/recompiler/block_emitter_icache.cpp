@@ -40,50 +40,9 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
   if (filled) L(*filled);
 }
 
-// The i-cache tag of `line` (an address's line) and where its four words begin, from r12.
+// The i-cache tag of `line` (an address's line), from r12.
 Xbyak::Address Impl::icache_tag(u32 line) { return dword[r12 + int(4 * ICache::line(line))]; }
 
-Xbyak::RegExp Impl::icache_words(u32 line) const {
-  const auto at = reinterpret_cast<const char*>(&lay.icache_words[4 * ICache::line(line)]) -
-                  reinterpret_cast<const char*>(lay.icache_tags);
-  return r12 + int(at);
-}
-
-// Each word of `run` on its first word's line, in the four words at `at` (a line's RAM), must
-// be the word compiled. Three or four words are compared at once with the line's compiled words, kept with
-// the cold code (SSE2: 37 bytes and 5 instructions on the main path instead of 48-61 bytes and
-// 6-8 compares and jumps); clobbers rax and xmm0 (no native code keeps anything there).
-void Impl::line_words(std::span<const Step> run, Label& fail, const Xbyak::RegExp& at) {
-  const u32 line = run[0].pc & ~15u;
-  size_t n = 0;
-  while (n < run.size() && (run[n].pc & ~15u) == line) ++n;
-  if (n < 3) {
-    for (size_t k = 0; k < n; ++k) {
-      cmp(dword[at + int(4 * ICache::word(run[k].pc))], run[k].word);
-      jne(fail, T_NEAR);
-    }
-    return;
-  }
-  std::array<u32, 4> words{};
-  u32 lanes = 0;  // pmovmskb's bits: four per word
-  for (size_t k = 0; k < n; ++k) {
-    const u32 w = ICache::word(run[k].pc);
-    words[w] = run[k].word;
-    lanes |= 0xFu << (4 * w);
-  }
-  Label& compiled = cold_label();
-  cold.push_back([this, words, &compiled] {
-    align(16);  // pcmpeqd's memory operand
-    L(compiled);
-    for (u32 w : words) dd(w);
-  });
-  movdqu(xmm0, ptr[at]);
-  pcmpeqd(xmm0, ptr[rip + compiled]);
-  pmovmskb(eax, xmm0);
-  if (lanes != 0xFFFF) and_(eax, lanes);
-  cmp(eax, lanes);
-  jne(fail, T_NEAR);
-}
 
 // Whether a miss on pc's line can be filled by native code: cached code in RAM (the guard has
 // ruled out KSEG1).
@@ -95,72 +54,123 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
   return fills_natively(pc) ? &seg.fill[k] : nullptr;
 }
 
-// ICache::fill() and Bus::icache_miss() for a miss at pc under a four-word block size, from the
-// line's RAM at rsi: a line whose tag holds pc's address is refilled whole, any other is
-// replaced from pc's word to the line's end; fetch_hit()'s table then names the line where all
-// four words are valid. Each way then calls `done` with the number of words read.
-template <class Done>
-void Impl::icache_fill(u32 pc, Done done) {
-  const u32 line = pc & ~15u, first = ICache::word(pc), tag = Bus::physical(line) & ICache::kTagMask;
-  const Xbyak::Address tag_at = icache_tag(line);
-  const Xbyak::RegExp words = icache_words(line);
-  u32* const hot = &lay.hot_lines[ICache::line(line)];
-  const auto note_hot = [&](u32 value) {
-    if (const auto d = from_context(hot)) {
-      mov(dword[rbx + *d], value);
-    } else {
-      mov(rax, reinterpret_cast<u64>(hot));
-      mov(dword[rax], value);
-    }
+// The fill of a line that fill_stub() found missing, as ICache::fill() and Bus::icache_miss()
+// make it under a four-word block size, shared by every fill stub of the buffer that enters its
+// line at word `first`: a stub is then about 20 bytes instead of about 220. A game that runs more
+// code in a frame than the i-cache's 4 KiB refills hundreds of lines each frame, and a stub each
+// made them a third of the host code a frame runs through.
+// Entered with rdi at the stub's FillRecord. A line that is stale or under a two-word block size,
+// or whose RAM no longer holds the words compiled, is refused: nothing changes, and the routine
+// goes on to the stub's slow path instead of returning. Otherwise the fill starts at the
+// instruction's cycle or at the end of a load's bus access still under way, whichever is later:
+// a line whose tag holds the address is refilled whole, any other is replaced from word `first`
+// to the line's end, and fetch_hit()'s table then names the line where all four words are valid.
+// The time moves on by a word's fetch for each word read, one cycle short (the instruction
+// counts its own). Clobbers rax, rcx, rdx, rsi, r8 and xmm0, as the stub did.
+void Impl::fill_routine(u32 first) {
+  const int words_at = int(reinterpret_cast<const char*>(lay.icache_words) -
+                           reinterpret_cast<const char*>(lay.icache_tags));
+  const Xbyak::Address tag = dword[r12 + rax];  // rax = 4 * the line's index
+  const auto words = [&](u32 w) { return r12 + rax * 4 + (words_at + int(4 * w)); };
+  const auto finish = [&](u32 read, bool line_is_hot) {
+    if (line_is_hot) mov(edx, dword[rdi + FillRecord::kLine]);
+    else mov(edx, lay.no_hot_line);
+    mov(rcx, reinterpret_cast<u64>(lay.hot_lines));
+    mov(dword[rcx + rax], edx);
+    lea(now, ptr[r8 + int(read * lay.fetch_word_cycles) - 1]);
+    mov(ecx, dword[rdi + FillRecord::kTimeIn]);
+    sub(now, rcx);
+    ret();
   };
-  Label other;
-  mov(ecx, tag_at);
-  xor_(ecx, tag);
-  test(ecx, ICache::kTagMask);
-  jnz(other);
-  or_(tag_at, 0xF);
+  Label refuse, other;
+  mov(eax, dword[rdi + FillRecord::kTagOffset]);
+  test(tag, ICache::kStale);
+  jnz(refuse, T_NEAR);
+  mov(rcx, reinterpret_cast<u64>(lay.cache_control));
+  test(dword[rcx], lay.icache_block_bits);
+  jz(refuse, T_NEAR);
+  mov(esi, dword[rdi + FillRecord::kRamOffset]);
+  mov(rcx, reinterpret_cast<u64>(lay.ram));
+  add(rsi, rcx);
   movdqu(xmm0, ptr[rsi]);
-  movdqu(ptr[words], xmm0);
-  note_hot(line);
-  done(4);
+  pcmpeqd(xmm0, ptr[rdi + FillRecord::kWords]);
+  pmovmskb(edx, xmm0);
+  and_(edx, dword[rdi + FillRecord::kLanes]);
+  cmp(edx, dword[rdi + FillRecord::kLanes]);
+  jne(refuse, T_NEAR);
+  mov(ecx, dword[rdi + FillRecord::kTimeIn]);
+  lea(r8, ptr[now + rcx + 1]);  // the time (Impl::owed) and the cycle
+  mov(rdx, cpu64(lay.load_done_at));
+  cmp(r8, rdx);
+  cmovb(r8, rdx);
+  mov(ecx, tag);
+  xor_(ecx, dword[rdi + FillRecord::kTagBits]);
+  test(ecx, ICache::kTagMask);
+  jnz(other, T_NEAR);
+  or_(tag, 0xF);
+  movdqu(xmm0, ptr[rsi]);
+  movdqu(ptr[words(0)], xmm0);
+  finish(4, true);
   L(other);
-  and_(tag_at, ICache::kStale);
-  or_(tag_at, tag | ((0xFu << first) & 0xF));
+  and_(tag, ICache::kStale);
+  mov(ecx, dword[rdi + FillRecord::kTagBits]);
+  or_(ecx, (0xFu << first) & 0xF);
+  or_(tag, ecx);
   for (u32 w = first; w < 4; ++w) {
     mov(ecx, dword[rsi + int(4 * w)]);
-    mov(dword[words + int(4 * w)], ecx);
+    mov(dword[words(w)], ecx);
   }
-  note_hot(first == 0 ? line : lay.no_hot_line);
-  done(4 - first);
+  finish(4 - first, first == 0);
+  L(refuse);
+  add(rsp, 8);  // not back to the stub: on to its slow path
+  jmp(qword[rdi + FillRecord::kSlow]);
+}
+
+// The four fill_routine()s, emitted once for the code buffer where the first block that may need
+// one is emitted (again after clear()). What they read of the layout (the cells of the i-cache,
+// the bus and the CPU) is the same for every block of a recompiler, which serves one CPU.
+void Impl::fill_routines_once() {
+  if (!lay.hot_lines || fill_routines[0]) return;
+  for (u32 first = 0; first < 4; ++first) {
+    align(16);
+    fill_routines[first] = getCurr();
+    fill_routine(first);
+  }
 }
 
 // The fetch of rest[0] (instruction k) missing the i-cache, as CpuT::execute_at_pc() and
 // Bus::fetch_slow() make it: the instruction's cycle, then the wait for a load's bus access
-// still under way, then the fill and a word's time for each word read. Only a fill of the words
-// the run needs from this line that brings exactly the words compiled (RAM still holds them) is
-// made here, and not under a two-word block size (a fill entered at word 0 would leave words 2
-// and 3 missing), nor on a stale line, which may be a hit; otherwise instruction k takes its
-// slow path, nothing changed. The time is left one cycle short: instruction k counts its own
-// cycle.
+// still under way, then the fill and a word's time for each word read (fill_routine(), from this
+// stub's FillRecord, kept with the cold code). Only a fill of the words the run needs from this
+// line that brings exactly the words compiled (RAM still holds them) is made here, and not under
+// a two-word block size (a fill entered at word 0 would leave words 2 and 3 missing), nor on a
+// stale line, which may be a hit; otherwise instruction k takes its slow path, nothing changed.
+// The time is left one cycle short: instruction k counts its own cycle.
 void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
   const u32 line = rest[0].pc & ~15u;
-  L(seg.fill[k]);
+  std::array<u32, FillRecord::kWordCount> record{};
+  for (size_t n = 0; n < rest.size() && (rest[n].pc & ~15u) == line; ++n) {
+    const u32 w = ICache::word(rest[n].pc);
+    record[w] = rest[n].word;
+    record[FillRecord::kLanes / 4] |= 0xFu << (4 * w);  // pmovmskb's bits: four per word
+  }
+  record[FillRecord::kTagBits / 4] = Bus::physical(line) & ICache::kTagMask;
+  record[FillRecord::kTagOffset / 4] = 4 * ICache::line(line);
+  record[FillRecord::kRamOffset / 4] = line & (CodePages::kRamSize - 1);
+  record[FillRecord::kLine / 4] = line;
+  record[FillRecord::kTimeIn / 4] = seg.time_in[k];
+  Label& at = cold_label();
   Label& slow = k == 0 ? seg.slow[0] : seg.slow_native[k];
-  test(icache_tag(line), ICache::kStale);
-  jnz(slow, T_NEAR);
-  mov(rax, reinterpret_cast<u64>(lay.cache_control));
-  test(dword[rax], lay.icache_block_bits);
-  jz(slow, T_NEAR);
-  mov(rsi, reinterpret_cast<u64>(lay.ram + (line & (CodePages::kRamSize - 1))));
-  line_words(rest, slow, rsi);
-  lea(r8, ptr[now + int(seg.time_in[k]) + 1]);  // the time (Impl::owed) and the cycle
-  mov(rdx, cpu64(lay.load_done_at));
-  cmp(r8, rdx);
-  cmovb(r8, rdx);
-  icache_fill(rest[0].pc, [&](u32 words) {
-    lea(now, ptr[r8 + int(words * lay.fetch_word_cycles) - 1 - int(seg.time_in[k])]);
-    jmp(seg.filled[k], T_NEAR);
+  cold.push_back([this, record, &at, &slow] {
+    align(16);  // pcmpeqd's memory operand
+    L(at);
+    for (u32 v : record) dd(v);
+    putL(slow);
   });
+  L(seg.fill[k]);
+  lea(rdi, ptr[rip + at]);
+  call(fill_routines[ICache::word(rest[0].pc)]);
+  jmp(seg.filled[k], T_NEAR);
 }
 
 }  // namespace psx

@@ -243,14 +243,24 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   // block_emitter_icache.cpp
   void line_check(std::span<const Step> run, Xbyak::Label& fail, Xbyak::Label* fill = nullptr,
                   Xbyak::Label* filled = nullptr);
-  void line_words(std::span<const Step> run, Xbyak::Label& fail, const Xbyak::RegExp& at);
   Xbyak::Address icache_tag(u32 line);
-  Xbyak::RegExp icache_words(u32 line) const;
   bool fills_natively(u32 pc) const;
   Xbyak::Label* fill_entry(u32 pc, Segment& seg, size_t k) const;
   void fill_stub(std::span<const Step> rest, size_t k, Segment& seg);
-  template <class Done>
-  void icache_fill(u32 pc, Done done);
+  // What a fill stub hands fill_routine() (byte offsets of its u32s, kept with the cold code,
+  // 16-byte aligned): the words compiled on the line (zero where the run needs none), the
+  // pmovmskb lanes of those it needs, the line's tag bits (Bus::physical() & ICache::kTagMask),
+  // its tag's offset from r12, its RAM offset, its address, the cycles owed at the stub
+  // (Segment::time_in), then (a u64 at kSlow, after the kWordCount u32s) the address of the slow
+  // path a refusal goes on to.
+  struct FillRecord {
+    static constexpr int kWords = 0, kLanes = 16, kTagBits = 20, kTagOffset = 24, kRamOffset = 28,
+                         kLine = 32, kTimeIn = 36, kWordCount = 10, kSlow = 40;
+  };
+  void fill_routine(u32 first);
+  void fill_routines_once();
+  // The buffer's fill_routine()s by the word a fill starts at, once emitted (null after clear()).
+  std::array<const Xbyak::uint8*, 4> fill_routines{};
   // block_emitter.cpp
   // Instruction k of a segment, rest[0], with the segment's instructions after it.
   void native(std::span<const Step> rest, size_t k, bool after_branch, Segment& seg);

@@ -66,17 +66,23 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
 // a line whose tag holds the address is refilled whole, any other is replaced from word `first`
 // to the line's end, and fetch_hit()'s table then names the line where all four words are valid.
 // The time moves on by a word's fetch for each word read, one cycle short (the instruction
-// counts its own). Clobbers rax, rcx, rdx, rsi, r8 and xmm0, as the stub did.
+// counts its own). Clobbers rax, rcx, rdx, rsi, r8, xmm0 and xmm1 (no native code keeps
+// anything in them).
 void Impl::fill_routine(u32 first) {
   const int words_at = int(reinterpret_cast<const char*>(lay.icache_words) -
                            reinterpret_cast<const char*>(lay.icache_tags));
   const Xbyak::Address tag = dword[r12 + rax];  // rax = 4 * the line's index
   const auto words = [&](u32 w) { return r12 + rax * 4 + (words_at + int(4 * w)); };
+  // A cell of the bus at p (rbx-relative where it can be, through rcx otherwise), + index.
+  const auto cell = [&](const void* p, const Xbyak::Reg64& index) {
+    if (const auto d = from_context(p)) return rbx + index + *d;
+    mov(rcx, reinterpret_cast<u64>(p));
+    return rcx + index;
+  };
   const auto finish = [&](u32 read, bool line_is_hot) {
     if (line_is_hot) mov(edx, dword[rdi + FillRecord::kLine]);
     else mov(edx, lay.no_hot_line);
-    mov(rcx, reinterpret_cast<u64>(lay.hot_lines));
-    mov(dword[rcx + rax], edx);
+    mov(dword[cell(lay.hot_lines, rax)], edx);
     lea(now, ptr[r8 + int(read * lay.fetch_word_cycles) - 1]);
     mov(ecx, dword[rdi + FillRecord::kTimeIn]);
     sub(now, rcx);
@@ -86,14 +92,18 @@ void Impl::fill_routine(u32 first) {
   mov(eax, dword[rdi + FillRecord::kTagOffset]);
   test(tag, ICache::kStale);
   jnz(refuse, T_NEAR);
-  mov(rcx, reinterpret_cast<u64>(lay.cache_control));
-  test(dword[rcx], lay.icache_block_bits);
+  if (const auto d = from_context(lay.cache_control)) {
+    test(dword[rbx + *d], lay.icache_block_bits);
+  } else {
+    mov(rcx, reinterpret_cast<u64>(lay.cache_control));
+    test(dword[rcx], lay.icache_block_bits);
+  }
   jz(refuse, T_NEAR);
   mov(esi, dword[rdi + FillRecord::kRamOffset]);
-  mov(rcx, reinterpret_cast<u64>(lay.ram));
-  add(rsi, rcx);
-  movdqu(xmm0, ptr[rsi]);
-  pcmpeqd(xmm0, ptr[rdi + FillRecord::kWords]);
+  lea(rsi, ptr[cell(lay.ram, rsi)]);
+  movdqu(xmm1, ptr[rsi]);  // the line's RAM, compared and then copied from xmm1
+  movdqa(xmm0, ptr[rdi + FillRecord::kWords]);
+  pcmpeqd(xmm0, xmm1);
   pmovmskb(edx, xmm0);
   and_(edx, dword[rdi + FillRecord::kLanes]);
   cmp(edx, dword[rdi + FillRecord::kLanes]);
@@ -108,17 +118,20 @@ void Impl::fill_routine(u32 first) {
   test(ecx, ICache::kTagMask);
   jnz(other, T_NEAR);
   or_(tag, 0xF);
-  movdqu(xmm0, ptr[rsi]);
-  movdqu(ptr[words(0)], xmm0);
+  movdqu(ptr[words(0)], xmm1);
   finish(4, true);
   L(other);
   and_(tag, ICache::kStale);
   mov(ecx, dword[rdi + FillRecord::kTagBits]);
   or_(ecx, (0xFu << first) & 0xF);
   or_(tag, ecx);
-  for (u32 w = first; w < 4; ++w) {
-    mov(ecx, dword[rsi + int(4 * w)]);
-    mov(dword[words(w)], ecx);
+  if (first == 0) {
+    movdqu(ptr[words(0)], xmm1);
+  } else {
+    for (u32 w = first; w < 4; ++w) {
+      mov(ecx, dword[rsi + int(4 * w)]);
+      mov(dword[words(w)], ecx);
+    }
   }
   finish(4 - first, first == 0);
   L(refuse);

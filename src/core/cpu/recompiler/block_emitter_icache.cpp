@@ -56,7 +56,7 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
 
 // The fill of a line that fill_stub() found missing, as ICache::fill() and Bus::icache_miss()
 // make it under a four-word block size, shared by every fill stub of the buffer that enters its
-// line at word `first`: a stub is then about 20 bytes instead of about 220. A game that runs more
+// line at word `first`: a stub is then 17 bytes instead of about 220. A game that runs more
 // code in a frame than the i-cache's 4 KiB refills hundreds of lines each frame, and a stub each
 // made them a third of the host code a frame runs through.
 // Entered with rdi at the stub's FillRecord. A line that is stale or under a two-word block size,

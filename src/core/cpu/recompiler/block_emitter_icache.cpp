@@ -43,7 +43,6 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
 // The i-cache tag of `line` (an address's line), from r12.
 Xbyak::Address Impl::icache_tag(u32 line) { return dword[r12 + int(4 * ICache::line(line))]; }
 
-
 // Whether a miss on pc's line can be filled by native code: cached code in RAM (the guard has
 // ruled out KSEG1).
 bool Impl::fills_natively(u32 pc) const { return lay.hot_lines && (pc & 0x1FFFFFFF) < 0x00800000; }

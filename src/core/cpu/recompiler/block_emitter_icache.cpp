@@ -65,8 +65,8 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
 // a line whose tag holds the address is refilled whole, any other is replaced from word `first`
 // to the line's end, and fetch_hit()'s table then names the line where all four words are valid.
 // The time moves on by a word's fetch for each word read, one cycle short (the instruction
-// counts its own). Clobbers rax, rcx, rdx, rsi, r8, xmm0 and xmm1 (no native code keeps
-// anything in them).
+// counts its own). Clobbers rax, rcx, rdx, rsi, r8, r9, xmm0 and xmm1 (no native code keeps
+// anything in them across a line check).
 void Impl::fill_routine(u32 first) {
   const int words_at = int(reinterpret_cast<const char*>(lay.icache_words) -
                            reinterpret_cast<const char*>(lay.icache_tags));
@@ -83,8 +83,7 @@ void Impl::fill_routine(u32 first) {
     else mov(edx, lay.no_hot_line);
     mov(dword[cell(lay.hot_lines, rax)], edx);
     lea(now, ptr[r8 + int(read * lay.fetch_word_cycles) - 1]);
-    mov(ecx, dword[rdi + FillRecord::kTimeIn]);
-    sub(now, rcx);
+    sub(now, r9);
     ret();
   };
   Label refuse, other;
@@ -107,8 +106,8 @@ void Impl::fill_routine(u32 first) {
   and_(edx, dword[rdi + FillRecord::kLanes]);
   cmp(edx, dword[rdi + FillRecord::kLanes]);
   jne(refuse, T_NEAR);
-  mov(ecx, dword[rdi + FillRecord::kTimeIn]);
-  lea(r8, ptr[now + rcx + 1]);  // the time (Impl::owed) and the cycle
+  mov(r9d, dword[rdi + FillRecord::kTimeIn]);  // the cycles owed (Impl::owed)
+  lea(r8, ptr[now + r9 + 1]);                   // the time and the cycle
   mov(rdx, cpu64(lay.load_done_at));
   cmp(r8, rdx);
   cmovb(r8, rdx);
@@ -119,11 +118,10 @@ void Impl::fill_routine(u32 first) {
   or_(tag, 0xF);
   movdqu(ptr[words(0)], xmm1);
   finish(4, true);
-  L(other);
-  and_(tag, ICache::kStale);
+  L(other);  // the new tag keeps kStale, which is clear here
   mov(ecx, dword[rdi + FillRecord::kTagBits]);
   or_(ecx, (0xFu << first) & 0xF);
-  or_(tag, ecx);
+  mov(tag, ecx);
   if (first == 0) {
     movdqu(ptr[words(0)], xmm1);
   } else {

@@ -563,7 +563,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   // bytes and a line check of at most 90) and on the frame's (prologue and padded checks,
   // kCleanEntry bytes, then up to three chain()s of about 250 bytes each, two of them after a
   // split branch, and the loop-head routine).
-  // The fill routines, when this block emits them first, take about 870 bytes.
+  // The fill routines, when this block emits them first, take about 800 bytes.
   const size_t step_bytes = 1536, frame_bytes = 1536 + (impl_->fill_routines[0] ? 0 : 1024);
   Impl& g = *impl_;
   if (g.getSize() + frame_bytes + step_bytes * steps.size() > g.capacity) return nullptr;

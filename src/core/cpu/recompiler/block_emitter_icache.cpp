@@ -1,6 +1,8 @@
 // The i-cache side of compiled blocks (emitter_impl.h): the line checks that let native code
 // run only from i-cache hits still holding the compiled words, and the fills native code makes
 // itself on a miss in RAM, as Bus::fetch_slow() and ICache::fill() make them.
+#include <stdexcept>
+
 #include "core/bus.h"
 #include "core/cpu/icache.h"
 #include "core/cpu/recompiler/code_pages.h"
@@ -43,9 +45,12 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
 // The i-cache tag of `line` (an address's line), from r12.
 Xbyak::Address Impl::icache_tag(u32 line) { return dword[r12 + int(4 * ICache::line(line))]; }
 
-// Whether a miss on pc's line can be filled by native code: cached code in RAM (the guard has
-// ruled out KSEG1).
-bool Impl::fills_natively(u32 pc) const { return lay.hot_lines && (pc & 0x1FFFFFFF) < 0x00800000; }
+// Whether a miss on pc's line can be filled by native code: cached code in RAM, in KUSEG or
+// KSEG0 (the guard has ruled out KSEG1), where the line's tag bits are its address's bits 30-12
+// (Bus::physical()), which fill_routine() takes them as.
+bool Impl::fills_natively(u32 pc) const {
+  return lay.hot_lines && pc < 0xA0000000 && (pc & 0x1FFFFFFF) < 0x00800000;
+}
 
 // Where a line check at instruction k (at pc) sends a miss: its fill stub, or nowhere (null: the
 // slow path) when the line cannot be filled natively.
@@ -55,39 +60,43 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
 
 // The fill of a line that fill_stub() found missing, as ICache::fill() and Bus::icache_miss()
 // make it under a four-word block size, shared by every fill stub of the buffer that enters its
-// line at word `first`: a stub is then 17 bytes instead of about 220. A game that runs more
-// code in a frame than the i-cache's 4 KiB refills hundreds of lines each frame, and a stub each
-// made them a third of the host code a frame runs through.
-// Entered with rdi at the stub's FillRecord. A line that is stale or under a two-word block size,
-// or whose RAM no longer holds the words compiled, is refused: nothing changes, and the routine
-// goes on to the stub's slow path instead of returning. Otherwise the fill starts at the
-// instruction's cycle or at the end of a load's bus access still under way, whichever is later:
-// a line whose tag holds the address is refilled whole, any other is replaced from word `first`
-// to the line's end, and fetch_hit()'s table then names the line where all four words are valid.
-// The time moves on by a word's fetch for each word read, one cycle short (the instruction
-// counts its own). Clobbers rax, rcx, rdx, rsi, r8, r9, xmm0 and xmm1 (no native code keeps
-// anything in them across a line check).
+// line at word `first`. A game that runs more code in a frame than the i-cache's 4 KiB refills
+// hundreds of lines each frame, so the stubs are kept small and give what the fill needs as
+// immediates: the line's address in esi (fills_natively()) and the cycles owed at the stub
+// (Segment::time_in) in edx. A line that is stale or under a two-word block size is refused:
+// nothing changes, and the routine returns 5 bytes past the call, to the stub's jump to its slow
+// path. Otherwise the RAM of a line that is not stale still holds every word compiled from it
+// (ICache::kStale: CodePages marks the line at a write to any of them, and the blocks written
+// are dropped before another block runs), so the fill brings the words this run compiled. It
+// starts at the instruction's cycle or at the end of a load's bus access still under way,
+// whichever is later: a line whose tag holds the address is refilled whole, any other is
+// replaced from word `first` to the line's end, and fetch_hit()'s table then names the line
+// where all four words are valid. The time moves on by a word's fetch for each word read, one
+// cycle short (the instruction counts its own). Clobbers rax, rcx, rdx, rsi, rdi, r8, r9 and xmm1
+// (no native code keeps anything in them across a line check).
 void Impl::fill_routine(u32 first) {
   const int words_at = int(reinterpret_cast<const char*>(lay.icache_words) -
                            reinterpret_cast<const char*>(lay.icache_tags));
   const Xbyak::Address tag = dword[r12 + rax];  // rax = 4 * the line's index
   const auto words = [&](u32 w) { return r12 + rax * 4 + (words_at + int(4 * w)); };
-  // A cell of the bus at p (rbx-relative where it can be, through rcx otherwise), + index.
+  // A cell of the bus at p, + index: rbx-relative where it can be, through rcx otherwise.
   const auto cell = [&](const void* p, const Xbyak::Reg64& index) {
     if (const auto d = from_context(p)) return rbx + index + *d;
     mov(rcx, reinterpret_cast<u64>(p));
     return rcx + index;
   };
   const auto finish = [&](u32 read, bool line_is_hot) {
-    if (line_is_hot) mov(edx, dword[rdi + FillRecord::kLine]);
-    else mov(edx, lay.no_hot_line);
-    mov(dword[cell(lay.hot_lines, rax)], edx);
+    const Xbyak::Address hot = dword[cell(lay.hot_lines, rax)];
+    if (line_is_hot) mov(hot, esi);
+    else mov(hot, lay.no_hot_line);
     lea(now, ptr[r8 + int(read * lay.fetch_word_cycles) - 1]);
-    sub(now, r9);
+    sub(now, rdx);
     ret();
   };
   Label refuse, other;
-  mov(eax, dword[rdi + FillRecord::kTagOffset]);
+  mov(eax, esi);
+  shr(eax, 2);
+  and_(eax, (ICache::kLines - 1) << 2);  // 4 * ICache::line()
   test(tag, ICache::kStale);
   jnz(refuse, T_NEAR);
   if (const auto d = from_context(lay.cache_control)) {
@@ -97,43 +106,38 @@ void Impl::fill_routine(u32 first) {
     test(dword[rcx], lay.icache_block_bits);
   }
   jz(refuse, T_NEAR);
-  mov(esi, dword[rdi + FillRecord::kRamOffset]);
-  lea(rsi, ptr[cell(lay.ram, rsi)]);
-  movdqu(xmm1, ptr[rsi]);  // the line's RAM, compared and then copied from xmm1
-  movdqa(xmm0, ptr[rdi + FillRecord::kWords]);
-  pcmpeqd(xmm0, xmm1);
-  pmovmskb(edx, xmm0);
-  and_(edx, dword[rdi + FillRecord::kLanes]);
-  cmp(edx, dword[rdi + FillRecord::kLanes]);
-  jne(refuse, T_NEAR);
-  mov(r9d, dword[rdi + FillRecord::kTimeIn]);  // the cycles owed (Impl::owed)
-  lea(r8, ptr[now + r9 + 1]);                   // the time and the cycle
-  mov(rdx, cpu64(lay.load_done_at));
-  cmp(r8, rdx);
-  cmovb(r8, rdx);
-  mov(ecx, tag);
-  xor_(ecx, dword[rdi + FillRecord::kTagBits]);
-  test(ecx, ICache::kTagMask);
+  mov(edi, esi);
+  and_(edi, CodePages::kRamSize - 1);
+  lea(rdi, ptr[cell(lay.ram, rdi)]);
+  movdqu(xmm1, ptr[rdi]);       // the line's RAM
+  lea(r8, ptr[now + rdx + 1]);  // the time and the cycle
+  mov(rcx, cpu64(lay.load_done_at));
+  cmp(r8, rcx);
+  cmovb(r8, rcx);
+  mov(ecx, esi);
+  and_(ecx, ICache::kTagMask & 0x7FFFFFFF);  // the tag bits (fills_natively())
+  mov(r9d, tag);
+  xor_(r9d, ecx);
+  test(r9d, ICache::kTagMask);
   jnz(other, T_NEAR);
   or_(tag, 0xF);
   movdqu(ptr[words(0)], xmm1);
   finish(4, true);
   L(other);  // the new tag keeps kStale, which is clear here
-  mov(ecx, dword[rdi + FillRecord::kTagBits]);
   or_(ecx, (0xFu << first) & 0xF);
   mov(tag, ecx);
   if (first == 0) {
     movdqu(ptr[words(0)], xmm1);
   } else {
     for (u32 w = first; w < 4; ++w) {
-      mov(ecx, dword[rsi + int(4 * w)]);
+      mov(ecx, dword[rdi + int(4 * w)]);
       mov(dword[words(w)], ecx);
     }
   }
   finish(4 - first, first == 0);
   L(refuse);
-  add(rsp, 8);  // not back to the stub: on to its slow path
-  jmp(qword[rdi + FillRecord::kSlow]);
+  add(qword[rsp], kFillRefusal);  // past the stub's jump back, to its jump to the slow path
+  ret();
 }
 
 // The four fill_routine()s, emitted once for the code buffer where the first block that may need
@@ -150,37 +154,20 @@ void Impl::fill_routines_once() {
 
 // The fetch of rest[0] (instruction k) missing the i-cache, as CpuT::execute_at_pc() and
 // Bus::fetch_slow() make it: the instruction's cycle, then the wait for a load's bus access
-// still under way, then the fill and a word's time for each word read (fill_routine(), from this
-// stub's FillRecord, kept with the cold code). Only a fill of the words the run needs from this
-// line that brings exactly the words compiled (RAM still holds them) is made here, and not under
-// a two-word block size (a fill entered at word 0 would leave words 2 and 3 missing), nor on a
-// stale line, which may be a hit; otherwise instruction k takes its slow path, nothing changed.
-// The time is left one cycle short: instruction k counts its own cycle.
+// still under way, then the fill and a word's time for each word read (fill_routine(), given
+// the line and the cycles owed here). Not under a two-word block size (a fill entered at word 0
+// would leave words 2 and 3 missing), nor on a stale line, which may be a hit; there
+// instruction k takes its slow path, nothing changed. The time is left one cycle short:
+// instruction k counts its own cycle.
 void Impl::fill_stub(std::span<const Step> rest, size_t k, Segment& seg) {
-  const u32 line = rest[0].pc & ~15u;
-  std::array<u32, FillRecord::kWordCount> record{};
-  for (size_t n = 0; n < rest.size() && (rest[n].pc & ~15u) == line; ++n) {
-    const u32 w = ICache::word(rest[n].pc);
-    record[w] = rest[n].word;
-    record[FillRecord::kLanes / 4] |= 0xFu << (4 * w);  // pmovmskb's bits: four per word
-  }
-  record[FillRecord::kTagBits / 4] = Bus::physical(line) & ICache::kTagMask;
-  record[FillRecord::kTagOffset / 4] = 4 * ICache::line(line);
-  record[FillRecord::kRamOffset / 4] = line & (CodePages::kRamSize - 1);
-  record[FillRecord::kLine / 4] = line;
-  record[FillRecord::kTimeIn / 4] = seg.time_in[k];
-  Label& at = cold_label();
-  Label& slow = k == 0 ? seg.slow[0] : seg.slow_native[k];
-  cold.push_back([this, record, &at, &slow] {
-    align(16);  // pcmpeqd's memory operand
-    L(at);
-    for (u32 v : record) dd(v);
-    putL(slow);
-  });
   L(seg.fill[k]);
-  lea(rdi, ptr[rip + at]);
+  mov(esi, rest[0].pc & ~15u);
+  mov(edx, seg.time_in[k]);
   call(fill_routines[ICache::word(rest[0].pc)]);
+  const size_t back = getSize();
   jmp(seg.filled[k], T_NEAR);
+  if (getSize() - back != kFillRefusal) throw std::logic_error("fill stub: its jump back is not 5 bytes");
+  jmp(k == 0 ? seg.slow[0] : seg.slow_native[k], T_NEAR);
 }
 
 }  // namespace psx

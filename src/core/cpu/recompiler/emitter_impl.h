@@ -247,16 +247,9 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   bool fills_natively(u32 pc) const;
   Xbyak::Label* fill_entry(u32 pc, Segment& seg, size_t k) const;
   void fill_stub(std::span<const Step> rest, size_t k, Segment& seg);
-  // What a fill stub hands fill_routine() (byte offsets of its u32s, kept with the cold code,
-  // 16-byte aligned): the words compiled on the line (zero where the run needs none), the
-  // pmovmskb lanes of those it needs, the line's tag bits (Bus::physical() & ICache::kTagMask),
-  // its tag's offset from r12, its RAM offset, its address, the cycles owed at the stub
-  // (Segment::time_in), then (a u64 at kSlow, after the kWordCount u32s) the address of the slow
-  // path a refusal goes on to.
-  struct FillRecord {
-    static constexpr int kWords = 0, kLanes = 16, kTagBits = 20, kTagOffset = 24, kRamOffset = 28,
-                         kLine = 32, kTimeIn = 36, kWordCount = 10, kSlow = 40;
-  };
+  // The bytes of a fill stub's jump back past the line check (a near jmp), which a refused fill
+  // returns past, to the stub's jump to its slow path.
+  static constexpr int kFillRefusal = 5;
   void fill_routine(u32 first);
   void fill_routines_once();
   // The buffer's fill_routine()s by the word a fill starts at, once emitted (null after clear()).

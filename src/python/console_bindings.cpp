@@ -253,7 +253,8 @@ void bind_console(py::module_& m) {
             return array_of<psx::u8>({static_cast<py::ssize_t>(ram.size())}, ram.data(), self);
           },
           "The 2 MiB of main RAM as a writable uint8 view (no copy); writes are not reported to watches "
-          "or to the recompiler (write code with write_bytes).")
+          "or to the recompiler, whose compiled blocks go on running the code they were compiled from "
+          "(write code with write_bytes).")
       .def("dump_ram", [](PyConsole& c, const std::string& path) { c.console.dump_ram(path); }, py::arg("path"),
            py::call_guard<R>())
       // Memory watches (the seed's listeners).

@@ -5,8 +5,16 @@
 // be bit-identical must leave as they were, what idle skipping skipped and what the recompiler
 // compiled. Actions and resets are bench_util.h's, as in env_bench.
 //   valgrind --tool=callgrind --toggle-collect=measured_moves build/bench/env_profile 200 100
+// With --perf-map as the last argument it also names the compiled blocks for perf, which then
+// reports the time of each (psx_block_<pc>) instead of bare addresses:
+//   perf record -e cpu-clock build/bench/env_profile 200 600 simple --perf-map; perf report
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
 
 #include "bench_util.h"
 #include "core/hash.h"
@@ -21,7 +29,10 @@ struct Run {
   std::uint32_t lcg = 7;
   psx::Cycles cycles = 0;  // emulated in moves, resets left out
   std::uint64_t instructions = 0;  // the CPU's count in moves (skipped idle loops' included)
-  explicit Run(const EnvConfig& c) : env(c) { env.reset(1, seed, nullptr); }
+  Run(const EnvConfig& c, std::ostream* code_map) : env(c) {
+    env.console().set_code_map(code_map);  // before the first frame compiles anything
+    env.reset(1, seed, nullptr);
+  }
 };
 
 void play(Run& run, int moves) {
@@ -41,11 +52,16 @@ void play(Run& run, int moves) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const bool perf_map = argc > 1 && std::strcmp(argv[argc - 1], "--perf-map") == 0;
+  if (perf_map) --argc;
   const int warmup = argc > 1 ? std::atoi(argv[1]) : 200;
   const int moves = argc > 2 ? std::atoi(argv[2]) : 100;
   EnvConfig c;
   c.obs = argc > 3 ? argv[3] : "simple";
-  Run run(c);
+  // Where perf looks for the names of code it finds no symbols for.
+  std::ofstream map;
+  if (perf_map) map.open("/tmp/perf-" + std::to_string(getpid()) + ".map");
+  Run run(c, perf_map ? &map : nullptr);
   play(run, warmup);
   run.cycles = run.instructions = 0;
   const psx::IdleSkip::Stats idle0 = run.env.console().idle_skip_stats();

@@ -92,6 +92,9 @@ class Console : private CpuHooks {
   CpuMode cpu_mode() const { return cpu_.recompiler_enabled() ? CpuMode::Recompiler : CpuMode::Interpreter; }
   const Recompiler::Stats& recompiler_stats() const { return recompiler_.stats(); }
   size_t recompiler_code_bytes() const { return recompiler_.code_bytes(); }
+  // Names the recompiler's blocks as it compiles them, in perf's map format (RecompilerT::
+  // set_code_map(); null: nowhere). The stream must outlive the console or the next call.
+  void set_code_map(std::ostream* out) { recompiler_.set_code_map(out); }
 
   Cycles cycles() const { return sched_.now(); }
   u64 frames() const { return frames_; }

@@ -575,7 +575,9 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.loop_head_entry = nullptr;
   g.split_cond.reset();
   g.jump_dest.reset();
+  const bool had_routines = g.fill_routines[0] != nullptr;
   g.fill_routines_once();
+  const size_t routines_end = g.getSize();
   g.align(16);
   const auto entry = g.getCurr<BlockFn>();
   g.block_pc = steps[0].pc;
@@ -642,6 +644,12 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.chain(false);
   for (Segment& seg : segments) g.segment_stubs(steps.subspan(seg.first, seg.count), seg);
   g.emit_cold();
+  last_ = {};
+  if (!had_routines && g.fill_routines[0]) {
+    last_.routines = g.fill_routines[0];
+    last_.routine_bytes = routines_end - size_t(g.fill_routines[0] - g.getCode());
+  }
+  last_.block_bytes = g.getSize() - start;
   return entry;
 }
 

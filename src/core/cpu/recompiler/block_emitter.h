@@ -117,11 +117,21 @@ class BlockEmitter {
   BlockFn emit(const Layout& layout, std::span<const Step> steps);
   void clear();
   size_t bytes_used() const;
+  // What the last emit() that returned a block wrote: the block's code from its entry on (its
+  // native runs, stubs and cold code, in one piece), and before that the fill routines where it
+  // emitted them first (routines null otherwise).
+  struct Emitted {
+    const void* routines = nullptr;
+    size_t routine_bytes = 0;
+    size_t block_bytes = 0;
+  };
+  const Emitted& last_emitted() const { return last_; }
 
   struct Impl;  // the code generator (emitter_impl.h)
 
  private:
   std::unique_ptr<Impl> impl_;
+  Emitted last_;
 };
 
 }  // namespace psx

@@ -19,7 +19,10 @@
 // The interpreter stays the reference (tests/unit/recompiler_test.cpp runs both and compares
 // whole save states) and the fallback: where no code can be read, run() steps the interpreter.
 #pragma once
+#include <cstdint>
+#include <cstdio>
 #include <memory>
+#include <ostream>
 #include <type_traits>
 #include <vector>
 
@@ -61,6 +64,11 @@ class RecompilerT {
   size_t blocks() const { return cache_.size(); }
   // Bytes of the code buffer in use (what a console holds of it).
   size_t code_bytes() const { return emitter_ ? emitter_->bytes_used() : 0; }
+  // Where compile() names the host code it writes, for profilers of the compiled code: a line per
+  // block, "<start> <size> psx_block_<pc>" (hex, no prefix, the pc as 8 digits), and one
+  // "psx_fill_routines" line where a block's emission wrote the i-cache fill routines first: the
+  // map Linux perf reads from /tmp/perf-<pid>.map. Null (the default): nowhere.
+  void set_code_map(std::ostream* out) { code_map_ = out; }
   // Drops every compiled block and the record of their code, as when the code buffer fills up:
   // what a block was compiled from may have been written unseen (while the bus reported RAM
   // writes to no code pages, the interpreter running).
@@ -102,8 +110,11 @@ class RecompilerT {
   BlockCache cache_;
   std::unique_ptr<BlockEmitter> emitter_;  // made on first use: consoles that never recompile
                                            // allocate no code buffer
+  void map_code(BlockEmitter::BlockFn fn, u32 pc) const;
+
   Stats stats_;
   std::vector<BlockEmitter::Step> steps_;
+  std::ostream* code_map_ = nullptr;
 };
 
 template <class BusT>
@@ -167,11 +178,26 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
     drop_all();
     fn = emitter_->emit(lay, steps_);
   }
+  if (code_map_) map_code(fn, pc);
   const u32 first = CodePages::page_of(pc), last = CodePages::page_of(steps_.back().pc);
   if (first != CodePages::kNoPage && last != CodePages::kNoPage) pages_.mark_compiled(pc, steps_.back().pc);
   cache_.insert(pc, fn, first, last);
   ++stats_.compiled;
   return fn;
+}
+
+template <class BusT>
+void RecompilerT<BusT>::map_code(BlockEmitter::BlockFn fn, u32 pc) const {
+  const BlockEmitter::Emitted& e = emitter_->last_emitted();
+  char line[64];
+  if (e.routines) {
+    const int n = std::snprintf(line, sizeof line, "%llx %zx psx_fill_routines\n",
+                                static_cast<unsigned long long>(reinterpret_cast<uintptr_t>(e.routines)), e.routine_bytes);
+    code_map_->write(line, n);
+  }
+  const int n = std::snprintf(line, sizeof line, "%llx %zx psx_block_%08x\n",
+                              static_cast<unsigned long long>(reinterpret_cast<uintptr_t>(fn)), e.block_bytes, pc);
+  code_map_->write(line, n);
 }
 
 using Recompiler = RecompilerT<Bus>;

@@ -34,15 +34,20 @@ std::vector<Entry> parse(const std::string& map) {
   return out;
 }
 
+// Tumble booted under the recompiler, which writes its code map to `map` (null: nowhere).
+void boot_tumble(Console& c, std::ostream* map) {
+  c.set_cpu_mode(Console::CpuMode::Recompiler);
+  c.set_code_map(map);
+  c.boot_exe(TUMBLE_EXE);
+}
+
 // Tumble's title under the recompiler: one line per compiled block, the fill routines once before
 // the first block that needed them, every range inside the code the recompiler holds and none
 // overlapping another (the buffer only grows while nothing is dropped).
 TEST(RecompilerCodeMap, NamesEveryCompiledBlockOnce) {
   Console c;
-  c.set_cpu_mode(Console::CpuMode::Recompiler);
   std::ostringstream map;
-  c.set_code_map(&map);
-  c.boot_exe(TUMBLE_EXE);
+  boot_tumble(c, &map);
   c.run_frames(60);
   ASSERT_EQ(c.recompiler_stats().flushes, 0u);
   const std::vector<Entry> entries = parse(map.str());
@@ -75,11 +80,9 @@ TEST(RecompilerCodeMap, NamesEveryCompiledBlockOnce) {
 
 TEST(RecompilerCodeMap, NothingWrittenOnceUnset) {
   Console c;
-  c.set_cpu_mode(Console::CpuMode::Recompiler);
   std::ostringstream map;
   c.set_code_map(&map);
-  c.set_code_map(nullptr);
-  c.boot_exe(TUMBLE_EXE);
+  boot_tumble(c, nullptr);
   c.run_frames(10);
   EXPECT_GT(c.recompiler_stats().compiled, 0u);
   EXPECT_TRUE(map.str().empty());

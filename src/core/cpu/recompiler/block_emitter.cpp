@@ -367,10 +367,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   seg.time_in[k] = owed;
   // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
   // which fetches (and fills) it.
-  if (k > 0 && (s.pc & 15) == 0) {
-    line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
-    eax_reg = 0;
-  }
+  if (k > 0 && (s.pc & 15) == 0) line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
   if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   if (after_branch && !quiet_delay) {  // else sync_pc()
     mov(cpu32(lay.current_pc), s.pc);

@@ -32,9 +32,9 @@ void Impl::line_check(std::span<const Step> run, Label& fail, Label* fill, Label
     L(hit);
     cold.push_back([this, tag, tag_bits, need, &partial, &hit, &miss] {
       L(partial);
-      mov(eax, tag);
-      xor_(eax, tag_bits | need);
-      test(eax, ICache::kTagMask | ICache::kStale | need);
+      mov(ecx, tag);
+      xor_(ecx, tag_bits | need);
+      test(ecx, ICache::kTagMask | ICache::kStale | need);
       jnz(miss, T_NEAR);
       jmp(hit, T_NEAR);
     });
@@ -72,13 +72,14 @@ Label* Impl::fill_entry(u32 pc, Segment& seg, size_t k) const {
 // whichever is later: a line whose tag holds the address is refilled whole, any other is
 // replaced from word `first` to the line's end, and fetch_hit()'s table then names the line
 // where all four words are valid. The time moves on by a word's fetch for each word read, one
-// cycle short (the instruction counts its own). Clobbers rax, rcx, rdx, rsi, rdi, r8, r9 and xmm1
-// (no native code keeps anything in them across a line check).
+// cycle short (the instruction counts its own). Clobbers rcx, rdx, rsi, rdi, r8, r9, r11 and xmm1
+// (no native code keeps anything in them across a line check) but keeps eax, which may hold a
+// general register (Impl::eax_reg), as the line check itself does.
 void Impl::fill_routine(u32 first) {
   const int words_at = int(reinterpret_cast<const char*>(lay.icache_words) -
                            reinterpret_cast<const char*>(lay.icache_tags));
-  const Xbyak::Address tag = dword[r12 + rax];  // rax = 4 * the line's index
-  const auto words = [&](u32 w) { return r12 + rax * 4 + (words_at + int(4 * w)); };
+  const Xbyak::Address tag = dword[r12 + r11];  // r11 = 4 * the line's index
+  const auto words = [&](u32 w) { return r12 + r11 * 4 + (words_at + int(4 * w)); };
   // A cell of the bus at p, + index: rbx-relative where it can be, through rcx otherwise.
   const auto cell = [&](const void* p, const Xbyak::Reg64& index) {
     if (const auto d = from_context(p)) return rbx + index + *d;
@@ -86,7 +87,7 @@ void Impl::fill_routine(u32 first) {
     return rcx + index;
   };
   const auto finish = [&](u32 read, bool line_is_hot) {
-    const Xbyak::Address hot = dword[cell(lay.hot_lines, rax)];
+    const Xbyak::Address hot = dword[cell(lay.hot_lines, r11)];
     if (line_is_hot) mov(hot, esi);
     else mov(hot, lay.no_hot_line);
     lea(now, ptr[r8 + int(read * lay.fetch_word_cycles) - 1]);
@@ -94,9 +95,9 @@ void Impl::fill_routine(u32 first) {
     ret();
   };
   Label refuse, other;
-  mov(eax, esi);
-  shr(eax, 2);
-  and_(eax, (ICache::kLines - 1) << 2);  // 4 * ICache::line()
+  mov(r11d, esi);
+  shr(r11d, 2);
+  and_(r11d, (ICache::kLines - 1) << 2);  // 4 * ICache::line()
   test(tag, ICache::kStale);
   jnz(refuse, T_NEAR);
   if (const auto d = from_context(lay.cache_control)) {

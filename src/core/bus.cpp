@@ -40,7 +40,7 @@ void store_width(u8* p, u32 v, u32 width) {
 }  // namespace
 
 Bus::Bus(Scheduler& sched, InterruptController& irq)
-    : sched_(sched), irq_(irq), ram_(kRamSize + kScratchSize, 0), bios_(kBiosSize, 0) {
+    : sched_(sched), irq_(irq), ram_(kRamSize + kScratchSize, this), bios_(kBiosSize, 0) {
   // Power-on values of memory control 1 as the BIOS leaves them (psx-spx "Memory Control").
   memctrl_ = {0x1F000000, 0x1F802000, 0x0013243F, 0x00003022, 0x0013243F,
               0x200931E1, 0x00020843, 0x00070777, 0x00031125};

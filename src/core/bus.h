@@ -15,6 +15,7 @@
 #include "core/endian.h"
 #include "core/io_device.h"
 #include "core/memory_watch.h"
+#include "core/near_memory.h"
 #include "core/scheduler.h"
 #include "core/state.h"
 #include "core/types.h"
@@ -236,7 +237,7 @@ class Bus {
 
   Scheduler& sched_;
   InterruptController& irq_;
-  std::vector<u8> ram_;  // RAM, then the scratchpad (scratchpad())
+  NearMemory ram_;  // RAM, then the scratchpad (scratchpad()), near the CPU for native code
   std::vector<u8> bios_;
   bool has_bios_ = false;
 

@@ -24,19 +24,23 @@ bool within(const void* p, size_t bytes, uintptr_t anchor) {
 }  // namespace
 
 NearMemory::NearMemory(size_t bytes, const void* anchor) : size_(bytes) {
-  // A hint is only a wish: the kernel maps elsewhere when the range is taken. Below the anchor
+  // A hint is only a wish: the kernel maps elsewhere when the range is taken (by another
+  // console's RAM, in a vector environment), so hints go on in steps of kStep, below the anchor
   // first: above a heap anchor lies the space the heap grows into.
-  constexpr uintptr_t kStep = uintptr_t{1} << 26;  // 64 MiB
+  constexpr uintptr_t kStep = uintptr_t{1} << 22;  // 4 MiB
   const uintptr_t a = reinterpret_cast<uintptr_t>(anchor) & ~(kStep - 1);
-  for (const intptr_t k : {-1, -2, -3, -4, 2, 3, 4}) {
-    const uintptr_t hint = a + static_cast<uintptr_t>(k * static_cast<intptr_t>(kStep));
-    void* p = map(reinterpret_cast<void*>(hint), bytes);
-    if (!p) break;
-    if (within(p, bytes, reinterpret_cast<uintptr_t>(anchor))) {
-      data_ = static_cast<u8*>(p);
-      return;
+  const intptr_t steps = static_cast<intptr_t>((kReach - bytes) / kStep) - 1;
+  for (const intptr_t dir : {-1, 1}) {
+    for (intptr_t k = dir < 0 ? 1 : 2; k <= steps; ++k) {
+      const uintptr_t hint = a + static_cast<uintptr_t>(dir * k * static_cast<intptr_t>(kStep));
+      void* p = map(reinterpret_cast<void*>(hint), bytes);
+      if (!p) throw std::bad_alloc();
+      if (within(p, bytes, reinterpret_cast<uintptr_t>(anchor))) {
+        data_ = static_cast<u8*>(p);
+        return;
+      }
+      munmap(p, bytes);
     }
-    munmap(p, bytes);
   }
   data_ = static_cast<u8*>(map(nullptr, bytes));
   if (!data_) throw std::bad_alloc();

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "core/console.h"
 #include "core/near_memory.h"
@@ -33,6 +34,19 @@ TEST(NearMemory, ZeroedWritableAndNearAHeapAnchor) {
   // Below the heap (or anywhere within kReach) the kernel has free pages in any usual process.
   EXPECT_LT(std::abs(distance(m.data(), anchor.get())), std::intptr_t{NearMemory::kReach});
   EXPECT_LT(std::abs(distance(m.data() + kBytes, anchor.get())), std::intptr_t{NearMemory::kReach});
+}
+
+TEST(NearMemory, ManyBuffersNearOneAnchor) {
+  // A vector environment's consoles sit close together on the heap: each one's RAM must still
+  // find pages near it, past the pages the others took.
+  if (test_scale::kSanitized) GTEST_SKIP() << "AddressSanitizer reserves the space near its heap";
+  constexpr size_t kBytes = 2 * 1024 * 1024 + 1024;
+  const auto anchor = std::make_unique<std::array<u8, 4096>>();
+  std::vector<std::unique_ptr<NearMemory>> buffers;
+  for (int i = 0; i < 32; ++i) {
+    buffers.push_back(std::make_unique<NearMemory>(kBytes, anchor.get()));
+    EXPECT_LT(std::abs(distance(buffers.back()->data(), anchor.get())), std::intptr_t{NearMemory::kReach}) << i;
+  }
 }
 
 TEST(NearMemory, ConsoleRamIsWithinADisplacementOfTheConsole) {

@@ -93,7 +93,8 @@ class Console : private CpuHooks {
   const Recompiler::Stats& recompiler_stats() const { return recompiler_.stats(); }
   size_t recompiler_code_bytes() const { return recompiler_.code_bytes(); }
   // Names the recompiler's blocks as it compiles them, in perf's map format (RecompilerT::
-  // set_code_map(); null: nowhere). The stream must outlive the console or the next call.
+  // set_code_map(); null: nowhere; attached after code was compiled, it has that code compiled
+  // again). The stream must outlive the console or the next call.
   void set_code_map(std::ostream* out) { recompiler_.set_code_map(out); }
 
   Cycles cycles() const { return sched_.now(); }

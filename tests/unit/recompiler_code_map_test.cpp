@@ -2,6 +2,7 @@
 // it compiles, which profilers read to attribute time to guest blocks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -76,6 +77,28 @@ TEST(RecompilerCodeMap, NamesEveryCompiledBlockOnce) {
   EXPECT_LE(bytes, c.recompiler_code_bytes());
   // The title runs Tumble's own code, loaded at 0x80010000 (games/tumble/tumble.ld).
   EXPECT_NE(map.str().find("psx_block_8001"), std::string::npos);
+}
+
+// A map attached to a console that has run (an environment boots its game first) has what runs
+// from then on compiled again and named, the fill routines too; the emulation goes on as if no
+// map were attached.
+TEST(RecompilerCodeMap, AttachedLateNamesWhatRunsFromThenOn) {
+  Console plain, mapped;
+  boot_tumble(plain, nullptr);
+  boot_tumble(mapped, nullptr);
+  plain.run_frames(40);
+  mapped.run_frames(40);
+  const auto compiled_before = mapped.recompiler_stats().compiled;
+  std::ostringstream map;
+  mapped.set_code_map(&map);
+  plain.run_frames(20);
+  mapped.run_frames(20);
+  const std::vector<Entry> entries = parse(map.str());
+  ASSERT_FALSE(entries.empty());
+  EXPECT_EQ(entries.front().name, "psx_fill_routines");
+  EXPECT_EQ(entries.size() - 1, mapped.recompiler_stats().compiled - compiled_before);
+  EXPECT_TRUE(std::equal(plain.ram().begin(), plain.ram().end(), mapped.ram().begin()));
+  EXPECT_EQ(plain.cycles(), mapped.cycles());
 }
 
 TEST(RecompilerCodeMap, NothingWrittenOnceUnset) {

@@ -67,8 +67,14 @@ class RecompilerT {
   // Where compile() names the host code it writes, for profilers of the compiled code: a line per
   // block, "<start> <size> psx_block_<pc>" (hex, no prefix, the pc as 8 digits), and one
   // "psx_fill_routines" line where a block's emission wrote the i-cache fill routines first: the
-  // map Linux perf reads from /tmp/perf-<pid>.map. Null (the default): nowhere.
-  void set_code_map(std::ostream* out) { code_map_ = out; }
+  // map Linux perf reads from /tmp/perf-<pid>.map. Null (the default): nowhere. A map attached
+  // where code was compiled before drops that code (drop_all()): what runs from then on is
+  // compiled again, the fill routines first, and named (an environment boots its game before a
+  // profiler can attach the map).
+  void set_code_map(std::ostream* out) {
+    if (out && out != code_map_ && code_bytes() > 0) drop_all();
+    code_map_ = out;
+  }
   // Drops every compiled block and the record of their code, as when the code buffer fills up:
   // what a block was compiled from may have been written unseen (while the bus reported RAM
   // writes to no code pages, the interpreter running).

@@ -13,7 +13,7 @@ namespace psx {
 namespace {
 constexpr u32 kExp1Base = 0x1F000000, kExp1End = 0x1F800000;
 constexpr u32 kScratchBase = 0x1F800000;
-constexpr u32 kExp2Base = 0x1F802000, kIoEnd = 0x1F803000;
+constexpr u32 kExp2Base = 0x1F802000;
 constexpr u32 kExp3Base = 0x1FA00000, kExp3End = 0x1FC00000;
 constexpr u32 kBiosBase = 0x1FC00000;
 constexpr u32 kCacheControl = 0xFFFE0130;
@@ -144,11 +144,7 @@ bool Bus::read(u32 vaddr, u32& v, u32 width, bool time_ram) {
     return true;
   }
   if (p >= kIoBase && p < kIoEnd) {
-    sched_.advance(io_read_cycles(p, width));
-    v = io_read(p, width);
-    // An I/O word load fills its slot too; what a narrower one leaves in the rest of the word is
-    // not documented, so only word loads are modelled.
-    if (dcache_mode_ && width == 4) dcache_fill(vaddr, v);
+    read_io(vaddr, v, width);
     return true;
   }
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) {
@@ -216,6 +212,15 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
   }
   report_unmapped(vaddr, "write");
   return false;
+}
+
+void Bus::read_io(u32 vaddr, u32& v, u32 width) {
+  const u32 p = physical(vaddr);
+  sched_.advance(io_read_cycles(p, width));
+  v = io_read(p, width);
+  // An I/O word load fills its slot too; what a narrower one leaves in the rest of the word is
+  // not documented, so only word loads are modelled.
+  if (dcache_mode_ && width == 4) dcache_fill(vaddr, v);
 }
 
 bool Bus::write_io(u32 vaddr, u32 v, u32 width) {

@@ -127,6 +127,14 @@ class Bus {
   // I/O region (physical 1F801000h-1F802FFFh); false, with nothing written, anywhere else. For
   // the recompiler's store calls, whose native code makes the RAM and scratchpad stores itself.
   bool write_io(u32 vaddr, u32 v, u32 width);
+  // Whether vaddr lies in the I/O region, where read_io() and write_io() reach.
+  static bool io_address(u32 vaddr) {
+    const u32 p = physical(vaddr);
+    return p >= kIoBase && p < kIoEnd;
+  }
+  // A CPU load of `width` bytes from the I/O region as read() makes it (the port's access time,
+  // then its value); for the recompiler's load calls. The caller checks io_address() first.
+  void read_io(u32 vaddr, u32& v, u32 width);
 
   // Maps a block's registers into the I/O region (physical 0x1F801000-0x1F802FFF, 16-byte units).
   void map_io(u32 phys_base, u32 size, IoDevice* dev);
@@ -262,6 +270,7 @@ class Bus {
 
   static constexpr u32 kIoBase = 0x1F801000;
   static constexpr u32 kIoSlots = 0x2000 / 16;
+  static constexpr u32 kIoEnd = kIoBase + kIoSlots * 16;
   std::array<IoDevice*, kIoSlots> io_{};
   std::array<u32, kIoSlots> io_base_{};
   std::set<u32> unmapped_;  // addresses already reported

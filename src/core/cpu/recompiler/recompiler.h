@@ -110,6 +110,8 @@ class RecompilerT {
   static void exec(Cpu& c, u32 instr);
   template <NativeOp K>
   static void store_call(Cpu& c, u32 instr);
+  template <NativeOp K>
+  static void load_call(Cpu& c, u32 instr);
 
   BusT& bus_;
   CodePages pages_;

@@ -75,8 +75,8 @@ NativeOp RecompilerT<BusT>::decode_op(u32 i) {
   }
 }
 
-// The semantics of CpuT::execute() for the ALU instructions and the stores with a call step of
-// their own (step_for()); the others through CpuT::execute() itself (cpu_execute.h).
+// The semantics of CpuT::execute() for the ALU instructions and the loads and stores with a call
+// step of their own (step_for()); the others through CpuT::execute() itself (cpu_execute.h).
 template <class BusT>
 template <NativeOp K>
 void RecompilerT<BusT>::exec(Cpu& c, u32 i) {
@@ -101,6 +101,9 @@ void RecompilerT<BusT>::exec(Cpu& c, u32 i) {
   else if constexpr (K == NativeOp::Slt) c.write_reg(rd(i), s32(s) < s32(t));
   else if constexpr (K == NativeOp::Sltu) c.write_reg(rd(i), s < t);
   else if constexpr (K == NativeOp::Sw || K == NativeOp::Sh || K == NativeOp::Sb) store_call<K>(c, i);
+  else if constexpr (K == NativeOp::Lw || K == NativeOp::Lh || K == NativeOp::Lhu || K == NativeOp::Lb ||
+                     K == NativeOp::Lbu)
+    load_call<K>(c, i);
   else c.execute(i);
 }
 
@@ -119,6 +122,28 @@ void RecompilerT<BusT>::store_call(Cpu& c, u32 i) {
   const bool plain = (addr & (width - 1)) == 0 && !(c.cop0_.sr & (Cop0::kKUc | Cop0::kIsC)) &&
                      !(c.cop0_.dcic & Cop0::kDcicDAE);
   if (!plain || !c.bus_.write_io(addr, c.regs_[rt(i)] & mask, width)) c.execute(i);
+}
+
+// A load's call, the counterpart of store_call(): mostly a poll of an I/O port (JOY_STAT, I_STAT,
+// GPUSTAT). Where CpuT::load()'s checks cannot apply (aligned, kernel mode, no DCIC data break),
+// a load from the I/O region does what CpuT::load() then does: timed_read() waits for a load in
+// flight (an access outside RAM does not overlap one) and reads the port, and the value, sign-
+// extended for LB/LH, enters the load delay slot. The rest run as CpuT::execute().
+template <class BusT>
+template <NativeOp K>
+void RecompilerT<BusT>::load_call(Cpu& c, u32 i) {
+  using namespace cpu_detail;
+  constexpr u32 width = K == NativeOp::Lw ? 4 : (K == NativeOp::Lh || K == NativeOp::Lhu) ? 2 : 1;
+  const u32 addr = c.regs_[rs(i)] + simm(i);
+  const bool plain =
+      (addr & (width - 1)) == 0 && !(c.cop0_.sr & Cop0::kKUc) && !(c.cop0_.dcic & Cop0::kDcicDAE);
+  if (!plain || !BusT::io_address(addr)) return c.execute(i);
+  c.wait_load();
+  u32 v;
+  c.bus_.read_io(addr, v, width);
+  if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
+  if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
+  c.delayed_load(rt(i), v);
 }
 
 // The checks at the top of CpuT::run()'s loop and CpuT::step(): whether the step can run the
@@ -293,6 +318,7 @@ BlockEmitter::StepFn RecompilerT<BusT>::step_for(u32 word) {
       PSXRL_REC_OP(Xori) PSXRL_REC_OP(Lui) PSXRL_REC_OP(Sll) PSXRL_REC_OP(Srl) PSXRL_REC_OP(Sra)
       PSXRL_REC_OP(Addu) PSXRL_REC_OP(Subu) PSXRL_REC_OP(And) PSXRL_REC_OP(Or) PSXRL_REC_OP(Xor)
       PSXRL_REC_OP(Nor) PSXRL_REC_OP(Slt) PSXRL_REC_OP(Sltu) PSXRL_REC_OP(Sb) PSXRL_REC_OP(Sh) PSXRL_REC_OP(Sw)
+      PSXRL_REC_OP(Lb) PSXRL_REC_OP(Lbu) PSXRL_REC_OP(Lh) PSXRL_REC_OP(Lhu) PSXRL_REC_OP(Lw)
 #undef PSXRL_REC_OP
       default: return &step_fast<NativeOp::None>;  // CpuT::execute() without fetch and decode
     }

@@ -6,14 +6,49 @@
 
 namespace psx::spu {
 
-s16 envelope_tick(u32& counter, s16 level, const EnvelopeParams& p) {
-  const bool high = p.exponential && !p.decreasing && level > 0x6000;
-  counter += high ? p.increment_high : p.increment;
-  if (!(counter & 0x8000)) return level;
-  counter = 0;
+namespace {
+
+bool slow_high(s16 level, const EnvelopeParams& p) { return p.exponential && !p.decreasing && level > 0x6000; }
+
+// The level a step of the rate engine makes from `level` (its counter having overflowed).
+s16 stepped(s16 level, const EnvelopeParams& p, bool high) {
   s32 step = high ? p.step_high : p.step;
   if (p.exponential && p.decreasing) step = (step * level) >> 15;  // the step shrinks with the level
   return static_cast<s16>(std::clamp(level + step, p.min_level, p.max_level));
+}
+
+}  // namespace
+
+s16 envelope_tick(u32& counter, s16 level, const EnvelopeParams& p) {
+  const bool high = slow_high(level, p);
+  counter += high ? p.increment_high : p.increment;
+  if (!(counter & 0x8000)) return level;
+  counter = 0;
+  return stepped(level, p, high);
+}
+
+u32 envelope_wait(u32& counter, s16 level, const EnvelopeParams& p, u32 n) {
+  const bool high = slow_high(level, p);
+  const u32 increment = high ? p.increment_high : p.increment;
+  if (increment == 0) {  // the all-ones rate: its counter stays below 8000h, it never steps
+    return counter < 0x8000 ? n : 0;
+  }
+  if (counter >= 0x8000) return 0;  // only a loaded state holds such a counter: tick by tick
+  // From below 8000h the tick that sets bit 15 is the k-th: counter + k * increment >= 8000h.
+  const u32 k = (0x8000 - counter + increment - 1) / increment;
+  if (n < k) {
+    counter += n * increment;
+    return n;
+  }
+  if (stepped(level, p, high) != level) {
+    counter += (k - 1) * increment;
+    return k - 1;
+  }
+  // A level held at its bound (or at 0 by an exponential decrease) stays there: only the counter
+  // moves, back to 0 at each overflow, which then comes every `period` ticks.
+  const u32 period = (0x8000 + increment - 1) / increment;
+  counter = ((n - k) % period) * increment;
+  return n;
 }
 
 EnvelopeParams Adsr::params() const {
@@ -55,19 +90,36 @@ void Adsr::force_off() {
 
 void Adsr::step() {
   level_ = envelope_tick(counter_, level_, params_);
+  if (!phase_ends()) return;
   switch (phase_) {
-    case Phase::Attack:
-      if (level_ >= 0x7FFF) start(Phase::Decay);
-      break;
-    case Phase::Decay:
-      if (level_ <= sustain_target()) start(Phase::Sustain);
-      break;
-    case Phase::Release:
-      if (level_ <= 0) force_off();
-      break;
+    case Phase::Attack: return start(Phase::Decay);
+    case Phase::Decay: return start(Phase::Sustain);
+    case Phase::Release: return force_off();
+    case Phase::Sustain:
+    case Phase::Off: return;
+  }
+}
+
+bool Adsr::phase_ends() const {
+  switch (phase_) {
+    case Phase::Attack: return level_ >= 0x7FFF;
+    case Phase::Decay: return level_ <= sustain_target();
+    case Phase::Release: return level_ <= 0;
     case Phase::Sustain:  // lasts until key off
-    case Phase::Off:
-      break;
+    case Phase::Off: break;
+  }
+  return false;
+}
+
+void Adsr::ticks(u32 n) {
+  while (n > 0 && phase_ != Phase::Off) {
+    // A level already past the phase's end (key off at 0, a written ENVX) ends it at the next tick.
+    if (!phase_ends()) {
+      n -= envelope_wait(counter_, level_, params_, n);
+      if (n == 0) return;
+    }
+    step();  // the tick that steps the level or ends the phase
+    --n;
   }
 }
 
@@ -93,6 +145,20 @@ void VolumeSweep::write(u16 value) {
   reg_ = value;
   counter_ = 0;
   params_ = sweep_params(value);
+}
+
+void VolumeSweep::ticks(u32 n) {
+  if (n == 0) return;
+  if (!(reg_ & 0x8000)) {
+    tick();
+    return;
+  }
+  while (n > 0) {
+    n -= envelope_wait(counter_, level_, params_, n);
+    if (n == 0) return;
+    level_ = envelope_tick(counter_, level_, params_);
+    --n;
+  }
 }
 
 void VolumeSweep::do_state(StateIO& s) {

@@ -62,6 +62,11 @@ constexpr EnvelopeParams::EnvelopeParams(u8 rate_, u8 rate_mask_, bool decreasin
 // Advances an envelope by one 44.1 kHz tick. `counter` is the phase's step counter (zeroed when
 // a phase starts); returns the new level.
 s16 envelope_tick(u32& counter, s16 level, const EnvelopeParams& p);
+// Advances `counter` over as many of the next `n` ticks as leave the level alone (the ticks
+// before the one that steps it, during which the rate is constant, or all n where a step would
+// keep the level, held at its bound): what that many calls to envelope_tick() do. Returns how
+// many it took; fewer than n means the next tick changes the level.
+u32 envelope_wait(u32& counter, s16 level, const EnvelopeParams& p, u32 n);
 
 // The ADSR envelope of one voice (ADSR1 = low half, ADSR2 = high half of the 32-bit value).
 class Adsr {
@@ -83,6 +88,8 @@ class Adsr {
   void tick() {
     if (phase_ != Phase::Off) step();
   }
+  // n ticks, waiting steps counted at once (envelope_wait).
+  void ticks(u32 n);
 
   s16 level() const { return level_; }
   // ENVX is writable; the next step continues from the written level.
@@ -97,6 +104,8 @@ class Adsr {
  private:
   void start(Phase p);
   void step();
+  // Whether the level ends the phase (Attack at 7FFFh, Decay at the sustain level, Release at 0).
+  bool phase_ends() const;
 
   u32 reg_ = 0;
   Phase phase_ = Phase::Off;
@@ -118,6 +127,8 @@ class VolumeSweep {
     else
       level_ = static_cast<s16>(reg_ << 1);  // bits 0-14 are volume/2, a signed 15-bit number
   }
+  // n ticks, waiting steps counted at once (envelope_wait).
+  void ticks(u32 n);
   s16 level() const { return level_; }
   void set_level(s16 v) { level_ = v; }
   // A fixed volume already latched: tick() changes nothing.

@@ -220,10 +220,8 @@ void Spu::quiet_samples(u32 n, bool reverb_made) {
     }
   }
   if (output_taken()) push_output({}, n);
-  if (!main_left_.latched())
-    for (u32 k = 0; k < n; ++k) main_left_.tick();
-  if (!main_right_.latched())
-    for (u32 k = 0; k < n; ++k) main_right_.tick();
+  if (!main_left_.latched()) main_left_.ticks(n);
+  if (!main_right_.latched()) main_right_.ticks(n);
 }
 
 void Spu::do_state(StateIO& s) {

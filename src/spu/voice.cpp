@@ -63,11 +63,9 @@ bool Voice::step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWi
   const bool ticking = !silent();
   const auto tick = [&](u32 n) {
     if (!ticking) return;
-    for (u32 k = 0; k < n; ++k) adsr.tick();
-    if (!volume_left.latched())
-      for (u32 k = 0; k < n; ++k) volume_left.tick();
-    if (!volume_right.latched())
-      for (u32 k = 0; k < n; ++k) volume_right.tick();
+    adsr.ticks(n);
+    if (!volume_left.latched()) volume_left.ticks(n);
+    if (!volume_right.latched()) volume_right.ticks(n);
   };
   u32 done = 0;  // samples stepped so far
   while (true) {

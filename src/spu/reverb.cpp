@@ -140,6 +140,13 @@ inline void Reverb::step_address() {
   current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
 }
 
+void Reverb::step_address(u32 k) {
+  if (k == 0) return;
+  step_address();  // from here on the address lies in mBASE*4..3FFFFh, where each step adds 1
+  const u32 first = base_ * 4u, length = 0x40000 - first;  // and 3FFFFh wraps to mBASE*4
+  current_ = first + (current_ - first + k - 1) % length;
+}
+
 inline void Reverb::end_tick() {
   if (phase_ == 1) step_address();
   phase_ ^= 1;
@@ -165,7 +172,7 @@ void Reverb::skip_quiet(u32 m) {
   const u32 right_ends = phase_ == 0 ? second : first;
   out_pos_[phase_] = (out_pos_[phase_] + first) & (kRing - 1);
   out_pos_[phase_ ^ 1] = (out_pos_[phase_ ^ 1] + second) & (kRing - 1);
-  for (u32 k = 0; k < right_ends; ++k) step_address();
+  step_address(right_ends);
   phase_ ^= m & 1;
   clear_ticks_ = clear_ticks_ > m ? clear_ticks_ - m : 0;
 }

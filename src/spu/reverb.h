@@ -80,6 +80,7 @@ class Reverb {
   void push_input(s32 in_left, s32 in_right);
   // The buffer address's move after each right-side tick, wrapping to ESA.
   void step_address();
+  void step_address(u32 k);  // k of them at once
   void end_tick();
   // m zero inputs, as push_input(0, 0) m times.
   void push_zero_inputs(u32 m);

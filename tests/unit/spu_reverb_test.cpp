@@ -184,13 +184,15 @@ TEST(SpuReverb, QuietTicksAreUnseenTicksOfSilence) {
   // values the owed ones must replace, then 0 to 70 ticks of input 0 (from 39 on, the FIR input
   // of an owed tick is 0). The work area (kTestReverbRegs: reads 80h..380h halfwords past the
   // buffer address) lies above the capture buffers (halfwords 0..7FFh) at ESA 1000h and FE00h;
-  // at ESA 100h the reads start inside them, so quiet_ticks declines and changes nothing.
+  // at ESA 100h the reads start inside them, so quiet_ticks declines and changes nothing. At ESA
+  // FE00h the buffer address wraps from 3FFFFh to 3F800h every 800h address steps (1000h ticks):
+  // 5000 ticks wrap it at least once.
   std::vector<u8> ram(512 * 1024);
   test::Lcg noise{77};
   for (u8& b : ram) b = static_cast<u8>(noise.next(256));
   auto input = [&] { return static_cast<s32>(noise.next(0x10000)) - 0x8000; };
   for (u16 esa : {0x1000, 0xFE00, 0x0100}) {
-    for (u32 n : {1u, 2u, 39u, 127u, 128u, 129u, 130u, 200u, 255u, 256u, 700u}) {
+    for (u32 n : {1u, 2u, 39u, 127u, 128u, 129u, 130u, 200u, 255u, 256u, 700u, 5000u}) {
       for (u32 zeros : {0u, 5u, 38u, 70u}) {
         Reverb a;
         a.regs = test::kTestReverbRegs;

@@ -17,6 +17,22 @@ Rect clip(const Rect& r, const Rect& to) {
   return {std::max(r.x0, to.x0), std::max(r.y0, to.y0), std::min(r.x1, to.x1), std::min(r.y1, to.y1)};
 }
 
+// The bounding box of a and b (an empty one adds nothing).
+Rect bounding(const Rect& a, const Rect& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+// What a triangle may write: its bounding box in the drawing area, or nothing when it spans too
+// many columns or rows to be drawn.
+Rect triangle_write(const Vertex& a, const Vertex& b, const Vertex& c, const DrawState& ds) {
+  const s32 min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
+  const s32 min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
+  if (max_x - min_x >= 1024 || max_y - min_y >= 512) return {};
+  return clip({min_x, min_y, max_x + 1, max_y + 1}, area_rect(ds));
+}
+
 bool same_area(const DrawState& a, const DrawState& b) {
   return a.area_left == b.area_left && a.area_top == b.area_top && a.area_right == b.area_right &&
          a.area_bottom == b.area_bottom;
@@ -30,6 +46,14 @@ u32 texture_reads(const DrawState& ds, u32 clut_x, u32 clut_y, Rect out[3]) {
   if (ds.tex_depth >= 2) return 1;
   out[1] = wrapped_block(clut_x, clut_y, ds.tex_depth == 0 ? 16 : 256, 1);
   return 2;
+}
+
+// A textured or a semi-transparent triangle, or one under the mask check, reads VRAM.
+u32 triangle_reads(const Triangle& t, const DrawState& ds, const Rect& write, Rect out[3]) {
+  u32 n = 0;
+  if (t.textured) n = texture_reads(ds, t.clut_x, t.clut_y, out);
+  if (t.semi || ds.check_mask) out[n++] = write;
+  return n;
 }
 
 // Opaque, untextured, no mask check, every row drawn: each covered pixel is replaced outright.
@@ -62,12 +86,14 @@ Rect wrapped_block(u32 x, u32 y, u32 width, u32 height) {
 
 Rect DrawCommand::write_rect() const {
   switch (kind) {
-    case Kind::Triangle: {
-      const Vertex* v = triangle.v;
-      s32 min_x = std::min({v[0].x, v[1].x, v[2].x}), max_x = std::max({v[0].x, v[1].x, v[2].x});
-      s32 min_y = std::min({v[0].y, v[1].y, v[2].y}), max_y = std::max({v[0].y, v[1].y, v[2].y});
-      if (max_x - min_x >= 1024 || max_y - min_y >= 512) return {};
-      return clip({min_x, min_y, max_x + 1, max_y + 1}, area_rect(ds));
+    case Kind::Triangle: return triangle_write(triangle.v[0], triangle.v[1], triangle.v[2], ds);
+    case Kind::Quad: {
+      const Vertex *v = quad.first.v, &last = quad.last;
+      const s32 min_x = std::min({v[0].x, v[1].x, v[2].x, last.x}), max_x = std::max({v[0].x, v[1].x, v[2].x, last.x});
+      const s32 min_y = std::min({v[0].y, v[1].y, v[2].y, last.y}), max_y = std::max({v[0].y, v[1].y, v[2].y, last.y});
+      if (max_x - min_x < 1024 && max_y - min_y < 512) return clip({min_x, min_y, max_x + 1, max_y + 1}, area_rect(ds));
+      // Too large as a whole: each half is dropped or drawn on its own.
+      return bounding(triangle_write(v[0], v[1], v[2], ds), triangle_write(v[1], v[2], last, ds));
     }
     case Kind::Line: {
       const Vertex &a = line.v[0], &b = line.v[1];
@@ -89,10 +115,8 @@ Rect DrawCommand::write_rect() const {
 u32 DrawCommand::read_rects(Rect out[3]) const {
   u32 n = 0;
   switch (kind) {
-    case Kind::Triangle:
-      if (triangle.textured) n = texture_reads(ds, triangle.clut_x, triangle.clut_y, out);
-      if (triangle.semi || ds.check_mask) out[n++] = write;
-      return n;
+    case Kind::Triangle: return triangle_reads(triangle, ds, write, out);
+    case Kind::Quad: return triangle_reads(quad.first, ds, write, out);
     case Kind::Line:
       if (line.semi || ds.check_mask) out[n++] = write;
       return n;
@@ -124,14 +148,11 @@ Rect DrawCommand::overwrite_rect() const {
   return {};
 }
 
-bool may_pair_cover(const DrawCommand& first, const DrawCommand& second) {
-  using Kind = DrawCommand::Kind;
-  if (first.kind != Kind::Triangle || second.kind != Kind::Triangle) return false;
-  if (!replaces_covered(first.triangle, first.ds) || !replaces_covered(second.triangle, second.ds)) return false;
+bool may_pair_cover(DrawnTriangle first, DrawnTriangle second) {
+  if (!replaces_covered(first.t, first.ds) || !replaces_covered(second.t, second.ds)) return false;
   if (!same_area(first.ds, second.ds)) return false;
   const DrawState& ds = first.ds;
-  const Vertex* v[6] = {&first.triangle.v[0],  &first.triangle.v[1],  &first.triangle.v[2],
-                        &second.triangle.v[0], &second.triangle.v[1], &second.triangle.v[2]};
+  const Vertex* v[6] = {&first.t.v[0], &first.t.v[1], &first.t.v[2], &second.t.v[0], &second.t.v[1], &second.t.v[2]};
   s32 x0 = v[0]->x, x1 = v[0]->x, y0 = v[0]->y, y1 = v[0]->y;
   for (const Vertex* p : v) {
     x0 = std::min(x0, p->x), x1 = std::max(x1, p->x);
@@ -145,15 +166,13 @@ bool may_pair_cover(const DrawCommand& first, const DrawCommand& second) {
   return true;
 }
 
-Rect triangle_pair_cover(const DrawCommand& first, const DrawCommand& second) {
-  using Kind = DrawCommand::Kind;
-  if (first.kind != Kind::Triangle || second.kind != Kind::Triangle) return {};
-  if (!replaces_covered(first.triangle, first.ds) || !replaces_covered(second.triangle, second.ds)) return {};
+Rect triangle_pair_cover(DrawnTriangle first, DrawnTriangle second) {
+  if (!replaces_covered(first.t, first.ds) || !replaces_covered(second.t, second.ds)) return {};
   if (!same_area(first.ds, second.ds)) return {};
   SortedTriangle s[2];
   s32 begin[2], end[2];
-  if (!triangle_rows(first.triangle, first.ds, s[0], begin[0], end[0])) return {};
-  if (!triangle_rows(second.triangle, second.ds, s[1], begin[1], end[1])) return {};
+  if (!triangle_rows(first.t, first.ds, s[0], begin[0], end[0])) return {};
+  if (!triangle_rows(second.t, second.ds, s[1], begin[1], end[1])) return {};
   const DrawState& ds = first.ds;
   // Every row from the first covered to the last must be covered from the same left to the same
   // right pixel by the union of the two spans (clipped to the drawing area, as drawn).

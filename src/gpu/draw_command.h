@@ -38,20 +38,34 @@ struct VramBlock {
   u32 pixels = 0;
 };
 
+// A GP0 four-point polygon, kept whole: the hardware draws it as two triangles, `first` and then
+// (first.v[1], first.v[2], last) with the same attributes (second()).
+struct Quad {
+  Triangle first;
+  Vertex last;
+
+  Triangle second() const {
+    Triangle t = first;
+    t.v[0] = first.v[1], t.v[1] = first.v[2], t.v[2] = last;
+    return t;
+  }
+};
+
 struct DrawCommand {
-  enum class Kind : u8 { Triangle, Line, Rectangle, Fill, Copy, Row };
+  enum class Kind : u8 { Triangle, Quad, Line, Rectangle, Fill, Copy, Row };
   Kind kind = Kind::Fill;
-  DrawState ds;  // Triangle, Line, Rectangle
+  DrawState ds;  // Triangle, Quad, Line, Rectangle
   // The call's parameters, by kind: queued calls are copied a lot (kept, compacted), so only one
   // kind's take room, and every reader checks `kind` first.
   union {
     Triangle triangle;
+    Quad quad;
     Line line;
     Rectangle rectangle;
     VramBlock block;  // Fill, Copy, Row
   };
   // Set by the queue: write_rect(), computed once (pruning asks for it often), and what this
-  // call (with the next one, for a triangle pair) surely replaces.
+  // call (with the next one, for a pair of triangles) surely replaces.
   Rect write;
   Rect cover;
   bool cover_with_next = false;
@@ -67,19 +81,26 @@ struct DrawCommand {
   // count. Reads `write` (set first).
   u32 read_rects(Rect out[3]) const;
   // What the command replaces whatever was there (fills, opaque untextured rectangles without
-  // the mask check); triangles are handled in pairs by triangle_pair_cover.
+  // the mask check); triangles and quads are handled as pairs of triangles by
+  // triangle_pair_cover.
   Rect overwrite_rect() const;
+};
+
+// One of a pair of triangles drawn one after the other, with its drawing state.
+struct DrawnTriangle {
+  const Triangle& t;
+  const DrawState& ds;
 };
 
 // The rectangle two triangles drawn one after the other surely replace together (a quad's two
 // halves, e.g. a full-screen Gouraud background), or empty when their union is not a rectangle
 // or either could keep old pixels (textured, semi-transparent, mask check, interlaced rows).
-Rect triangle_pair_cover(const DrawCommand& first, const DrawCommand& second);
+Rect triangle_pair_cover(DrawnTriangle first, DrawnTriangle second);
 // A test that costs a few comparisons, false for most pairs triangle_pair_cover() would answer
 // empty: either triangle may keep old pixels, their drawing areas differ, or a vertex inside the
 // drawing area lies off the corners of the pair's bounding box (two triangles make a rectangle
 // only with their six vertices at its four corners; clipped away, a vertex may lie anywhere).
 // The last is a shortcut, not an exact test: an odd pair it turns away only drops less.
-bool may_pair_cover(const DrawCommand& first, const DrawCommand& second);
+bool may_pair_cover(DrawnTriangle first, DrawnTriangle second);
 
 }  // namespace psx::gpu

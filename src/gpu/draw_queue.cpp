@@ -109,6 +109,12 @@ void DrawQueue::triangle(const Triangle& t, const DrawState& ds) {
   push(c);
 }
 
+void DrawQueue::quad(const Quad& q, const DrawState& ds) {
+  DrawCommand c;
+  c.kind = DrawCommand::Kind::Quad, c.quad = q, c.ds = ds;
+  push(c);
+}
+
 void DrawQueue::line(const Line& l, const DrawState& ds) {
   DrawCommand c;
   c.kind = DrawCommand::Kind::Line, c.line = l, c.ds = ds;
@@ -156,13 +162,20 @@ void DrawQueue::push(DrawCommand& c) {
   queue_.push_back(c);
   const size_t n = queue_.size();
   DrawCommand& last = queue_.back();
-  last.cover = last.overwrite_rect();
+  using Kind = DrawCommand::Kind;
+  if (last.kind == Kind::Quad) {
+    const Triangle second = last.quad.second();
+    last.cover = last.write.area() >= kMinCover ? pair_cover({last.quad.first, last.ds}, {second, last.ds}) : Rect{};
+  } else {
+    last.cover = last.overwrite_rect();
+  }
   // Two triangles pair up unless a VBlank came between them (its frame sees only the first).
-  if (last.cover.empty() && n >= 2 && !(frame_pending_ && frame_position_ == n - 1)) {
+  if (last.kind == Kind::Triangle && n >= 2 && queue_[n - 2].kind == Kind::Triangle &&
+      !(frame_pending_ && frame_position_ == n - 1)) {
     DrawCommand& first = queue_[n - 2];
     const Rect a = first.write, b = last.write;
     const Rect bounds{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
-    const Rect pair = bounds.area() >= kMinCover ? pair_cover(first, last) : Rect{};
+    const Rect pair = bounds.area() >= kMinCover ? pair_cover({first.triangle, first.ds}, {last.triangle, last.ds}) : Rect{};
     if (!pair.empty()) first.cover = pair, first.cover_with_next = true;
   }
   if (queue_.size() < prune_at_ && pixels_.size() < pixels_prune_at_) return;
@@ -174,12 +187,12 @@ void DrawQueue::push(DrawCommand& c) {
   pixels_prune_at_ = std::max(kPrunePixels, 2 * pixels_.size());
 }
 
-Rect DrawQueue::pair_cover(const DrawCommand& first, const DrawCommand& second) {
+Rect DrawQueue::pair_cover(DrawnTriangle first, DrawnTriangle second) {
   if (!may_pair_cover(first, second)) return {};
   PairKey key;
-  const DrawCommand* pair[2] = {&first, &second};
+  const DrawnTriangle* pair[2] = {&first, &second};
   for (u32 i = 0; i < 2; ++i) {
-    const Triangle& t = pair[i]->triangle;
+    const Triangle& t = pair[i]->t;
     const DrawState& ds = pair[i]->ds;
     for (u32 v = 0; v < 3; ++v) key.xy[6 * i + 2 * v] = t.v[v].x, key.xy[6 * i + 2 * v + 1] = t.v[v].y;
     const s32 state[5] = {ds.area_left, ds.area_top, ds.area_right, ds.area_bottom,
@@ -200,6 +213,10 @@ void DrawQueue::execute(const DrawCommand& c, bool after_frame) {
   ++executed_;
   switch (c.kind) {
     case Kind::Triangle: return target_->draw_triangle(c.triangle, c.ds);
+    case Kind::Quad:
+      ++executed_;
+      target_->draw_triangle(c.quad.first, c.ds);
+      return target_->draw_triangle(c.quad.second(), c.ds);
     case Kind::Line: return target_->draw_line(c.line, c.ds);
     case Kind::Rectangle: return target_->draw_rectangle(c.rectangle, c.ds);
     case Kind::Fill: return target_->fill(b.x, b.y, b.width, b.height, b.pixel);

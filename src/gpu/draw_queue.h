@@ -7,8 +7,9 @@
 // Deferred drawing (set_deferred(true), for when nothing looks at pixels): calls are kept in
 // order instead of drawn, and drawn exactly as they would have been when anything needs VRAM
 // (flush). To keep the queue small when nothing ever looks, a call that surely replaces a large
-// rectangle (a GP0(02) fill, an opaque untextured rectangle, or two opaque untextured triangles
-// that together cover a rectangle, like a full-screen background quad) drops every earlier call
+// rectangle (a GP0(02) fill, an opaque untextured rectangle, or an opaque untextured quad or two
+// such triangles in a row that together cover a rectangle, like a full-screen background quad)
+// drops every earlier call
 // that writes only inside it, unless a later kept call, or the frame due, may read what it wrote.
 // The queue is pruned so in batches, once it has grown by as many calls as the last prune kept
 // (at least kPruneAt), and before it is drawn. Past a size cap the queue is drawn.
@@ -49,6 +50,9 @@ class DrawQueue {
   u64 executed() const { return executed_; }
 
   void triangle(const Triangle& t, const DrawState& ds);
+  // A four-point polygon: the renderer draws the triangles q.first and q.second(). Queued as one
+  // call, which the queue's walks meet once (three quarters of Tumble's polygons are quads).
+  void quad(const Quad& q, const DrawState& ds);
   void line(const Line& l, const DrawState& ds);
   void rectangle(const Rectangle& r, const DrawState& ds);
   void fill(u32 x, u32 y, u32 width, u32 height, u16 pixel);
@@ -71,14 +75,14 @@ class DrawQueue {
   void convert_frame();
   void prune();
   void compact();
-  // triangle_pair_cover() for the pairs may_pair_cover() lets through, through a memo of the
-  // last 32 met, by all it depends on (the vertices' positions, the flags that let a triangle
-  // keep old pixels, the drawing areas): a game draws the same background quad every frame, and
-  // walking its rows costs more than the rest of its queueing. Fewer entries let the pairs that
-  // never cover (a small triangle and the quad's first half) push the quad out: Tumble's pairs
-  // cost 97 M host instructions in 100 moves without a memo, 90 M with 4 entries, 31 M with 16;
-  // may_pair_cover() turns away 23,418 of its 30,464 pairs (all that cover nothing).
-  Rect pair_cover(const DrawCommand& first, const DrawCommand& second);
+  // triangle_pair_cover() for the pairs may_pair_cover() lets through (a large quad's halves, or
+  // two large triangles in a row), through a memo of the last 32 met, by all it depends on (the
+  // vertices' positions, the flags that let a triangle keep old pixels, the drawing areas): a
+  // game draws the same background quad every frame, and walking its rows costs more than the
+  // rest of its queueing. (Measured while quads were queued as two triangles, when pairs of a
+  // small triangle and a quad's half pushed the quad out of smaller memos: Tumble's pairs cost
+  // 97 M host instructions in 100 moves without a memo, 31 M with 16 entries.)
+  Rect pair_cover(DrawnTriangle first, DrawnTriangle second);
   struct PairKey {
     std::array<s32, 12> xy{};     // both triangles' vertices
     std::array<s32, 10> state{};  // per triangle: its area (4), then textured, semi, check_mask, row parity

@@ -119,13 +119,9 @@ void Gpu::gp0_polygon() {
   t.clut_x = static_cast<u16>((clut & 0x3F) * 16);
   t.clut_y = static_cast<u16>((clut >> 6) & 0x1FF);
   t.shaded = shaded, t.textured = textured, t.semi = c & 0x02, t.raw = c & 0x01;
-  const gpu::DrawState& ds = draw_state();
   t.v[0] = v[0], t.v[1] = v[1], t.v[2] = v[2];
-  draw_.triangle(t, ds);
-  if (corners == 4) {
-    t.v[0] = v[1], t.v[1] = v[2], t.v[2] = v[3];
-    draw_.triangle(t, ds);
-  }
+  if (corners == 4) draw_.quad({t, v[3]}, draw_state());
+  else draw_.triangle(t, draw_state());
 }
 
 // GP0(40)-(5F): bit 4 Gouraud, 3 polyline, 1 semi-transparent.

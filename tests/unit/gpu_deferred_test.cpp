@@ -118,12 +118,18 @@ class Stream {
     }
   }
   // An opaque untextured cover of the drawing area's usual buffer: a background quad, as
-  // Tumble draws its sky, or an opaque rectangle.
+  // Tumble draws its sky, the same as two three-point polygons, or an opaque rectangle.
   void cover(Twins& t) {
     const int y = pick(2) ? 0 : 240;
     const int w = pick(4) == 0 ? 256 : 320, h = 240 - static_cast<int>(pick(2)) * 16;
-    if (pick(3) == 0) {
+    const u32 how = pick(4);
+    if (how == 0) {
       t.gp0(0x60000000 | colour()), t.gp0(xy(0, y)), t.gp0(xy(w, h));
+      return;
+    }
+    if (how == 1) {
+      t.gp0(0x20000000 | colour()), t.gp0(xy(0, y)), t.gp0(xy(w, y)), t.gp0(xy(0, y + h));
+      t.gp0(0x20000000 | colour()), t.gp0(xy(w, y)), t.gp0(xy(0, y + h)), t.gp0(xy(w, y + h));
       return;
     }
     const u32 shaded = pick(2) ? 0x10 : 0;
@@ -247,12 +253,12 @@ TEST(GpuDeferred, GpureadSeesQueuedDrawing) {
 
 // A game that never lets anyone look, ordered as Tumble orders its frames: wait for the VBlank,
 // show the buffer drawn last frame, then draw the other one (the one the VBlank's frame showed):
-// a full-screen background quad and 300 small textured triangles, 302 calls a frame. A prune in
-// the middle of frame N keeps frame N-2 (the pending frame shows it), frame N-1 (nothing has
-// covered it yet) and frame N so far: under 4 frames, 4 x 302 calls. The next prune comes when
-// the queue has doubled (or reached DrawQueue::kPruneAt), so it never holds more than 2 x 4 x 302
-// calls: far below the cap, so it is pruning, not drawing. Drawing it all gives what eager drawing
-// gave.
+// a full-screen background quad (one call) and 300 small textured triangles, 301 calls a frame.
+// A prune in the middle of frame N keeps frame N-2 (the pending frame shows it), frame N-1
+// (nothing has covered it yet) and frame N so far: under 4 frames, 4 x 301 calls. The next prune
+// comes when the queue has doubled (or reached DrawQueue::kPruneAt), so it never holds more than
+// 2 x 4 x 301 calls: far below the cap, so it is pruning, not drawing. Drawing it all gives what
+// eager drawing gave.
 TEST(GpuDeferred, QueueStaysBoundedWithoutObserver) {
   Twins t;
   t.gp1(0x08000001), t.gp1(0x03000000);
@@ -273,8 +279,8 @@ TEST(GpuDeferred, QueueStaysBoundedWithoutObserver) {
     }
     most = std::max(most, t.lazy.gpu.queued_draws());
   }
-  EXPECT_LE(most, 2u * 4 * 302);
-  EXPECT_GE(most, psx::gpu::DrawQueue::kPruneAt - 302);  // it waited for a batch
+  EXPECT_LE(most, 2u * 4 * 301);
+  EXPECT_GE(most, psx::gpu::DrawQueue::kPruneAt - 301);  // it waited for a batch
   ASSERT_EQ(t.eager.state(), t.lazy.state());
 }
 
@@ -305,14 +311,49 @@ TEST(GpuDeferred, ReadsBesideADrawingDoNotKeepIt) {
 
 // A background quad that reaches past the drawing area on every side covers the whole area
 // however skewed it is (only its clipped rows count), so the small triangle drawn before it goes
-// at the next prune: may_pair_cover() lets through pairs whose off-corner vertices all lie outside
-// the area. The quad (-50,-40) (400,-10) (-20,300) (380,280) keeps x <= -20 on its left edge and
+// at the next prune: may_pair_cover() lets through pairs (here the quad's halves) whose off-corner
+// vertices all lie outside the area. The quad (-50,-40) (400,-10) (-20,300) (380,280) keeps x <= -20 on its left edge and
 // x >= 380 on its right one, and the drawing area is x 0..319, y 0..239.
 TEST(GpuDeferred, SkewedQuadPastTheAreaCoversIt) {
   Twins t;
   t.gp0(0xE3000000), t.gp0(0xE4000000 | 239u << 10 | 319), t.gp0(0xE5000000);
   t.gp0(0x20FF00FF), t.gp0(xy(100, 100)), t.gp0(xy(120, 100)), t.gp0(xy(100, 120));
   t.gp0(0x28102030), t.gp0(xy(-50, -40)), t.gp0(xy(400, -10)), t.gp0(xy(-20, 300)), t.gp0(xy(380, 280));
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), 2u);  // the triangle and the quad
+  queue_until_prune(t);
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), psx::gpu::DrawQueue::kPruneAt - 1);
+  ASSERT_EQ(t.eager.state(), t.lazy.state());
+}
+
+// A quad whose second half spans 1024 or more columns draws only its first half (each half is
+// checked on its own): what the queued quad may write still holds that half, so the frame due
+// before it, which shows that half's pixels, is converted before the quad is drawn. Vertices
+// (500,0) (510,0) (500,10) (-600,10): the second half spans 1110 columns.
+TEST(GpuDeferred, QuadWithAHalfTooWideKeepsTheOther) {
+  Twins t;
+  t.gp1(0x08000001), t.gp1(0x03000000), t.gp1(0x05000000 | 480);
+  t.gp0(0xE3000000), t.gp0(0xE4000000 | 511u << 10 | 1023), t.gp0(0xE5000000);
+  t.frame();
+  t.gp0(0x28FFFFFF), t.gp0(xy(500, 0)), t.gp0(xy(510, 0)), t.gp0(xy(500, 10)), t.gp0(xy(-600, 10));
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), 1u);
+  for (Rig* r : {&t.eager, &t.lazy}) {
+    const std::vector<u8> picture = r->picture();
+    ASSERT_EQ(r->gpu.display_width(), 320u);
+    const size_t at = 20 * 3;  // (500, 0) is the picture's pixel 20 of row 0: black at the VBlank
+    EXPECT_EQ(picture[at] | picture[at + 1] | picture[at + 2], 0);
+    EXPECT_EQ(r->gpu.vram()[500], 0x7FFF);  // drawn after it, white
+  }
+  ASSERT_EQ(t.eager.state(), t.lazy.state());
+}
+
+// Two three-point polygons in a row that make a rectangle cover it as a quad would: the small
+// triangle drawn before them goes at the next prune.
+TEST(GpuDeferred, TwoTrianglesInARowCoverLikeAQuad) {
+  Twins t;
+  t.gp0(0xE3000000), t.gp0(0xE4000000 | 239u << 10 | 319), t.gp0(0xE5000000);
+  t.gp0(0x20FF00FF), t.gp0(xy(100, 100)), t.gp0(xy(120, 100)), t.gp0(xy(100, 120));
+  t.gp0(0x20102030), t.gp0(xy(0, 0)), t.gp0(xy(320, 0)), t.gp0(xy(0, 240));
+  t.gp0(0x20405060), t.gp0(xy(320, 0)), t.gp0(xy(0, 240)), t.gp0(xy(320, 240));
   EXPECT_EQ(t.lazy.gpu.queued_draws(), 3u);
   queue_until_prune(t);
   EXPECT_EQ(t.lazy.gpu.queued_draws(), psx::gpu::DrawQueue::kPruneAt - 1);

@@ -281,13 +281,25 @@ IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
 void IdleSkip::note_context(Cpu& cpu, Proven& p, Cycles shadow0, u32 shadow_reg0, Cycles t0, Cycles done0,
                             u64 steps) const {
   Bus& bus = cpu.bus_;
-  std::copy(tags_.begin(), tags_.begin() + path_len_, p.at.tags.begin());
   p.at.pipeline = pipeline(cpu);
   p.at.sr = cpu.cop0_.sr;
   p.at.cache_control = *bus.cache_control_cell();
   p.at.memory_control = bus.memory_control();
   p.at.shadow = shadow0;
   p.at.shadow_reg = shadow_reg0;
+  Proven::Checks& c = p.checks;
+  c.lines = c.jumps = c.loads = 0;
+  for (u32 i = 0; i < path_len_; ++i) {
+    const IdleStep& st = path_[i];
+    const u32 line = ICache::line(st.pc);
+    if (std::find(c.line.begin(), c.line.begin() + c.lines, line) == c.line.begin() + c.lines)
+      c.line[c.lines] = line, c.tag[c.lines++] = tags_[i];
+    c.fetched[i] = bus.cached_code(st.pc) ? static_cast<u16>((st.pc >> 2) & (ICache::kLines * 4 - 1))
+                                          : Proven::Checks::kFetchedElsewhere;
+    const u32 next = i + 1 < path_len_ ? path_[i + 1].pc : p.head;
+    if (next != st.pc + 4) c.jump_target[c.jumps++] = next;
+    if (load_width(st.instr) != 0 && st.cell == 0) c.load_step[c.loads++] = static_cast<u8>(i);
+  }
   p.cells = cells_;
   p.named = 1;
   for (u32 i = 0; i < path_len_; ++i) p.named |= named_registers(path_[i].instr);
@@ -345,17 +357,23 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
       bus.memory_control() != p.at.memory_control ||
       shadow_left(cpu.load_done_at_, now) != p.at.shadow || cpu.shadow_reg_ != p.at.shadow_reg)
     return false;
+  const Proven::Checks& c = p.checks;
   const ICache& icache = bus.icache();
+  for (u32 l = 0; l < c.lines; ++l)
+    if (icache.tag(c.line[l]) != c.tag[l]) return false;
+  const u32* cached = icache.words();
   for (u32 i = 0; i < p.len; ++i) {
-    const IdleStep& st = p.path[i];
     u32 word;
-    if (!bus.peek_code(st.pc, word) || word != st.instr || icache.tag(ICache::line(st.pc)) != p.at.tags[i])
-      return false;
-    const u32 next = i + 1 < p.len ? p.path[i + 1].pc : p.head;
-    if (next != st.pc + 4 && cpu.hooked(next)) return false;  // a jump's target
+    if (c.fetched[i] != Proven::Checks::kFetchedElsewhere) word = cached[c.fetched[i]];
+    else if (!bus.peek_code(p.path[i].pc, word)) return false;
+    if (word != p.path[i].instr) return false;
+  }
+  for (u32 j = 0; j < c.jumps; ++j)
+    if (cpu.hooked(c.jump_target[j])) return false;
+  for (u32 l = 0; l < c.loads; ++l) {
+    const IdleStep& st = p.path[c.load_step[l]];
     const u32 width = load_width(st.instr);
     u32 v;
-    if (width == 0 || st.cell) continue;  // a stored word's load: the proof follows its value
     if (!bus.peek_data(st.addr, width, v)) return false;
     if (load_signed(st.instr)) v = width == 2 ? u32(s32(s16(v))) : u32(s32(s8(v)));  // as CpuT::load
     if ((v ^ st.load_value) & st.load_bits) return false;

@@ -117,8 +117,8 @@ class IdleSkip {
   std::array<Backoff, kBackoffEntries> backoff_{};
   // A proof made: the iteration recorded, the registers it started from and added, the load in
   // flight at its end, and its bound; and for repeat(), what else shaped the iteration (`at`:
-  // the i-cache tag of each step's line, the pipeline, SR, the cache and memory control
-  // registers, the load shadow when it started), what it cost and what it left.
+  // the pipeline, SR, the cache and memory control registers, the load shadow when it started;
+  // `checks`: its code, i-cache lines, jumps and loads), what it cost and what it left.
   struct Proven {
     u32 head = 1;
     u32 len = 0;
@@ -128,13 +128,25 @@ class IdleSkip {
     u32 load_reg = 0, load_val = 0;
     u64 max_k = 0;
     struct Context {
-      std::array<u32, kMaxPath> tags{};
       Pipeline pipeline{};  // as pipeline() reads it
       u32 sr = 0, cache_control = 0;
       std::array<u32, 9> memory_control{};
       Cycles shadow = 0;  // cycles of the load shadow left
       u32 shadow_reg = 0;
     } at;
+    // What repeats() checks, gathered once (note_context()): the distinct i-cache lines of the
+    // steps with their tags (each the same all through the iteration, which filled no line); the
+    // i-cache word each step is fetched from (a cached fetch hit, and hits again while its line's
+    // tag is the same), or kFetchedElsewhere (not cached: memory); the targets of jumps (hooks);
+    // the steps whose loads decide the path (not those of a stored word, whose value the proof
+    // follows).
+    struct Checks {
+      static constexpr u16 kFetchedElsewhere = 0xFFFF;
+      u32 lines = 0, jumps = 0, loads = 0;
+      std::array<u32, kMaxPath> line{}, tag{}, jump_target{};
+      std::array<u16, kMaxPath> fetched{};  // ICache::words() index
+      std::array<u8, kMaxPath> load_step{};
+    } checks;
     IdleCells cells;      // the words it stores to, before and after it (count 0: none)
     u32 named = 0;        // the registers its instructions name (bit r for register r)
     Cycles cost = 0;

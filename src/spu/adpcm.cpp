@@ -91,14 +91,6 @@ void decode_adpcm_block(const u8* block, AdpcmHistory& history, s16* out) {
   history.older = static_cast<s16>(older);
 }
 
-void decode_adpcm_block_end(const u8* block, AdpcmHistory& history, s16* out) {
-  if (effective_filter(block[0]) != 0) return decode_adpcm_block(block, history, out);
-  const u32 shift = 16 + effective_shift(block[0]);
-  for (u32 i = kAdpcmBlockSamples - 3; i < kAdpcmBlockSamples; ++i) out[i] = filter0_sample(block + 2, i, shift);
-  history.old = out[kAdpcmBlockSamples - 1];
-  history.older = out[kAdpcmBlockSamples - 2];
-}
-
 std::vector<u8> encode_adpcm(const s16* pcm, size_t count, const AdpcmEncodeOptions& options) {
   const size_t blocks = std::max<size_t>(1, (count + kAdpcmBlockSamples - 1) / kAdpcmBlockSamples);
   std::vector<u8> out(blocks * kAdpcmBlockBytes, 0);

@@ -27,12 +27,6 @@ struct AdpcmHistory {
 
 // Decodes one block into 28 samples, updating the filter history.
 void decode_adpcm_block(const u8* block, AdpcmHistory& history, s16* out);
-// What a block leaves behind when none of its samples but the last three is read (a voice that
-// nothing hears crossing it whole): out[25..27], which the interpolation carries into the next
-// block, and the history, both as decode_adpcm_block() makes them. With filter 0 no prediction
-// links a sample to the ones before it, so only those three are decoded and out[0..24] are left
-// as they were; any other filter decodes the whole block.
-void decode_adpcm_block_end(const u8* block, AdpcmHistory& history, s16* out);
 
 struct AdpcmEncodeOptions {
   // Loop the sample: the block holding `loop_start` (a sample index) gets LoopStart, the last

@@ -64,8 +64,8 @@ u32 Spu::step_unheard_voices(u32 samples, u32 stepped) {
     const u32 step = std::min<u32>(v.pitch, 0x4000);
     bool loop_end = false;
     const bool stepped_all =
-        capture ? v.step_captured(ram_.data(), step, samples, unwritten, captured_buffer(i, samples), loop_end)
-                : v.step_unheard(ram_.data(), step, (noise_on_ & bit) != 0, samples, unwritten, loop_end);
+        capture ? v.step_captured(ram_.data(), blocks_, step, samples, unwritten, captured_buffer(i, samples), loop_end)
+                : v.step_unheard(ram_.data(), blocks_, step, (noise_on_ & bit) != 0, samples, unwritten, loop_end);
     if (!stepped_all) {
       v = before;
       continue;

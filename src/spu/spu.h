@@ -260,6 +260,7 @@ class Spu final : public IoDevice, public DmaPort {
 
   std::vector<u8> ram_;
   std::array<spu::Voice, kNumVoices> voices_{};
+  spu::AdpcmBlockCache blocks_;  // the voices' decoded blocks (a cache: not state)
   spu::Reverb reverb_;
   spu::NoiseGenerator noise_;
   spu::VolumeSweep main_left_, main_right_;

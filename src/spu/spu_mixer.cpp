@@ -34,7 +34,7 @@ void Spu::apply_key_events() {
 void Spu::sample_voice(u32 i, bool needed, Mix& mix) {
   spu::Voice& v = voices_[i];
   const u32 bit = 1u << i;
-  v.fetch_block(ram_.data());
+  v.fetch_block(ram_.data(), blocks_);
   // Every voice reads its block header and current sample each cycle, audible or not.
   check_irq(v.current_address() * 8u);
   check_irq(v.data_address());

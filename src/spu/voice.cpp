@@ -24,12 +24,13 @@ void Voice::write_repeat_address(u16 value) {
   if (adsr.phase() != Adsr::Phase::Off) ignore_loop_start_ = true;
 }
 
-void Voice::fetch_block(const u8* ram, bool whole) {
+void Voice::fetch_block(const u8* ram, AdpcmBlockCache& blocks) {
   if (has_block_) return;
-  const u8* block = ram + ((current_address_ * 8u) & 0x7FFFF);
-  if (whole) decode_adpcm_block(block, history_, &samples_[3]);
-  else decode_adpcm_block_end(block, history_, &samples_[3]);
-  block_flags_ = block[1];
+  const u32 address = (current_address_ * 8u) & 0x7FFFF;
+  const AdpcmBlockCache::Decoded& d = blocks.decode(ram, address, history_);
+  std::copy(d.samples.begin(), d.samples.end(), samples_.begin() + 3);
+  history_ = d.history;
+  block_flags_ = ram[address + 1];
   has_block_ = true;
   if ((block_flags_ & kAdpcmLoopStart) && !ignore_loop_start_) repeat_address = current_address_;
 }
@@ -56,7 +57,8 @@ Voice::BlockEvent Voice::advance(u32 step, bool noise) {
   return BlockEvent::LoopEnd;
 }
 
-bool Voice::step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end) {
+bool Voice::step_unheard(const u8* ram, AdpcmBlockCache& blocks, u32 step, bool noise, u32 samples,
+                         RamWindow unwritten, bool& loop_end) {
   // psx-spx "SPU ADPCM Pitch": the counter moves by `step` each sample and a block is left when
   // bits 12+ reach 28, so the crossings fall every ceil(remaining / step) samples.
   constexpr u32 kBlockEnd = kAdpcmBlockSamples << 12;
@@ -75,9 +77,7 @@ bool Voice::step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWi
       const u32 addr = (current_address_ * 8u) & 0x7FFFF;
       // The first read sees the RAM of the run's first sample; later ones must not be written.
       if (done > 0 && (addr < unwritten.begin || addr + kAdpcmBlockBytes > unwritten.end)) return false;
-      // A block left with samples of the run to go is followed by the next block's fetch (or by
-      // a refused read, after which the caller restores the voice): its other samples go unread.
-      fetch_block(ram, to_cross >= left);
+      fetch_block(ram, blocks);
     }
     if (to_cross > left) {
       tick(left);
@@ -93,13 +93,14 @@ bool Voice::step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWi
   }
 }
 
-bool Voice::step_captured(const u8* ram, u32 step, u32 samples, RamWindow unwritten, s16* out, bool& loop_end) {
+bool Voice::step_captured(const u8* ram, AdpcmBlockCache& blocks, u32 step, u32 samples, RamWindow unwritten,
+                          s16* out, bool& loop_end) {
   // Spu::sample_voice() for a needed voice without noise, IRQ checks or mix.
   for (u32 k = 0; k < samples; ++k) {
     if (!has_block_) {
       const u32 addr = (current_address_ * 8u) & 0x7FFFF;
       if (k > 0 && (addr < unwritten.begin || addr + kAdpcmBlockBytes > unwritten.end)) return false;
-      fetch_block(ram);
+      fetch_block(ram, blocks);
     }
     const s32 level = adsr.level();
     out[k] = level == 0 ? 0 : static_cast<s16>(std::clamp((interpolate() * level) >> 15, -0x8000, 0x7FFF));

@@ -7,6 +7,7 @@
 #include "core/state.h"
 #include "core/types.h"
 #include "spu/adpcm.h"
+#include "spu/adpcm_cache.h"
 #include "spu/envelope.h"
 
 namespace psx::spu {
@@ -31,11 +32,9 @@ class Voice {
   // writing it redirects a playing sample; the flag must not overwrite that choice).
   void write_repeat_address(u16 value);
 
-  // Loads and decodes the block at the current address if not loaded yet; a LoopStart flag
-  // copies the current address into LSAX. `whole` false: the voice will leave the block before
-  // anything reads a sample of it and then fetch the next one, which overwrites the samples, so
-  // only the three it carries over are decoded where that is cheaper (decode_adpcm_block_end).
-  void fetch_block(const u8* ram, bool whole = true);
+  // Loads and decodes the block at the current address if not loaded yet (through `blocks`); a
+  // LoopStart flag copies the current address into LSAX.
+  void fetch_block(const u8* ram, AdpcmBlockCache& blocks);
   // The interpolated sample at the pitch counter (call after fetch_block).
   s32 interpolate() const;
   // Adds the (already modulated and clipped) step to the pitch counter. Leaving the block
@@ -60,13 +59,15 @@ class Voice {
   // Blocks are read from `ram` as it is at the run's first sample; one read later that lies
   // outside `unwritten` could have changed in between: then it returns false and the voice is
   // left half-stepped (the caller restores it and steps it sample by sample).
-  bool step_unheard(const u8* ram, u32 step, bool noise, u32 samples, RamWindow unwritten, bool& loop_end);
+  bool step_unheard(const u8* ram, AdpcmBlockCache& blocks, u32 step, bool noise, u32 samples, RamWindow unwritten,
+                    bool& loop_end);
 
   // Steps a voice whose output only the capture buffers read (voices 1 and 3) over `samples`
   // samples as step_unheard() does, but sample by sample, writing each sample's output (after the
   // envelope, psx-spx "SPU Memory layout") to out[0..samples). No noise. Returns false on the
   // same block reads as step_unheard(), leaving the voice half-stepped.
-  bool step_captured(const u8* ram, u32 step, u32 samples, RamWindow unwritten, s16* out, bool& loop_end);
+  bool step_captured(const u8* ram, AdpcmBlockCache& blocks, u32 step, u32 samples, RamWindow unwritten, s16* out,
+                     bool& loop_end);
 
   u16 current_address() const { return current_address_; }
   // Byte address of the halfword holding the current sample (for the IRQ address check).

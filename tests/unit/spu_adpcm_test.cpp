@@ -1,13 +1,16 @@
 // SPU-ADPCM decoding checked against the filter equations worked by hand (psx-spx: sample =
 // (nibble << 12 >> shift) + (old*pos + older*neg + 32) >> 6, pos/neg = 0,60,115,98,122 /
-// 0,0,-52,-55,-60, shifts 13..15 act as 9, clamped to 16 bits), and the encoder's round trip.
+// 0,0,-52,-55,-60, shifts 13..15 act as 9, clamped to 16 bits), the encoder's round trip, and the
+// block cache answering as the decoder.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "spu/adpcm.h"
+#include "spu/adpcm_cache.h"
 
 using namespace psx;
 using namespace psx::spu;
@@ -50,33 +53,80 @@ TEST(SpuAdpcm, Filter0IsTheShiftedNibbleAndSetsTheHistory) {
   EXPECT_EQ(h.older, 0);
 }
 
-TEST(SpuAdpcm, BlockEndDecodesTheLastThreeSamplesAndTheHistory) {
-  // Filter 0, shift 2: nibble * 1024. The last three nibbles, samples 25..27, are the high one of
-  // byte 12 (-3, 0xD) and both of byte 13 (5, then -8): -3072, 5120, -8192. Samples 0..24 are left
-  // as they were (here 77), and the history is the last two samples, as decode_adpcm_block() sets it.
-  auto b = block(0x02, {0x11, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0xD0, 0x85});
-  AdpcmHistory h{1000, -2000};
-  s16 out[28];
-  std::fill(std::begin(out), std::end(out), s16{77});
-  decode_adpcm_block_end(b.data(), h, out);
-  EXPECT_EQ(out[0], 77);
-  EXPECT_EQ(out[24], 77);
-  EXPECT_EQ(out[25], -3072);
-  EXPECT_EQ(out[26], 5120);
-  EXPECT_EQ(out[27], -8192);
-  EXPECT_EQ(h.old, -8192);
-  EXPECT_EQ(h.older, 5120);
-  // Any other filter links every sample to the ones before: the whole block is decoded. Filter 1,
-  // shift 2, nibble 1 then zeros from history 0: 1024, then each sample (old*60 + 32) >> 6.
-  auto c = block(0x12, {0x01});
-  AdpcmHistory h2;
-  std::fill(std::begin(out), std::end(out), s16{77});
-  decode_adpcm_block_end(c.data(), h2, out);
-  EXPECT_EQ(out[0], 1024);
-  EXPECT_EQ(out[1], 960);  // (1024*60 + 32) >> 6 = 61472 >> 6
-  EXPECT_EQ(out[2], 900);  // (960*60 + 32) >> 6 = 57632 >> 6
-  EXPECT_EQ(h2.old, out[27]);
-  EXPECT_EQ(h2.older, out[26]);
+// What decode_adpcm_block() gives for a block and a history.
+AdpcmBlockCache::Decoded decoded(const std::vector<u8>& b, AdpcmHistory h) {
+  AdpcmBlockCache::Decoded d;
+  decode_adpcm_block(b.data(), h, d.samples.data());
+  d.history = h;
+  return d;
+}
+
+bool same(const AdpcmBlockCache::Decoded& a, const AdpcmBlockCache::Decoded& b) {
+  return a.samples == b.samples && a.history.old == b.history.old && a.history.older == b.history.older;
+}
+
+TEST(SpuAdpcm, BlockCacheDecodesAsTheDecoder) {
+  // A 512 KiB sound RAM of random blocks with 3000 histories, met 200,000 times at random
+  // addresses (multiples of 8, as voices address blocks): hits, misses and blocks that push each
+  // other out of their entry (addresses 16 KiB apart share one).
+  std::mt19937 rng(5);
+  std::vector<u8> ram(512 * 1024 + 16);
+  for (u8& byte : ram) byte = static_cast<u8>(rng());
+  std::vector<u32> addresses;
+  std::vector<AdpcmHistory> histories;
+  for (int k = 0; k < 3000; ++k) {
+    addresses.push_back((rng() % (512 * 1024 / 8)) * 8);
+    histories.push_back({static_cast<s16>(rng()), static_cast<s16>(rng())});
+  }
+  AdpcmBlockCache cache;
+  for (int n = 0; n < 200000; ++n) {
+    const size_t k = rng() % addresses.size();
+    const std::vector<u8> b(ram.begin() + addresses[k], ram.begin() + addresses[k] + 16);
+    ASSERT_TRUE(same(cache.decode(ram.data(), addresses[k], histories[k]), decoded(b, histories[k]))) << "pair " << k;
+  }
+}
+
+TEST(SpuAdpcm, BlockCacheTellsKeysInOneEntryApart) {
+  // A block (filter 2, so both history samples count) met from a history, then met again with
+  // one part of the key changed: the older history sample, a byte of the block's second half (as
+  // sound RAM rewritten), a byte of its first half; then a block 16 KiB on (the same entry) from
+  // the first history. Each must be decoded, not answered with the samples the entry holds.
+  std::mt19937 rng(9);
+  std::vector<u8> ram(512 * 1024 + 16);
+  for (u8& byte : ram) byte = static_cast<u8>(rng());
+  const u32 address = 0x1000;
+  ram[address] = 0x24;
+  const AdpcmHistory h{1234, -4321};
+  const auto block_at = [&](u32 a) { return std::vector<u8>(ram.begin() + a, ram.begin() + a + 16); };
+  AdpcmBlockCache cache;
+  const std::vector<u8> original = block_at(address);
+  ASSERT_TRUE(same(cache.decode(ram.data(), address, h), decoded(original, h)));
+  const AdpcmHistory other{1234, 999};
+  EXPECT_TRUE(same(cache.decode(ram.data(), address, other), decoded(original, other)));
+  EXPECT_FALSE(same(decoded(original, other), decoded(original, h)));  // the change shows
+  for (u32 byte : {12u, 5u}) {
+    ASSERT_TRUE(same(cache.decode(ram.data(), address, h), decoded(original, h)));
+    ram[address + byte] ^= 0x77;
+    EXPECT_TRUE(same(cache.decode(ram.data(), address, h), decoded(block_at(address), h))) << "byte " << byte;
+    EXPECT_FALSE(same(decoded(block_at(address), h), decoded(original, h)));
+    ram[address + byte] ^= 0x77;
+  }
+  ASSERT_TRUE(same(cache.decode(ram.data(), address, h), decoded(original, h)));
+  const u32 twin = address + 16 * 1024;
+  EXPECT_TRUE(same(cache.decode(ram.data(), twin, h), decoded(block_at(twin), h)));
+}
+
+TEST(SpuAdpcm, BlockInTheLastEightBytesGoesOnAtTheStart) {
+  // Sound RAM's last 8 bytes hold the header and 6 data bytes; the block's other 8 data bytes
+  // are RAM's first 8 (the address wraps at 512 KiB).
+  std::vector<u8> ram(AdpcmBlockCache::kSoundRamBytes);
+  std::mt19937 rng(3);
+  for (u8& byte : ram) byte = static_cast<u8>(rng());
+  const u32 last = AdpcmBlockCache::kSoundRamBytes - 8;
+  std::vector<u8> b(ram.begin() + last, ram.end());
+  b.insert(b.end(), ram.begin(), ram.begin() + 8);
+  AdpcmBlockCache cache;
+  EXPECT_TRUE(same(cache.decode(ram.data(), last, AdpcmHistory{}), decoded(b, AdpcmHistory{})));
 }
 
 TEST(SpuAdpcm, Filter1ByHand) {

@@ -9,8 +9,8 @@
 // (flush). To keep the queue small when nothing ever looks, a call that surely replaces a large
 // rectangle (a GP0(02) fill, an opaque untextured rectangle, or an opaque untextured quad or two
 // such triangles in a row that together cover a rectangle, like a full-screen background quad)
-// drops every earlier call
-// that writes only inside it, unless a later kept call, or the frame due, may read what it wrote.
+// drops every earlier call that writes only inside it, unless a later kept call, or the frame
+// due, may read what it wrote.
 // The queue is pruned so in batches, once it has grown by as many calls as the last prune kept
 // (at least kPruneAt), and before it is drawn. Past a size cap the queue is drawn.
 #pragma once

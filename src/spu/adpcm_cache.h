@@ -28,8 +28,9 @@ class AdpcmBlockCache {
 
  private:
   // 2048 entries (160 KiB): blocks 16 KiB apart share one. Tumble's sounds meet 447 blocks and
-  // histories; 1,414 of its 164,332 fetches in 100 moves miss (0.9%). An entry still all zeros is the right answer for its key:
-  // an all-zero block (filter 0, shift 0) from an all-zero history decodes to zeros.
+  // histories; 1,414 of its 164,332 fetches in 100 moves miss (0.9%). An entry still all zeros
+  // is the right answer for its key: an all-zero block (filter 0, shift 0) from an all-zero
+  // history decodes to zeros.
   static constexpr u32 kEntries = 2048;
   struct Entry {
     u64 low = 0, high = 0;  // the block's bytes 0-7 and 8-15 (host order)

@@ -164,8 +164,11 @@ void DrawQueue::push(DrawCommand& c) {
   DrawCommand& last = queue_.back();
   using Kind = DrawCommand::Kind;
   if (last.kind == Kind::Quad) {
-    const Triangle second = last.quad.second();
-    last.cover = last.write.area() >= kMinCover ? pair_cover({last.quad.first, last.ds}, {second, last.ds}) : Rect{};
+    last.cover = {};
+    if (last.write.area() >= kMinCover) {
+      const Triangle second = last.quad.second();  // only for the large quads that may cover
+      last.cover = pair_cover({last.quad.first, last.ds}, {second, last.ds});
+    }
   } else {
     last.cover = last.overwrite_rect();
   }

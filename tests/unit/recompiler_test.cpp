@@ -343,6 +343,53 @@ TEST(RecompilerCode, NoBlockGoesOnPastABranchAlwaysTaken) {
   }
 }
 
+// The deadline stops a block wherever it falls and an interrupt returns to wherever it was
+// taken; the CPU takes the program up there, inside the loop's compiled block, and runs to the
+// loop's branch as the interpreter does rather than compiling a block from that point. A loop of
+// 41 instructions (37 cycles of hits and 4 of fills a pass) runs for 12 frames, whose ends fall
+// at different points of it, so a block from each point would make more than the loop's block
+// (and the handler's). The interrupt handler acknowledges VBlank, counts it in s1 and returns to
+// EPC.
+std::vector<u32> resume_loop() {
+  std::vector<u32> code(40, itype(0x09, kT0, kT0, 1));          // addiu t0, t0, 1
+  code.push_back(j(0x80010000));
+  code.push_back(itype(0x09, kT1, kT1, 1));                      // addiu t1, t1, 1 (delay slot)
+  return code;
+}
+
+TEST(RecompilerCode, ResumingInsideABlockCompilesNoBlockThere) {
+  const u32 base = 0x80010000;
+  expect_same_code(resume_loop(), base, 0, {}, 12);
+  Console c;
+  c.set_cpu_mode(Console::CpuMode::Recompiler);
+  load_code(c, resume_loop(), base, 0, {});
+  c.run_frames(12);
+  EXPECT_EQ(c.recompiler_stats().compiled, 1u);
+}
+
+TEST(RecompilerCode, ReturningFromAnInterruptInsideABlockCompilesNoBlockThere) {
+  const u32 base = 0x80010000, kK0 = 26, kK1 = 27;
+  const auto vblank_irq = [](Console& c) {
+    const std::vector<u32> handler = {itype(0x0F, 0, kK1, 0x1F80),          // lui k1, 1F80h
+                                      itype(0x2B, kK1, 0, 0x1070),          // sw zero, I_STAT
+                                      itype(0x09, kS1, kS1, 1),             // addiu s1, s1, 1
+                                      itype(0x10, 0, kK0, 0) | 14 << 11,    // mfc0 k0, epc
+                                      kNop, rtype(0x08, kK0, 0, 0),         // jr k0
+                                      0x42000010};                          // rfe
+    for (u32 i = 0; i < handler.size(); ++i) c.write32(0x80000080 + 4 * i, handler[i]);
+    c.irq().write(4, 1);  // I_MASK (1F801074h): VBlank
+  };
+  const u32 sr = psx::Cop0::kIEc | 0x400;  // interrupts on, IM2 (the interrupt controller)
+  expect_same_code(resume_loop(), base, sr, {}, 12, vblank_irq);
+  Console c;
+  c.set_cpu_mode(Console::CpuMode::Recompiler);
+  load_code(c, resume_loop(), base, sr, {});
+  vblank_irq(c);
+  c.run_frames(12);
+  EXPECT_GE(c.cpu().reg(kS1), 11u);  // a VBlank a frame
+  EXPECT_EQ(c.recompiler_stats().compiled, 2u);  // the loop and the handler
+}
+
 // Cached code entered in the middle of i-cache lines: a miss fills from the fetched word to the
 // line's end (psx-spx "Memory Map", i-Cache), so the loop's first line and the subroutine's
 // line are held only in part, and their hits are as free as on whole lines (native code must

@@ -91,6 +91,7 @@ void HleBios::return_from_exception() {
   if (dispatching_) callbacks_.clear();
   dispatching_ = false;
   cpu_.set_pc(saved_epc_);
+  cpu_.note_exception_return();
 }
 
 // Walks the chains from where it stopped; returns whenever a program function has been called.

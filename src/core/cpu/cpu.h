@@ -92,6 +92,9 @@ class CpuT {
   // nullptr run() interprets. Either way the machine state evolves identically.
   void set_recompiler(RecompilerT<BusT>* r) { recompiler_ = r; }
   bool recompiler_enabled() const { return recompiler_ != nullptr; }
+  // The HLE kernel's ReturnFromException has just set the pc (as RFE in a jump's delay slot
+  // does for a BIOS in ROM): see resume_pc_.
+  void note_exception_return() { resume_pc_ = pc_; }
 
  private:
   friend class IdleSkip;
@@ -229,6 +232,14 @@ class CpuT {
   IdleSkip* idle_skip_ = nullptr;
   RecompilerT<BusT>* recompiler_ = nullptr;
   u32 loop_head_ = kNoLoopHead;
+  // Where the CPU last took up a program in the middle of its flow: where run() starts (the
+  // deadline stopped the last run() wherever it fell) or where a return from an exception went,
+  // then each instruction after it up to the end of a branch's delay slot (kNoResume after that).
+  // The recompiler interprets these where they lie inside a compiled block instead of compiling
+  // a block from each such point. A host-side hint like the two above, not saved: blocks and the
+  // interpreter compute the same.
+  static constexpr u32 kNoResume = 1;  // never an aligned pc
+  u32 resume_pc_ = kNoResume;
 };
 
 using Cpu = CpuT<Bus>;

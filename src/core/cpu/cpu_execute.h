@@ -236,8 +236,12 @@ void CpuT<BusT>::execute_cop0(u32 instr) {
       break;
     }
     case 0x10:  // RFE (funct 0x10): pop the KU/IE stack
-      if (funct(instr) == 0x10) cop0_.sr = (cop0_.sr & ~0xFu) | ((cop0_.sr >> 2) & 0xF);
-      else exception(Exception::Reserved);
+      if (funct(instr) == 0x10) {
+        cop0_.sr = (cop0_.sr & ~0xFu) | ((cop0_.sr >> 2) & 0xF);
+        resume_pc_ = pc_;  // in a JR's delay slot: where the JR goes
+      } else {
+        exception(Exception::Reserved);
+      }
       break;
     default: exception(Exception::Reserved); break;
   }

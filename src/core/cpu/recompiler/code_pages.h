@@ -48,6 +48,11 @@ class CodePages {
       code_[off >> kPageBits] |= u64{1} << ((off >> 2) & 63);
     }
   }
+  // Whether the word at vaddr (as page_of() maps it) lies in a compiled block.
+  bool compiled(u32 vaddr) const {
+    const u32 page = page_of(vaddr);
+    return page != kNoPage && (code_[page] >> ((ram_offset(vaddr) >> 2) & 63)) & 1;
+  }
   // A write at RAM offset `off` (0 to 2 MiB - 1; every write stays within one word).
   void on_ram_write(u32 off) {
     u64& bits = code_[off >> kPageBits];

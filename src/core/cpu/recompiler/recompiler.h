@@ -87,6 +87,7 @@ class RecompilerT {
 
  private:
   BlockEmitter::BlockFn compile(Cpu& cpu, u32 pc);
+  void step_resumed(Cpu& cpu);
   // The console's bus keeps i-cache lines stale where blocks were dropped (ICache::kStale); other
   // buses have no i-cache and no native code.
   bool memory_holds(u32 vaddr, u32 word) const {
@@ -128,6 +129,7 @@ class RecompilerT {
 template <class BusT>
 void RecompilerT<BusT>::run(Cpu& cpu) {
   cpu.stop_ = false;
+  cpu.resume_pc_ = cpu.pc_;
   while (!cpu.stop_ && cpu.sched_.now() < cpu.sched_.next_deadline()) {
     if constexpr (std::is_same_v<BusT, Bus>) {  // as CpuT::run()
       if (cpu.at_loop_head()) {
@@ -142,10 +144,26 @@ void RecompilerT<BusT>::run(Cpu& cpu) {
       ++stats_.invalidated;
     }
     BlockEmitter::BlockFn block = cache_.find(cpu.pc_);
+    if (!block && cpu.pc_ == cpu.resume_pc_ && pages_.compiled(cpu.pc_)) {
+      step_resumed(cpu);
+      continue;
+    }
     if (!block) block = compile(cpu, cpu.pc_);
     if (block) block();
     else cpu.step();
   }
+}
+
+// The CPU takes up the program inside a compiled block (Cpu::resume_pc_): the deadline stops a
+// block at any instruction, and an interrupt returns to wherever it was taken, so compiling a
+// block from there would, over a long run, compile a block from nearly every instruction of the
+// program's busy code. Those instructions are interpreted instead, one a pass, until a branch's
+// delay slot has run; its target (or its fall-through) mostly starts a block, or else is worth
+// compiling.
+template <class BusT>
+void RecompilerT<BusT>::step_resumed(Cpu& cpu) {
+  cpu.step();
+  cpu.resume_pc_ = cpu.in_delay_slot_ ? Cpu::kNoResume : cpu.pc_;
 }
 
 template <class BusT>

@@ -346,10 +346,10 @@ TEST(RecompilerCode, NoBlockGoesOnPastABranchAlwaysTaken) {
 // The deadline stops a block wherever it falls and an interrupt returns to wherever it was
 // taken; the CPU takes the program up there, inside the loop's compiled block, and runs to the
 // loop's branch as the interpreter does rather than compiling a block from that point. A loop of
-// 41 instructions (37 cycles of hits and 4 of fills a pass) runs for 12 frames, whose ends fall
-// at different points of it, so a block from each point would make more than the loop's block
-// (and the handler's). The interrupt handler acknowledges VBlank, counts it in s1 and returns to
-// EPC.
+// 42 instructions runs for 12 frames; the events that stop it (frame ends, the SPU's samples and
+// the others the scheduler books) fall at many points of it, so a block from each point would
+// make many more than the loop's one block (and the handler's). The interrupt handler
+// acknowledges VBlank, counts it in s1 and returns to EPC.
 std::vector<u32> resume_loop() {
   std::vector<u32> code(40, itype(0x09, kT0, kT0, 1));          // addiu t0, t0, 1
   code.push_back(j(0x80010000));

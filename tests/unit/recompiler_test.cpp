@@ -390,6 +390,42 @@ TEST(RecompilerCode, ReturningFromAnInterruptInsideABlockCompilesNoBlockThere) {
   EXPECT_EQ(c.recompiler_stats().compiled, 2u);  // the loop and the handler
 }
 
+// The same loop booted as an EXE under the HLE kernel, with timer 0 raising IRQ4 every 3001h
+// cycles (mode 58h: reset and IRQ at the target, repeatedly; psx-spx "Timers"): the kernel's root
+// counter handler acknowledges it and its ReturnFromException goes back into the loop's block.
+TEST(RecompilerCode, HleReturnFromExceptionInsideABlockCompilesNoBlockThere) {
+  const u32 base = 0x80010000, kT2 = 10;
+  const auto li = [](u32 r, u32 v) { return itype(0x09, 0, r, v); };
+  const auto sw = [](u32 r, u32 offset) { return itype(0x2B, kT2, r, offset); };  // sw r, offset(t2)
+  std::vector<u32> code = {itype(0x0F, 0, kT2, 0x1F80),                  // lui t2, 1F80h
+                           li(kT0, 0x3001), sw(kT0, 0x1108),             // timer 0 target
+                           li(kT0, 0x58), sw(kT0, 0x1104),               // timer 0 mode
+                           li(kT0, 0x10), sw(kT0, 0x1074),               // I_MASK: IRQ4
+                           li(kT0, 0x0401), 0x40806000 | kT0 << 16};     // mtc0 t0, sr (IEc, IM2)
+  const u32 loop = base + 4 * u32(code.size());
+  code.insert(code.end(), 40, itype(0x09, kT1, kT1, 1));  // addiu t1, t1, 1
+  code.push_back(j(loop));
+  code.push_back(kNop);
+  const u32 end = base + 4 * u32(code.size());
+  std::vector<psx::u8> exe(0x800 + 0x800, 0);
+  std::copy_n("PS-X EXE", 8, exe.begin());
+  for (const auto& [at, v] : {std::pair<u32, u32>{0x10, base}, {0x18, base}, {0x1C, 0x800}, {0x30, 0x801FFF00}})
+    psx::store_le32(&exe[at], v);
+  for (u32 i = 0; i < code.size(); ++i) psx::store_le32(&exe[0x800 + 4 * i], code[i]);
+  Console ref;
+  ref.boot_exe_image(exe, "timer_loop.exe");
+  ref.run_frames(12);
+  Console c;
+  c.set_cpu_mode(Console::CpuMode::Recompiler);
+  c.boot_exe_image(exe, "timer_loop.exe");
+  c.run_frames(12);
+  EXPECT_TRUE(state_of(ref) == state_of(c)) << "state differs under the recompiler";
+  EXPECT_GT(c.cpu().reg(kT1), 0u);
+  const u32 epc = c.cpu().cop0().epc;  // the last interrupt was taken in the loop
+  EXPECT_TRUE(epc >= loop && epc < end) << std::hex << epc;
+  EXPECT_EQ(c.recompiler_stats().compiled, 3u);  // the program's entry, its loop, the vector at 80000080h
+}
+
 // Cached code entered in the middle of i-cache lines: a miss fills from the fetched word to the
 // line's end (psx-spx "Memory Map", i-Cache), so the loop's first line and the subroutine's
 // line are held only in part, and their hits are as free as on whole lines (native code must

@@ -9,6 +9,8 @@
 
 namespace psx::spu {
 
+// The SPU's sound RAM, which holds the blocks; block addresses wrap within it.
+constexpr u32 kSoundRamBytes = 512 * 1024;
 constexpr u32 kAdpcmBlockBytes = 16;
 constexpr u32 kAdpcmBlockSamples = 28;
 

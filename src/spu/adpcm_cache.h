@@ -19,7 +19,6 @@ class AdpcmBlockCache {
     std::array<s16, kAdpcmBlockSamples> samples{};
     AdpcmHistory history;  // after the block
   };
-  static constexpr u32 kSoundRamBytes = 512 * 1024;
   // decode_adpcm_block(ram + address, history, ...) as it would decode: the samples and the
   // history after. `address`: the block's byte address in the 512 KiB of sound RAM (a multiple
   // of 8; a block in the last 8 bytes goes on at the start), which picks the entry: a sound's

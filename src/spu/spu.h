@@ -29,7 +29,7 @@ class Spu final : public IoDevice, public DmaPort {
  public:
   static constexpr u32 kBase = 0x1F801C00;
   static constexpr u32 kSize = 0x400;
-  static constexpr u32 kRamSize = 512 * 1024;
+  static constexpr u32 kRamSize = spu::kSoundRamBytes;
   static constexpr u32 kNumVoices = 24;
   static constexpr u32 kSampleRate = 44100;
   static constexpr Cycles kCyclesPerSample = 768;  // 33.8688 MHz / 44.1 kHz

@@ -119,10 +119,10 @@ TEST(SpuAdpcm, BlockCacheTellsKeysInOneEntryApart) {
 TEST(SpuAdpcm, BlockInTheLastEightBytesGoesOnAtTheStart) {
   // Sound RAM's last 8 bytes hold the header and 6 data bytes; the block's other 8 data bytes
   // are RAM's first 8 (the address wraps at 512 KiB).
-  std::vector<u8> ram(AdpcmBlockCache::kSoundRamBytes);
+  std::vector<u8> ram(kSoundRamBytes);
   std::mt19937 rng(3);
   for (u8& byte : ram) byte = static_cast<u8>(rng());
-  const u32 last = AdpcmBlockCache::kSoundRamBytes - 8;
+  const u32 last = kSoundRamBytes - 8;
   std::vector<u8> b(ram.begin() + last, ram.end());
   b.insert(b.end(), ram.begin(), ram.begin() + 8);
   AdpcmBlockCache cache;

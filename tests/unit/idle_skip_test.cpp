@@ -7,6 +7,7 @@
 // Tumble's disc, and test ROMs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <string>
@@ -97,6 +98,28 @@ TEST(IdleSkip, LoopLeftEveryFrameIsExaminedLessOften) {
   EXPECT_GE(on.s1, 11u);
   EXPECT_GT(on.stats.unexamined, 0u);
   EXPECT_GT(on.stats.skips, on.s1);
+}
+
+// Two loops that can never qualify (each stores to I_MASK) take turns, 100 iterations each,
+// their heads 4 KiB apart (0x80010008, 0x80011008): s1 counts the rounds. Each head backs off
+// on its own: examined at its 1st, 3rd, 7th, 15th... visit, then once in every 2^12 (IdleSkip::
+// kMaxBackoff is 12), so over its 99 visits a round (the first iteration is entered from above)
+// it is examined at most 13 + 99 * rounds / 4096 times. Sharing a backoff entry, as in a
+// 1024-entry table, each would reset the other's every round and be examined 6 times a round
+// (visits 1, 3, 7, 15, 31 and 63 of 99); with at most 2^8 visits between examinations, 99 *
+// rounds / 256 times.
+TEST(IdleSkip, LoopsFourKibApartBackOffApart) {
+  std::vector<u32> code(1024 + 8, kNop);
+  const std::vector<u32> a = {lui(kT0, 0x1F80), addiu(kT1, 0, 100), sw(0, 0x1074, kT0), addiu(kT1, kT1, -1),
+                              bgtz(kT1, -3), kNop, j(0x80011004), kNop};
+  const std::vector<u32> b = {addiu(kT1, 0, 100), sw(0, 0x1074, kT0), addiu(kT1, kT1, -1), bgtz(kT1, -3), kNop,
+                              addiu(kS1, kS1, 1), j(0x80010004), kNop};
+  std::copy(a.begin(), a.end(), code.begin());
+  std::copy(b.begin(), b.end(), code.begin() + 1025);
+  const Outcome on = compare(code);
+  EXPECT_EQ(on.stats.skips, 0u);
+  EXPECT_GT(on.s1, 1000u);
+  EXPECT_LE(on.stats.examinations, 2 * (13 + 99 * psx::u64{on.s1} / 4096));
 }
 
 // After the event that ends a skip (the SPU's sample event, every 768 cycles when it steps every

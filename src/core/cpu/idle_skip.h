@@ -82,11 +82,12 @@ class IdleSkip {
   struct BackoffCells {
     int last_head, table;
   };
-  // 1024 entries (16 KiB) cover 4 KiB of code without two heads sharing one: with 64, loop heads
-  // 256 bytes apart took turns resetting each other's entry, so loops that can never qualify
-  // (a GTE call in their body, say) were examined at every visit (a third of Tumble's
-  // examinations, and 2.6% of its host instructions).
-  static constexpr u32 kBackoffEntries = 1024, kBackoffBytes = 16, kBackoffVisits = 4;  // visits' offset
+  // 4096 entries (64 KiB) cover 16 KiB of code without two heads sharing one. Heads that share
+  // an entry take turns resetting it, so loops that can never qualify (a GTE call in their body,
+  // say) are examined at nearly every visit: with 64 entries that was a third of Tumble's
+  // examinations (2.6% of its host instructions); with 1024, heads 4 KiB apart in its 18 KiB of
+  // code still made 43% of them (0.6%).
+  static constexpr u32 kBackoffEntries = 4096, kBackoffBytes = 16, kBackoffVisits = 4;  // visits' offset
   static BackoffCells backoff_cells();
 
  private:
@@ -104,8 +105,12 @@ class IdleSkip {
 
   // A loop that could not be skipped (it stores other than to fixed words, reads a timer, exits,
   // or an event is due within its iteration) is examined again only after 2^failures - 1 more
-  // visits to its head, so loops that never qualify cost little.
-  static constexpr u32 kMaxBackoff = 8;
+  // visits to its head, so loops that never qualify cost little. An examination records an
+  // iteration step by step (about 5,000 host instructions); with at most 4095 visits between two
+  // (255 before) and the larger table, Tumble's examinations fell from 30 a move to 1.2, mostly
+  // of its HUD's text loops. A wait loop that qualifies again after 12 refusals in a row is
+  // interpreted for at most 4095 more iterations before it is skipped.
+  static constexpr u32 kMaxBackoff = 12;
   // `leaving` counts the visits since an examination last succeeded here where a loop proven
   // here refused repeat() (at_loop_head()).
   struct Backoff {

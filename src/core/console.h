@@ -92,6 +92,8 @@ class Console : private CpuHooks {
   CpuMode cpu_mode() const { return cpu_.recompiler_enabled() ? CpuMode::Recompiler : CpuMode::Interpreter; }
   const Recompiler::Stats& recompiler_stats() const { return recompiler_.stats(); }
   size_t recompiler_code_bytes() const { return recompiler_.code_bytes(); }
+  // The compiled blocks' direct jumps to blocks of known pcs, linked or waiting (block_links.h).
+  size_t recompiler_link_sites() const { return recompiler_.link_sites(); }
   // Names the recompiler's blocks as it compiles them, in perf's map format (RecompilerT::
   // set_code_map(); null: nowhere; attached after code was compiled, it has that code compiled
   // again). The stream must outlive the console or the next call.

@@ -572,6 +572,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
   g.loop_head_entry = nullptr;
   g.split_cond.reset();
   g.jump_dest.reset();
+  g.links.clear();
   const bool had_routines = g.fill_routines[0] != nullptr;
   g.fill_routines_once();
   const size_t routines_end = g.getSize();
@@ -647,6 +648,8 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     last_.routine_bytes = routines_end - size_t(g.fill_routines[0] - g.getCode());
   }
   last_.block_bytes = g.getSize() - start;
+  for (const Impl::LinkAt& l : g.links)
+    last_.links.push_back({const_cast<u8*>(g.getCode()) + l.rel32, l.target, l.entry});
   return entry;
 }
 

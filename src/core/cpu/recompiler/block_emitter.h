@@ -11,7 +11,9 @@
 #include <cstddef>
 #include <memory>
 #include <span>
+#include <vector>
 
+#include "core/cpu/recompiler/block_links.h"
 #include "core/types.h"
 
 namespace psx {
@@ -119,11 +121,13 @@ class BlockEmitter {
   size_t bytes_used() const;
   // What the last emit() that returned a block wrote: the block's code from its entry on (its
   // native runs, stubs and cold code, in one piece), and before that the fill routines where it
-  // emitted them first (routines null otherwise).
+  // emitted them first (routines null otherwise); and its link sites (block_links.h), each
+  // jumping to its next instruction until linked.
   struct Emitted {
     const void* routines = nullptr;
     size_t routine_bytes = 0;
     size_t block_bytes = 0;
+    std::vector<BlockLinks::Site> links;
   };
   const Emitted& last_emitted() const { return last_; }
 

@@ -92,9 +92,13 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
     jmp(block_entry + kCleanEntry, T_NEAR);
     L(other);
   }
-  // The recent table's entry for the pc (pc / 4 mod recent_count), of 16 bytes: {u32 pc; BlockFn
-  // fn at 8}.
+  // Where the pc is known now, a link site: a jump to that pc's block once it is compiled
+  // (block_links.h), until then to the lookup after it. Else, and until then, the recent table's
+  // entry for the pc (pc / 4 mod recent_count), of 16 bytes: {u32 pc; BlockFn fn at 8}.
   if (target) {
+    db(0xE9);  // jmp rel32
+    links.push_back({getSize(), *target, u32(clean ? kCleanEntry : kPrologueBytes)});
+    dd(0);
     const auto* cell = static_cast<const char*>(lay.recent_blocks) + ((*target >> 2) & (lay.recent_count - 1)) * 16;
     const auto d = from_context(cell + 8);  // the entry's both ends within reach of rbx
     if (d && from_context(cell)) {

@@ -62,6 +62,7 @@ class RecompilerT {
   CodePages& code_pages() { return pages_; }
   const Stats& stats() const { return stats_; }
   size_t blocks() const { return cache_.size(); }
+  size_t link_sites() const { return cache_.link_sites(); }
   // Bytes of the code buffer in use (what a console holds of it).
   size_t code_bytes() const { return emitter_ ? emitter_->bytes_used() : 0; }
   // Where compile() names the host code it writes, for profilers of the compiled code: a line per
@@ -207,7 +208,7 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
   if (code_map_) map_code(fn, pc);
   const u32 first = CodePages::page_of(pc), last = CodePages::page_of(steps_.back().pc);
   if (first != CodePages::kNoPage && last != CodePages::kNoPage) pages_.mark_compiled(pc, steps_.back().pc);
-  cache_.insert(pc, fn, first, last);
+  cache_.insert(pc, fn, first, last, emitter_->last_emitted().links);
   ++stats_.compiled;
   return fn;
 }

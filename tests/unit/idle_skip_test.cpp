@@ -109,11 +109,11 @@ TEST(IdleSkip, LoopLeftEveryFrameIsExaminedLessOften) {
 // (visits 1, 3, 7, 15, 31 and 63 of 99); with at most 2^8 visits between examinations, 99 *
 // rounds / 256 times.
 TEST(IdleSkip, LoopsFourKibApartBackOffApart) {
-  std::vector<u32> code(1024 + 8, kNop);
   const std::vector<u32> a = {lui(kT0, 0x1F80), addiu(kT1, 0, 100), sw(0, 0x1074, kT0), addiu(kT1, kT1, -1),
                               bgtz(kT1, -3), kNop, j(0x80011004), kNop};
   const std::vector<u32> b = {addiu(kT1, 0, 100), sw(0, 0x1074, kT0), addiu(kT1, kT1, -1), bgtz(kT1, -3), kNop,
                               addiu(kS1, kS1, 1), j(0x80010004), kNop};
+  std::vector<u32> code(1025 + b.size(), kNop);  // B from 0x80011004 (word 1025) on
   std::copy(a.begin(), a.end(), code.begin());
   std::copy(b.begin(), b.end(), code.begin() + 1025);
   const Outcome on = compare(code);

@@ -85,8 +85,9 @@ TEST(BlockLinks, DroppedBlocksSitesAreForgotten) {
   EXPECT_EQ(links.sites(), 0u);
 }
 
-// Blocks in three code pages (256 bytes each) go on to each other by J: A to B, B to C, C back
-// to A, and C rewrites B's first instruction (its immediate counts up) each round, so B's page is
+// Blocks in three code pages (256 bytes each) go on to each other: A to B, B to C, C back to A
+// for 200 rounds (B counts them in s1) and then to a loop of its own (which idle skipping jumps
+// over), and C rewrites B's first instruction (its immediate counts up) each round, so B's page is
 // dropped and compiled again every round, and A's site to it goes back to its lookup each time.
 // The recompiler must leave the machine as the interpreter does. A's and C's sites stay (B's is
 // forgotten whenever B is dropped, which may be where the run ends).
@@ -98,15 +99,20 @@ TEST(BlockLinks, RecompiledTargetIsLinkedAgain) {
   code[0x40] = itype(0x09, kS2, kS2, 1);  // B: addiu s2, s2, 1 (rewritten)
   code[0x41] = itype(0x09, kS1, kS1, 1);
   code[0x42] = j(base + 0x200);
+  const u32 kT2 = 10;
   const std::vector<u32> c = {itype(0x0F, 0, kT0, 0x8001), itype(0x23, kT0, kT1, 0x100), kNop,
-                              itype(0x09, kT1, kT1, 1), itype(0x2B, kT0, kT1, 0x100), j(base), kNop};
+                              itype(0x09, kT1, kT1, 1), itype(0x2B, kT0, kT1, 0x100),
+                              itype(0x0A, kS1, kT2, 200),    // slti t2, s1, 200
+                              itype(0x05, kT2, 0, u32(-135)),  // bne t2, zero, A (base)
+                              kNop, j(base + 0x220), kNop};  // then round itself at base + 220h
   std::copy(c.begin(), c.end(), code.begin() + 0x80);
   expect_same_code(code, base, 0, {}, 1);
   Console con;
   con.set_cpu_mode(Console::CpuMode::Recompiler);
   load_code(con, code, base, 0, {});
   con.run_frames(1);
-  EXPECT_GT(con.recompiler_stats().invalidated, 100u);
+  EXPECT_EQ(con.cpu().reg(kS1), 200u);
+  EXPECT_GE(con.recompiler_stats().invalidated, 200u);
   EXPECT_GE(con.recompiler_link_sites(), 2u);
 }
 

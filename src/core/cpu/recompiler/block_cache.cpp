@@ -6,7 +6,6 @@
 namespace psx {
 
 void BlockCache::insert(u32 pc, BlockFn fn, u32 first_page, u32 last_page, std::span<const BlockLinks::Site> sites) {
-  if (blocks_.count(pc)) erase(pc);
   blocks_[pc] = fn;
   links_.compiled(pc, reinterpret_cast<const void*>(fn));
   links_.add(pc, sites, [this](u32 target) {

@@ -7,6 +7,7 @@
 #include "core/cpu/recompiler/block_emitter.h"
 
 #include <algorithm>
+#include <utility>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -648,8 +649,7 @@ BlockEmitter::BlockFn BlockEmitter::emit(const Layout& layout, std::span<const S
     last_.routine_bytes = routines_end - size_t(g.fill_routines[0] - g.getCode());
   }
   last_.block_bytes = g.getSize() - start;
-  for (const Impl::LinkAt& l : g.links)
-    last_.links.push_back({const_cast<u8*>(g.getCode()) + l.rel32, l.target, l.entry});
+  last_.links = std::move(g.links);
   return entry;
 }
 

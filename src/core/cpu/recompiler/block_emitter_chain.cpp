@@ -97,7 +97,7 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   // entry for the pc (pc / 4 mod recent_count), of 16 bytes: {u32 pc; BlockFn fn at 8}.
   if (target) {
     db(0xE9);  // jmp rel32
-    links.push_back({getSize(), *target, u32(clean ? kCleanEntry : kPrologueBytes)});
+    links.push_back({const_cast<u8*>(getCurr()), *target, u32(clean ? kCleanEntry : kPrologueBytes)});
     dd(0);
     const auto* cell = static_cast<const char*>(lay.recent_blocks) + ((*target >> 2) & (lay.recent_count - 1)) * 16;
     const auto d = from_context(cell + 8);  // the entry's both ends within reach of rbx

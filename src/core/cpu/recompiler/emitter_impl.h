@@ -276,12 +276,8 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   bool ends_in_branch = false;  // the block's last instruction is a branch (without its delay slot)
   // The pc after the block's last instruction is aligned: it is no JR's or JALR's delay slot.
   bool aligned_end = true;
-  // The link sites chain() emitted in this block (block_links.h), by their offsets in the buffer.
-  struct LinkAt {
-    size_t rel32;
-    u32 target, entry;
-  };
-  std::vector<LinkAt> links;
+  // The link sites chain() emitted in this block (block_links.h).
+  std::vector<BlockLinks::Site> links;
   // A block's entries: fn (a call from the dispatcher), fn + kPrologueBytes (a chain() from a
   // block that cannot vouch for pc_checks() and state_checks()), fn + kCleanEntry (a clean
   // chain(), past both and past the entry's loop_head_check()).

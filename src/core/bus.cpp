@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 #include "core/irq.h"
 #include "core/memory_control.h"
@@ -189,12 +190,14 @@ bool Bus::write(u32 vaddr, u32 v, u32 width) {
   if (p < 0x00800000) {
     u32 off = p & (kRamSize - 1);
     if (code_pages_) code_pages_->on_ram_write(off);
+    written_.mark(off);
     if (watches_ && watches_->ram_block_watched(off)) watched_store(&ram_[off], off, v, width);
     else store_width(&ram_[off], v, width);
     return true;
   }
   if (p >= kScratchBase && p < kScratchBase + kScratchSize && vaddr < 0xA0000000) {
     if (!scratchpad_access(vaddr)) return true;
+    written_.mark(kRamSize + (p - kScratchBase));
     if (watches_) watched_store(scratchpad() + (p - kScratchBase), p, v, width);
     else store_width(scratchpad() + (p - kScratchBase), v, width);
     return true;
@@ -313,6 +316,7 @@ void Bus::dma_write_ram(u32 addr, const u32* words, u32 count) {
     const u32 start = (addr + i * 4) & (kRamSize - 4);
     const u32 run = std::min(count - i, (kRamSize - start) / 4);
     if (code_pages_) code_pages_->on_ram_range(start, run * 4);
+    written_.mark_range(start, run * 4);
     if (!watches_) {
       store_le32_words(&ram_[start], words + i, run);
       i += run;
@@ -334,12 +338,34 @@ void Bus::dma_read_ram(u32 addr, u32* words, u32 count) const {
   }
 }
 
+std::shared_ptr<const void> Bus::ram_token() {
+  if (ram_lent_ || !ram_token_ || written_.any()) {
+    ram_token_ = std::make_shared<const int>(0);  // stands for RAM's and the scratchpad's contents now
+    written_.clear();
+  }
+  return ram_token_;
+}
+
 void Bus::do_state(StateIO& s) {
   s.section("BUS ", 2);
   std::vector<std::pair<u32, u32>> compiled;
   if (s.loading() && code_pages_) compiled = code_pages_->compiled_words(ram_.data());
-  s.bytes(ram_.data(), kRamSize);
-  s.bytes(scratchpad(), kScratchSize);
+  // RAM and the scratchpad lie one after the other here and in the state. A snapshot of them as
+  // they still are but for the pages written since (ram_token()) needs only those copied back.
+  // expect_ram() speaks for this load only, whichever way it goes.
+  static_assert(WrittenPages::kBytes == kRamSize + kScratchSize);
+  if (!s.loading()) {
+    s.bytes(ram_.data(), WrittenPages::kBytes);
+  } else {
+    std::shared_ptr<const void> expected = std::exchange(expected_ram_, nullptr);
+    if (expected && expected == ram_token_ && !ram_lent_) {
+      written_.copy_back(ram_.data(), s.skip(WrittenPages::kBytes));
+    } else {
+      s.bytes(ram_.data(), WrittenPages::kBytes);
+      written_.clear();
+    }
+    ram_token_ = std::move(expected);
+  }
   s.pod(memctrl_);
   s.pod(ram_size_);
   s.pod(cache_control_);

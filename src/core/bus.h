@@ -19,6 +19,7 @@
 #include "core/scheduler.h"
 #include "core/state.h"
 #include "core/types.h"
+#include "core/written_pages.h"
 
 namespace psx {
 
@@ -30,6 +31,9 @@ class Bus {
   static constexpr u32 kScratchSize = 1024;
   // The recompiler's pages cover this RAM and the scratchpad after it (scratchpad()).
   static_assert(kRamSize == CodePages::kRamSize && kScratchSize == CodePages::kScratchBytes);
+  // So are the written pages', in pages of the same size (native stores mark both from one index).
+  static_assert(kRamSize == WrittenPages::kRamSize && kScratchSize == WrittenPages::kScratchBytes &&
+                CodePages::kPageBits == WrittenPages::kPageBits);
   static constexpr u32 kBiosSize = 512 * 1024;
 
   Bus(Scheduler& sched, InterruptController& irq);
@@ -153,6 +157,7 @@ class Bus {
   // The scratchpad's 1 KiB lie right after RAM's 2 MiB (the recompiler's native loads and stores
   // reach both from one base: offset kRamSize + n is scratchpad byte n).
   u8* scratchpad() { return ram_.data() + kRamSize; }
+  const u8* scratchpad() const { return ram_.data() + kRamSize; }
   u8* bios() { return bios_.data(); }
 
   // Debug ports in expansion region 2 (DESIGN.md "Debug ports").
@@ -179,11 +184,27 @@ class Bus {
     if (pages) pages->watch(&icache_);
   }
   // A write to `bytes` bytes of RAM from offset `off` made outside the CPU and DMA (a host poke,
-  // the HLE BIOS, an EXE loaded), reported to the code pages as theirs are.
+  // the HLE BIOS, an EXE loaded), reported to the code pages and the written pages as theirs are.
+  // The range may wrap past RAM's end.
   void host_wrote_ram(u32 off, u32 bytes) {
+    if (u64{off} + bytes > kRamSize) written_.mark_all();
+    else written_.mark_range(off, bytes);
     if (!code_pages_ || bytes == 0) return;
     for (u32 w = off & ~3u; w != ((off + bytes + 3) & ~3u); w += 4) code_pages_->on_ram_write(w & (kRamSize - 4));
   }
+  // A host write to `bytes` bytes of the scratchpad from byte `off`.
+  void host_wrote_scratchpad(u32 off, u32 bytes) { written_.mark_range(kRamSize + off, bytes); }
+  // A token for RAM and the scratchpad as they are now, which a snapshot keeps
+  // (Console::Snapshot): they keep it while nothing writes them, and restoring a snapshot whose
+  // token they still hold copies back only the pages written since (written_pages.h).
+  std::shared_ptr<const void> ram_token();
+  // The next do_state() load restores a snapshot taken with `token` (null: any other state).
+  void expect_ram(std::shared_ptr<const void> token) { expected_ram_ = std::move(token); }
+  // RAM or the scratchpad was lent out for writing in place (Console::ram()), where no write is
+  // reported: from now on restores copy them whole.
+  void lend_ram() { ram_lent_ = true; }
+  // The written pages' bytes, which the recompiler's native stores set.
+  u8* written_pages() { return written_.data(); }
   // After the recompiler has dropped the blocks whose code was written: each i-cache line stale
   // exactly where its words differ from memory (ICache::kStale).
   void recheck_icache_lines() {
@@ -235,7 +256,9 @@ class Bus {
   // D-cache mode (psx-spx "Memory Control", BCC RAM=0 DS=1): every load from a cached segment
   // misses and copies the whole word holding the loaded byte into scratchpad slot (addr>>2)&FFh.
   void dcache_fill(u32 vaddr, u32 word) {
-    if (vaddr < 0xA0000000) store_le32(scratchpad() + (vaddr & 0x3FC), word);
+    if (vaddr >= 0xA0000000) return;
+    store_le32(scratchpad() + (vaddr & 0x3FC), word);
+    written_.mark(kRamSize + (vaddr & 0x3FC));
   }
   // Device events fall due between instructions; an I/O access in the middle of an instruction
   // (after its wait states) first runs the ones already due, so the device answers as of "now".
@@ -278,6 +301,11 @@ class Bus {
   MemoryWatches* watches_ = nullptr;
   const u64* frame_ = nullptr;
   CodePages* code_pages_ = nullptr;
+  // ram_token(): the token RAM and the scratchpad hold, with the pages written since they got it;
+  // expect_ram()'s; lend_ram().
+  WrittenPages written_;
+  std::shared_ptr<const void> ram_token_, expected_ram_;
+  bool ram_lent_ = false;
 };
 
 }  // namespace psx

@@ -116,9 +116,19 @@ class Console : private CpuHooks {
   void write16(u32 addr, u16 v);
   void write32(u32 addr, u32 v);
   // RAM in place. Writing code through it is not seen by the recompiler, whose blocks compiled
-  // from the old code may then keep running (write8() and the others are seen).
-  std::span<u8> ram() { return {bus_.ram(), Bus::kRamSize}; }
-  std::span<u8> scratchpad() { return {bus_.scratchpad(), Bus::kScratchSize}; }
+  // from the old code may then keep running (write8() and the others are seen). Nor are the
+  // writes seen by snapshots, so once RAM or the scratchpad is lent for writing, every restore()
+  // copies them back whole (Bus::lend_ram()); a reader takes the const views.
+  std::span<u8> ram() {
+    bus_.lend_ram();
+    return {bus_.ram(), Bus::kRamSize};
+  }
+  std::span<u8> scratchpad() {
+    bus_.lend_ram();
+    return {bus_.scratchpad(), Bus::kScratchSize};
+  }
+  std::span<const u8> ram() const { return {bus_.ram(), Bus::kRamSize}; }
+  std::span<const u8> scratchpad() const { return {bus_.scratchpad(), Bus::kScratchSize}; }
   // Writes the 2 MiB of RAM to a file (atomically).
   void dump_ram(const std::string& path) const;
 
@@ -153,6 +163,7 @@ class Console : private CpuHooks {
     u64 bios_hash_ = 0;
     u64 program_hash_ = 0;
     std::shared_ptr<const void> vram_token_;  // Gpu::vram_token() when it was taken
+    std::shared_ptr<const void> ram_token_;   // Bus::ram_token() when it was taken
   };
   void snapshot(Snapshot& out);
   void restore(const Snapshot& snap);

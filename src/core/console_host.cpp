@@ -38,10 +38,12 @@ void Console::write32(u32 addr, u32 v) {
   host_wrote(addr, 4);
 }
 
-// A host write to RAM reaches the recompiler's code pages as a CPU store would.
+// A host write to RAM reaches the recompiler's code pages as a CPU store would, and one to RAM
+// or the scratchpad the written pages (written_pages.h).
 void Console::host_wrote(u32 addr, u32 width) {
   const u32 p = Bus::physical(addr);
   if (p < 0x00800000) bus_.host_wrote_ram(p & (Bus::kRamSize - 1), width);
+  else bus_.host_wrote_scratchpad(p - MemoryWatches::kScratchBase, width);
 }
 
 void Console::dump_ram(const std::string& path) const {
@@ -122,6 +124,7 @@ void Console::snapshot(Snapshot& out) {
   out.bios_hash_ = bios_hash_;
   out.program_hash_ = program_hash_;
   out.vram_token_ = gpu_.vram_token();
+  out.ram_token_ = bus_.ram_token();
 }
 
 // The payload was written by do_state of a console with this BIOS and program, so it reads back
@@ -132,11 +135,13 @@ void Console::restore(const Snapshot& snap) {
     throw StateError("snapshot: taken with a different BIOS, disc or EXE than the one loaded");
   StateIO r(snap.payload_.data(), snap.payload_.size());
   gpu_.expect_vram(snap.vram_token_);
+  bus_.expect_ram(snap.ram_token_);
   try {
     do_state(r);
     r.finish();
   } catch (...) {
-    gpu_.expect_vram(nullptr);  // no later load may take it for its own
+    gpu_.expect_vram(nullptr);  // no later load may take them for its own
+    bus_.expect_ram(nullptr);
     throw;
   }
   drop_stale_audio();

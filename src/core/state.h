@@ -55,8 +55,9 @@ class StateIO {
     }
     std::memcpy(p, take(n), n);
   }
-  // Reading: passes over n bytes that the caller knows it holds already (checked as bytes()).
-  void skip(size_t n) { take(n); }
+  // Reading: passes over n bytes that the caller knows it holds already (checked as bytes()),
+  // and gives where they lie in the state, for a caller that copies part of them.
+  const u8* skip(size_t n) { return take(n); }
 
   // Any trivially copyable value: integers, enums, plain structs, fixed arrays of those.
   template <typename T>

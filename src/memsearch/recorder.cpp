@@ -12,7 +12,7 @@ using psx::u8;
 
 namespace {
 
-void copy_memory(psx::Console& console, std::vector<u8>& out) {
+void copy_memory(const psx::Console& console, std::vector<u8>& out) {
   out.resize(kSnapshotBytes);
   std::memcpy(out.data(), console.ram().data(), kRamBytes);
   std::memcpy(out.data() + kRamBytes, console.scratchpad().data(), kScratchBytes);

@@ -189,7 +189,7 @@ void Env::encode() {
       episode(episode_buf_.data());
       obs_.push_back({&spaces_[0], episode_buf_.data()});
       break;
-    case ObsKind::Ram: obs_.push_back({&spaces_[0], console_->ram().data()}); break;
+    case ObsKind::Ram: obs_.push_back({&spaces_[0], std::as_const(*console_).ram().data()}); break;
     case ObsKind::Rumble: {
       auto r = console_->rumble(1);
       rumble_buf_ = {r.small, r.large};

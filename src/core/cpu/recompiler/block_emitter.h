@@ -86,6 +86,7 @@ class BlockEmitter {
     const u64* code_bits;     // CodePages::bits(): which RAM words hold compiled code
     void* code_pages;         // the CodePages, and what a store to such a word calls
     void (*code_write)(void* code_pages, u32 ram_offset);
+    u8* written_pages;  // Bus::written_pages(): a byte per page of ram, set by every store
     // The GTE and its register moves (Gte's member functions; the commands compile to
     // Gte::command_function()'s).
     void* gte;

@@ -305,8 +305,9 @@ void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
   mov(cpu32(lay.load_val), r10d);
 }
 
-// CpuT::store() past its checks: Bus::write() to RAM, with CodePages::on_ram_write() called
-// when the word holds compiled code, or to the scratchpad. Stores take no time (the write queue).
+// CpuT::store() past its checks: Bus::write() to RAM or the scratchpad, its page marked written
+// (WrittenPages::mark()), with CodePages::on_ram_write() called when the word holds compiled
+// code. Stores take no time (the write queue).
 void Impl::store(NativeOp op, u32 i) {
   const u32 width = width_of(op);
   Label& done = cold_label();
@@ -327,10 +328,17 @@ void Impl::store(NativeOp op, u32 i) {
   else if (width == 4) mov(dword[at], eax);
   else if (width == 2) mov(word[at], ax);
   else mov(byte[at], al);
-  // The page's word bits: mostly none (a page of data; the scratchpad's "pages" past RAM's never
-  // hold any), so the word's own bit is tested off the main path.
+  // The page is written (written_pages.h: the same pages as the code pages').
   mov(edx, r13d);
   shr(edx, CodePages::kPageBits);
+  if (const auto d = from_context(lay.written_pages)) {
+    mov(byte[rbx + rdx + *d], 1);
+  } else {
+    mov(rsi, reinterpret_cast<u64>(lay.written_pages));
+    mov(byte[rsi + rdx], 1);
+  }
+  // The page's word bits: mostly none (a page of data; the scratchpad's "pages" past RAM's never
+  // hold any), so the word's own bit is tested off the main path.
   Label& page_code = cold_label();
   if (const auto d = from_context(lay.code_bits);
       d && from_context(lay.code_bits + CodePages::kPages + CodePages::kSparePages)) {

@@ -302,6 +302,7 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
     l.code_bits = pages_.bits();
     l.code_pages = &pages_;
     l.code_write = [](void* pages, u32 off) { static_cast<CodePages*>(pages)->on_ram_write(off); };
+    l.written_pages = c.bus_.written_pages();
   }
   return l;
 }

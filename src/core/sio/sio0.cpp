@@ -80,12 +80,12 @@ void Sio0::io_write(u32 offset, u32 value, u32 width) {
     case 0xC:
       if (width == 4) {
         baud_ = static_cast<u16>(value >> 16);
-        baud_reload_at_ = sched_.now();
+        baud_timer_.reload(sched_.now());
       }
       break;
     case 0xE:
       baud_ = static_cast<u16>(value);
-      baud_reload_at_ = sched_.now();
+      baud_timer_.reload(sched_.now());
       break;
     default: break;  // JOY_STAT is read-only
   }
@@ -98,7 +98,7 @@ u32 Sio0::read_stat() const {
   if (!tx_buffer_full_ && !transferring_) v |= 1u << 2;  // TX ready 2: all sent
   if (ack_low_) v |= 1u << 7;
   if (irq_flag_) v |= 1u << 9;
-  return v | sio_baud_timer_bits(baud_, mode_, sched_.now() - baud_reload_at_);
+  return v | baud_timer_.stat_bits(baud_, mode_, sched_.now());
 }
 
 u8 Sio0::pop_rx() {
@@ -241,7 +241,7 @@ void Sio0::do_state(StateIO& s) {
   s.pod(mode_);
   s.pod(ctrl_);
   s.pod(baud_);
-  s.pod(baud_reload_at_);
+  baud_timer_.do_state(s);
   s.pod(tx_buffer_);
   s.boolean(tx_buffer_full_);
   s.boolean(tx_latched_enable_);

@@ -91,7 +91,7 @@ class Sio0 final : public IoDevice {
   u16 mode_ = 0;
   u16 ctrl_ = 0;
   u16 baud_ = 0;
-  Cycles baud_reload_at_ = 0;  // when JOY_BAUD was last written (the timer counts from there)
+  BaudTimer baud_timer_;  // reloaded when JOY_BAUD is written
 
   // TX: one byte waiting in the TX register, one in the shift register.
   u8 tx_buffer_ = 0;

@@ -1,8 +1,6 @@
 // SIO1 register file with no cable attached.
 #include "core/sio/sio1.h"
 
-#include "core/sio/baud_timer.h"
-
 namespace psx {
 
 u32 Sio1::io_read(u32 offset, u32 width) {
@@ -12,7 +10,7 @@ u32 Sio1::io_read(u32 offset, u32 width) {
     case 0x4:
       // SIO_STAT: bit 0 TX FIFO not full, bit 2 TX idle; DSR (7), CTS (8) and RX (1) stay off.
       word = (tx_pending_ ? 0u : 1u) | 1u << 2;
-      word |= sio_baud_timer_bits(baud_, mode_, sched_.now() - baud_reload_at_);
+      word |= baud_timer_.stat_bits(baud_, mode_, sched_.now());
       break;
     case 0x8: word = mode_ | u32{ctrl_} << 16; break;
     case 0xC: word = misc_ | u32{baud_} << 16; break;
@@ -39,7 +37,7 @@ void Sio1::io_write(u32 offset, u32 value, u32 width) {
       case 0xC: misc_ = v; break;
       case 0xE:
         baud_ = v;
-        baud_reload_at_ = sched_.now();
+        baud_timer_.reload(sched_.now());
         break;
       default: break;  // SIO_STAT is read-only
     }
@@ -50,7 +48,8 @@ void Sio1::io_write(u32 offset, u32 value, u32 width) {
 
 void Sio1::do_state(StateIO& s) {
   s.section("SIO1", 1);
-  s.pod(mode_), s.pod(ctrl_), s.pod(misc_), s.pod(baud_), s.pod(baud_reload_at_);
+  s.pod(mode_), s.pod(ctrl_), s.pod(misc_), s.pod(baud_);
+  baud_timer_.do_state(s);
   s.boolean(tx_pending_);
   s.end_section("SIO1");
 }

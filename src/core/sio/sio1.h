@@ -6,6 +6,7 @@
 #pragma once
 #include "core/io_device.h"
 #include "core/scheduler.h"
+#include "core/sio/baud_timer.h"
 #include "core/state.h"
 #include "core/types.h"
 
@@ -30,7 +31,7 @@ class Sio1 final : public IoDevice {
 
   Scheduler& sched_;
   u16 mode_ = 0, ctrl_ = 0, misc_ = 0, baud_ = 0;
-  Cycles baud_reload_at_ = 0;
+  BaudTimer baud_timer_;  // reloaded when SIO_BAUD is written
   bool tx_pending_ = false;  // a byte waits for CTS, which never comes
 };
 

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "bench_util.h"
 #include "core/hash.h"
@@ -69,7 +70,7 @@ int main(int argc, char** argv) {
   measured_moves(run, moves);
   const double seconds = bench::seconds_since(t);
   const psx::IdleSkip::Stats& idle = run.env.console().idle_skip_stats();
-  const auto ram = run.env.console().ram();
+  const auto ram = std::as_const(run.env.console()).ram();
   std::printf("Tumble level 1, obs %s: %d moves after %d warm-up, %.3f s (%.1f moves/s)\n", c.obs.c_str(), moves,
               warmup, seconds, moves / seconds);
   std::printf("cycles per move %.1f, instructions per move %.1f, RAM hash %016llx\n",

@@ -254,7 +254,8 @@ void bind_console(py::module_& m) {
           },
           "The 2 MiB of main RAM as a writable uint8 view (no copy); writes are not reported to watches "
           "or to the recompiler, whose compiled blocks go on running the code they were compiled from "
-          "(write code with write_bytes).")
+          "(write code with write_bytes). Nor are they seen by snapshots, so once this view is taken every "
+          "restore copies RAM back whole instead of only the pages written.")
       .def("dump_ram", [](PyConsole& c, const std::string& path) { c.console.dump_ram(path); }, py::arg("path"),
            py::call_guard<R>())
       // Memory watches (the seed's listeners).

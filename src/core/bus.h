@@ -4,6 +4,7 @@
 // register. Every CPU and DMA access to memory goes through here.
 #pragma once
 #include <array>
+#include <bit>
 #include <functional>
 #include <set>
 #include <memory>
@@ -148,6 +149,15 @@ class Bus {
   void dma_read_ram(u32 addr, u32* words, u32 count) const;
   // One word, as dma_read_ram() reads it (a linked list's node header, once per node).
   u32 dma_read_word(u32 addr) const { return load_le32(&ram_[addr & (kRamSize - 4)]); }
+  // The `count` words dma_read_ram() would read from addr, in place: RAM itself where they do not
+  // wrap past its end and the host is little-endian like the console, else null (copy them).
+  // Valid until RAM is next written. Spares a GPU list node's copy before the GPU copies it again.
+  const u32* dma_ram_words(u32 addr, u32 count) const {
+    if constexpr (std::endian::native != std::endian::little) return nullptr;
+    const u32 start = addr & (kRamSize - 4);
+    if (u64{start} + u64{count} * 4 > kRamSize) return nullptr;
+    return reinterpret_cast<const u32*>(&ram_[start]);
+  }
 
   void load_bios(const std::vector<u8>& image);
   bool has_bios() const { return has_bios_; }

@@ -277,6 +277,12 @@ void Dma::finish(u32 ch) {
 }
 
 void Dma::to_device(u32 ch, u32 addr, u32 count, bool backward) {
+  // Forward, the device reads the words where they lie in RAM: no device writes RAM while it
+  // takes a block.
+  if (const u32* in_place = backward ? nullptr : bus_.dma_ram_words(addr, count)) {
+    if (ch < Pio && ports_[ch]) ports_[ch]->dma_write(in_place, count);
+    return;
+  }
   words_.resize(count);
   if (!backward) {
     bus_.dma_read_ram(addr, words_.data(), count);

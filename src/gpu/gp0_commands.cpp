@@ -52,29 +52,29 @@ void Gpu::gp0_write(u32 word) {
   fifo_[fifo_len_++] = word;
   if (fifo_len_ < fifo_needed_) return;
   fifo_len_ = 0;
-  gp0_execute();
+  gp0_execute(fifo_);
 }
 
-void Gpu::gp0_execute() {
-  const u32 c = fifo_[0] >> 24;
+void Gpu::gp0_execute(const u32* w) {
+  const u32 c = w[0] >> 24;
   switch (c >> 5) {
-    case 1: return gp0_polygon();
-    case 2: return gp0_line();
-    case 3: return gp0_rectangle();
-    case 4: return gp0_copy_rectangle();
-    case 5: return gp0_copy_to_vram();
-    case 6: return gp0_copy_from_vram();
+    case 1: return gp0_polygon(w);
+    case 2: return gp0_line(w);
+    case 3: return gp0_rectangle(w);
+    case 4: return gp0_copy_rectangle(w);
+    case 5: return gp0_copy_to_vram(w);
+    case 6: return gp0_copy_from_vram(w);
     default: break;
   }
   switch (c) {
-    case 0x02: return gp0_fill_rectangle();
+    case 0x02: return gp0_fill_rectangle(w);
     case 0x1F: return gp0_irq();
-    case 0xE1: return gp0_draw_mode(fifo_[0]);
-    case 0xE2: return gp0_texture_window(fifo_[0]);
-    case 0xE3: return gp0_draw_area_top_left(fifo_[0]);
-    case 0xE4: return gp0_draw_area_bottom_right(fifo_[0]);
-    case 0xE5: return gp0_draw_offset(fifo_[0]);
-    case 0xE6: return gp0_mask_bit(fifo_[0]);
+    case 0xE1: return gp0_draw_mode(w[0]);
+    case 0xE2: return gp0_texture_window(w[0]);
+    case 0xE3: return gp0_draw_area_top_left(w[0]);
+    case 0xE4: return gp0_draw_area_bottom_right(w[0]);
+    case 0xE5: return gp0_draw_offset(w[0]);
+    case 0xE6: return gp0_mask_bit(w[0]);
     // 00h NOP, 01h clear texture cache (no cache is modelled: texels are always read from
     // VRAM), 03h-1Eh and E0h/E7h-FFh: no effect.
     default: return;
@@ -90,18 +90,18 @@ void Gpu::set_position(gpu::Vertex& v, u32 xy) const {
 }
 
 // GP0(20)-(3F): bit 4 Gouraud, 3 quad, 2 textured, 1 semi-transparent, 0 raw texture.
-void Gpu::gp0_polygon() {
-  const u32 c = fifo_[0] >> 24;
+void Gpu::gp0_polygon(const u32* w) {
+  const u32 c = w[0] >> 24;
   const bool shaded = c & 0x10, textured = c & 0x04;
   const u32 corners = (c & 0x08) ? 4 : 3;
   gpu::Vertex v[4];
   u32 clut = 0, texpage = 0, i = 1;
   for (u32 k = 0; k < corners; ++k) {
-    u32 colour = (shaded && k > 0) ? fifo_[i++] : fifo_[0];
-    set_position(v[k], fifo_[i++]);
+    u32 colour = (shaded && k > 0) ? w[i++] : w[0];
+    set_position(v[k], w[i++]);
     set_colour(v[k], colour);
     if (!textured) continue;
-    u32 uv = fifo_[i++];
+    u32 uv = w[i++];
     v[k].u = static_cast<u8>(uv), v[k].v = static_cast<u8>(uv >> 8);
     if (k == 0) clut = uv >> 16;
     if (k == 1) texpage = uv >> 16;
@@ -125,19 +125,19 @@ void Gpu::gp0_polygon() {
 }
 
 // GP0(40)-(5F): bit 4 Gouraud, 3 polyline, 1 semi-transparent.
-void Gpu::gp0_line() {
-  const u32 c = fifo_[0] >> 24;
+void Gpu::gp0_line(const u32* w) {
+  const u32 c = w[0] >> 24;
   gpu::Line l;
   l.shaded = c & 0x10, l.semi = c & 0x02;
-  set_position(l.v[0], fifo_[1]);
-  set_colour(l.v[0], fifo_[0]);
-  set_position(l.v[1], fifo_[l.shaded ? 3 : 2]);
-  set_colour(l.v[1], fifo_[l.shaded ? 2 : 0]);
+  set_position(l.v[0], w[1]);
+  set_colour(l.v[0], w[0]);
+  set_position(l.v[1], w[l.shaded ? 3 : 2]);
+  set_colour(l.v[1], w[l.shaded ? 2 : 0]);
   draw_.line(l, draw_state());
   if (!(c & 0x08)) return;
   gp0_mode_ = Gp0Mode::Polyline;
   polyline_last_ = l.v[1];
-  polyline_colour_ = fifo_[0];
+  polyline_colour_ = w[0];
   polyline_shaded_ = l.shaded, polyline_semi_ = l.semi, polyline_have_colour_ = false;
 }
 
@@ -164,17 +164,17 @@ void Gpu::gp0_polyline_word(u32 word) {
 }
 
 // GP0(60)-(7F): bits 3-4 size (variable, 1x1, 8x8, 16x16), 2 textured, 1 semi, 0 raw.
-void Gpu::gp0_rectangle() {
-  const u32 c = fifo_[0] >> 24;
+void Gpu::gp0_rectangle(const u32* w) {
+  const u32 c = w[0] >> 24;
   gpu::Rectangle r;
   gpu::Vertex p;
-  set_position(p, fifo_[1]);
+  set_position(p, w[1]);
   r.x = p.x, r.y = p.y;
-  r.r = static_cast<u8>(fifo_[0]), r.g = static_cast<u8>(fifo_[0] >> 8), r.b = static_cast<u8>(fifo_[0] >> 16);
+  r.r = static_cast<u8>(w[0]), r.g = static_cast<u8>(w[0] >> 8), r.b = static_cast<u8>(w[0] >> 16);
   r.textured = c & 0x04, r.semi = c & 0x02, r.raw = c & 0x01;
   u32 i = 2;
   if (r.textured) {
-    u32 uv = fifo_[i++];
+    u32 uv = w[i++];
     r.u = static_cast<u8>(uv), r.v = static_cast<u8>(uv >> 8);
     r.clut_x = static_cast<u16>(((uv >> 16) & 0x3F) * 16);
     r.clut_y = static_cast<u16>((uv >> 22) & 0x1FF);
@@ -182,7 +182,7 @@ void Gpu::gp0_rectangle() {
   static constexpr u32 kSizes[4] = {0, 1, 8, 16};
   const u32 size = (c >> 3) & 3;
   if (size == 0) {
-    r.width = fifo_[i] & 0x3FF, r.height = (fifo_[i] >> 16) & 0x1FF;
+    r.width = w[i] & 0x3FF, r.height = (w[i] >> 16) & 0x1FF;
   } else {
     r.width = r.height = kSizes[size];
   }
@@ -190,29 +190,29 @@ void Gpu::gp0_rectangle() {
 }
 
 // GP0(02): X rounded down and width rounded up to 16 pixels; Y and height as given (9 bits).
-void Gpu::gp0_fill_rectangle() {
-  const u32 xy = fifo_[1], wh = fifo_[2];
+void Gpu::gp0_fill_rectangle(const u32* w) {
+  const u32 xy = w[1], wh = w[2];
   const u32 x = xy & 0x3F0, y = (xy >> 16) & 0x1FF;
   const u32 width = ((wh & 0x3FF) + 0xF) & ~0xFu, height = (wh >> 16) & 0x1FF;
-  draw_.fill(x, y, width, height, gpu::rgb24_to_15(fifo_[0]));
+  draw_.fill(x, y, width, height, gpu::rgb24_to_15(w[0]));
 }
 
-void Gpu::gp0_copy_rectangle() {
-  const u32 src = fifo_[1], dst = fifo_[2], wh = fifo_[3];
+void Gpu::gp0_copy_rectangle(const u32* w) {
+  const u32 src = w[1], dst = w[2], wh = w[3];
   gpu::MaskMode m{(mask_bits_ & 1) != 0, (mask_bits_ & 2) != 0};
   draw_.copy(src & 0x3FF, (src >> 16) & 0x1FF, dst & 0x3FF, (dst >> 16) & 0x1FF, transfer_width(wh),
                   transfer_height(wh), m);
 }
 
-void Gpu::gp0_copy_to_vram() {
-  upload_ = Transfer{fifo_[1] & 0x3FF, (fifo_[1] >> 16) & 0x1FF, transfer_width(fifo_[2]),
-                     transfer_height(fifo_[2]), 0, 0, true};
+void Gpu::gp0_copy_to_vram(const u32* w) {
+  upload_ = Transfer{w[1] & 0x3FF, (w[1] >> 16) & 0x1FF, transfer_width(w[2]),
+                     transfer_height(w[2]), 0, 0, true};
   gp0_mode_ = Gp0Mode::CpuToVram;
 }
 
-void Gpu::gp0_copy_from_vram() {
-  download_ = Transfer{fifo_[1] & 0x3FF, (fifo_[1] >> 16) & 0x1FF, transfer_width(fifo_[2]),
-                       transfer_height(fifo_[2]), 0, 0, true};
+void Gpu::gp0_copy_from_vram(const u32* w) {
+  download_ = Transfer{w[1] & 0x3FF, (w[1] >> 16) & 0x1FF, transfer_width(w[2]),
+                       transfer_height(w[2]), 0, 0, true};
 }
 
 // Pixels of a GP0(A0) transfer, row by row with wrap; E6 mask settings apply. Pixels past the

@@ -98,13 +98,14 @@ void Gpu::dma_write(const u32* words, u32 count) {
   u32 i = 0;
   while (i < count) {
     if (gp0_mode_ == Gp0Mode::Command && fifo_len_ == 0) {
-      // A whole command in the block: the FIFO as gp0_write() would leave it, word by word.
+      // A whole command in the block runs where it lies, and the FIFO is left empty, as
+      // gp0_write() would leave it word by word.
       const u32 needed = gp0_command_length(words[i] >> 24);
       if (count - i >= needed) {
         fifo_needed_ = needed;
-        std::copy(words + i, words + i + needed, fifo_);
+        const u32* command = words + i;
         i += needed;
-        gp0_execute();
+        gp0_execute(command);
         continue;
       }
     }
@@ -282,7 +283,13 @@ void Gpu::do_state(StateIO& s) {
   }
   s.pod(gp0_mode_);
   if (s.loading() && gp0_mode_ > Gp0Mode::CpuToVram) s.fail("bad GP0 mode");
-  s.pod(fifo_);
+  if (s.loading()) {
+    s.pod(fifo_);
+  } else {  // the words queued, the rest zero: words left from earlier commands are not state
+    u32 queued[16] = {};
+    std::copy_n(fifo_, std::min<u32>(fifo_len_, 16), queued);
+    s.pod(queued);
+  }
   s.pod(fifo_len_);
   s.pod(fifo_needed_);
   if (s.loading() && (fifo_len_ > 16 || fifo_needed_ > 16)) s.fail("GP0 FIFO length out of range");

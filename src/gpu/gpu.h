@@ -96,15 +96,16 @@ class Gpu final : public IoDevice, public DmaPort {
 
   // GP0 (gp0_commands.cpp)
   static u32 gp0_command_length(u32 command);
-  void gp0_execute();
-  void gp0_polygon();
-  void gp0_line();
+  // A whole command's words: the FIFO's, or a DMA block's where it lies (dma_write()).
+  void gp0_execute(const u32* w);
+  void gp0_polygon(const u32* w);
+  void gp0_line(const u32* w);
   void gp0_polyline_word(u32 word);
-  void gp0_rectangle();
-  void gp0_fill_rectangle();
-  void gp0_copy_rectangle();
-  void gp0_copy_to_vram();
-  void gp0_copy_from_vram();
+  void gp0_rectangle(const u32* w);
+  void gp0_fill_rectangle(const u32* w);
+  void gp0_copy_rectangle(const u32* w);
+  void gp0_copy_to_vram(const u32* w);
+  void gp0_copy_from_vram(const u32* w);
   void gp0_draw_mode(u32 word);
   void gp0_texture_window(u32 word);
   void gp0_draw_area_top_left(u32 word);

@@ -32,9 +32,6 @@ class Bus {
   static constexpr u32 kScratchSize = 1024;
   // The recompiler's pages cover this RAM and the scratchpad after it (scratchpad()).
   static_assert(kRamSize == CodePages::kRamSize && kScratchSize == CodePages::kScratchBytes);
-  // So are the written pages', in pages of the same size (native stores mark both from one index).
-  static_assert(kRamSize == WrittenPages::kRamSize && kScratchSize == WrittenPages::kScratchBytes &&
-                CodePages::kPageBits == WrittenPages::kPageBits);
   static constexpr u32 kBiosSize = 512 * 1024;
 
   Bus(Scheduler& sched, InterruptController& irq);

@@ -2,23 +2,27 @@
 // since they last matched a snapshot, so that restoring that snapshot copies those pages alone
 // (Bus::do_state(), Console::restore()). An environment resets to its start state hundreds of
 // times, and a game writes a few hundred KiB of its 2 MiB between two resets. Every CPU, DMA and
-// host write reports here (the bus's write paths, Bus::host_wrote()), and the recompiler's native
-// stores set their page's byte themselves (Impl::store()); a page's byte is 1 once it is written.
+// host write reports here (the bus's write paths, Bus::host_wrote_ram() and
+// host_wrote_scratchpad()), and the recompiler's native stores set their page's byte themselves
+// (Impl::store()); a page's byte is 1 once it is written.
 #pragma once
 #include <algorithm>
 #include <array>
 #include <cstring>
 
+#include "core/cpu/recompiler/code_pages.h"
 #include "core/types.h"
 
 namespace psx {
 
 class WrittenPages {
  public:
-  static constexpr u32 kPageBits = 8;
-  static constexpr u32 kRamSize = 2 * 1024 * 1024, kScratchBytes = 1024;
-  static constexpr u32 kBytes = kRamSize + kScratchBytes;
-  static constexpr u32 kPages = kBytes >> kPageBits;
+  // The code pages' pages (native stores index both with one page number), RAM's and the
+  // scratchpad's after them.
+  static constexpr u32 kPageBits = CodePages::kPageBits;
+  static constexpr u32 kRamSize = CodePages::kRamSize;
+  static constexpr u32 kBytes = kRamSize + CodePages::kScratchBytes;
+  static constexpr u32 kPages = CodePages::kPages + CodePages::kSparePages;
 
   WrittenPages() { mark_all(); }
 

@@ -287,7 +287,7 @@ void Gpu::do_state(StateIO& s) {
     s.pod(fifo_);
   } else {  // the words queued, the rest zero: words left from earlier commands are not state
     u32 queued[16] = {};
-    std::copy_n(fifo_, std::min<u32>(fifo_len_, 16), queued);
+    std::copy_n(fifo_, fifo_len_, queued);
     s.pod(queued);
   }
   s.pod(fifo_len_);

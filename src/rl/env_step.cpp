@@ -2,6 +2,7 @@
 // reward (seed Table 3.3 or raw score), the outcome, and encoding the observation.
 #include <chrono>
 #include <stdexcept>
+#include <utility>
 
 #include "core/console.h"
 #include "lua/lua_host.h"

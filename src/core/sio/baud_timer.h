@@ -28,7 +28,7 @@ class BaudTimer {
   // The timer's value at `now`, placed at bits 11-31 of SIO#_STAT.
   u32 stat_bits(u16 baud, u16 mode, Cycles now) const {
     const Cycles half = sio_baud_half_period(baud, mode);
-    if (half != phase_half_ || now < phase_at_) {  // BAUD or the factor changed since
+    if (half != phase_half_ || now < phase_at_) {  // BAUD or the factor changed, or time went back
       phase_at_ = reload_at_;
       phase_half_ = half;
     }

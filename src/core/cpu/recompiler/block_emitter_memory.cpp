@@ -331,7 +331,8 @@ void Impl::store(NativeOp op, u32 i) {
   // The page is written (written_pages.h: the same pages as the code pages').
   mov(edx, r13d);
   shr(edx, CodePages::kPageBits);
-  if (const auto d = from_context(lay.written_pages)) {
+  if (const auto d = from_context(lay.written_pages);
+      d && from_context(lay.written_pages + CodePages::kPages + CodePages::kSparePages)) {
     mov(byte[rbx + rdx + *d], 1);
   } else {
     mov(rsi, reinterpret_cast<u64>(lay.written_pages));

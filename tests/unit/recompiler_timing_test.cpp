@@ -347,4 +347,26 @@ TEST(RecompilerTiming, ProbedNativeLoops) {
   }
 }
 
+// A RAM load, then a jump whose delay slot starts a line that misses the i-cache: its fill
+// outlasts the load's access, so the delay slot's check clears the shadow, which native code
+// leaves to the chain on the way out (shadow()). The jump's target, a block of its own whose line
+// the delay slot's evicts (4 KiB apart) and back, starts with an ALU operation and a store to a
+// timer register (a call). Probed so that the deadline falls between the delay slot and the
+// target: the chain must not go on into the target's block, whose refusal at the deadline would
+// leave before its first instruction's check, with the shadow still set.
+TEST(RecompilerTiming, ProbedJumpAfterLoadToTheDeadline) {
+  constexpr u32 kA = 0x100, kB = kA + 0x1000 + 0x10;
+  std::vector<u32> code = {j(kBase + kA), kNop};
+  code.resize(kA / 4, kNop);
+  code.insert(code.end(), {itype(0x09, kT1, kT1, 1), itype(0x09, kT1, kT1, 1),  // addiu t1 twice
+                           itype(0x23, kS7, kT0, 0x40), j(kBase + kB), kNop});   // lw t0; the nop at kA + 10h
+  code.resize(kB / 4, kNop);
+  code.insert(code.end(), {itype(0x0D, 0, kT3, 0x40), itype(0x2B, kS5, kT3, 0x18),  // li t3; sw t3, timer 1
+                           rtype(0x21, kT0, kT1, kT1), j(kBase + kA), kNop});
+  for (u32 seed = 1; seed <= 6; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_trace(code, seed, 10 + 7 * seed, 1);
+  }
+}
+
 }  // namespace

@@ -23,10 +23,11 @@ using Impl = BlockEmitter::Impl;
 // since. It skips the next block's loop_head_check() too, having seen no loop head pending, or
 // none that matters (no idle skipping), or the one at its pc cleared by loop_head_routine(); a
 // loop head pending elsewhere (left by an exception before the branch's target was reached)
-// sends it back to the dispatcher. Nor does it check the deadline itself: the clean entry does
-// before anything changes (its budget check, or a deadline check where the first run has no
-// budget, or the first call's may_step()), and at the deadline its refusal leaves by a call that
-// answers false to the exit's chain, which does check (else it would enter the block again).
+// sends it back to the dispatcher. Nor does it check the deadline itself (but after a deferred
+// shadow check, shadow()): the clean entry does before anything changes (its budget check, or a
+// deadline check where the first run has no budget, or the first call's may_step()), and at the
+// deadline its refusal leaves by a call that answers false to the exit's chain, which does check
+// (else it would enter the block again).
 // A block that is one native segment and branches back to its start (loops_natively) goes, on that
 // branch, straight to its first instruction (`loop`, the segment's resume[0]) past its whole guard
 // when no call was made since the guard passed (the frame's spare byte at rsp says; a load or
@@ -47,7 +48,10 @@ void Impl::chain(bool clean, Label* loop, std::optional<u32> loop_budget, std::o
   else if (clean) cmp(word[rbx + lay.stop], 0);
   else cmp(byte[rbx + lay.stop], 0);
   jne(back, T_NEAR);
-  if (!clean) {  // a clean chain leaves the deadline to the next block's clean entry (above)
+  // A clean chain leaves the deadline to the next block's clean entry (above), except after a
+  // deferred shadow check: a refusal there at the deadline would leave before the next
+  // instruction's check, which is to make this one's.
+  if (!clean || deferred) {
     cmp(now, deadline);
     jae(back, T_NEAR);
   }

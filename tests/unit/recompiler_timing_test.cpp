@@ -89,10 +89,12 @@ std::vector<u32> timing_stream(u32 seed, u32 length) {
 
 // The CPU's saved state and the time at every firing of a probe event that books itself again
 // 1 to `gap` cycles later (kProbes times at most), over `frames` frames; the whole console's
-// state_of() last.
+// state_of() last. Every `irq_every`th firing (none where 0) also raises timer 0's IRQ, as the
+// timer's own event would, wherever the CPU is then.
 constexpr size_t kProbes = 20000;
 
-std::vector<std::vector<u8>> probe_trace(const std::vector<u32>& code, u32 seed, bool recompiled, u32 gap, int frames) {
+std::vector<std::vector<u8>> probe_trace(const std::vector<u32>& code, u32 seed, bool recompiled, u32 gap, int frames,
+                                         u32 irq_every = 0) {
   Console c;
   if (recompiled) c.set_cpu_mode(Console::CpuMode::Recompiler);
   std::vector<u32> regs = random_regs(seed);
@@ -120,6 +122,7 @@ std::vector<std::vector<u8>> probe_trace(const std::vector<u32>& code, u32 seed,
     for (psx::u64 v : {psx::u64(sched.now()), psx::u64(late)})
       for (int b = 0; b < 8; ++b) snap.push_back(u8(v >> (8 * b)));
     trace.push_back(std::move(snap));
+    if (irq_every != 0 && trace.size() % irq_every == 0) c.irq().raise(psx::Irq::Timer0);
     if (trace.size() < kProbes) sched.schedule(probe, 1 + rng() % gap);
   });
   sched.schedule(probe, 1 + rng() % gap);
@@ -128,9 +131,9 @@ std::vector<std::vector<u8>> probe_trace(const std::vector<u32>& code, u32 seed,
   return trace;
 }
 
-void expect_same_trace(const std::vector<u32>& code, u32 seed, u32 gap, int frames) {
-  const auto ref = probe_trace(code, seed, false, gap, frames);
-  const auto rec = probe_trace(code, seed, true, gap, frames);
+void expect_same_trace(const std::vector<u32>& code, u32 seed, u32 gap, int frames, u32 irq_every = 0) {
+  const auto ref = probe_trace(code, seed, false, gap, frames, irq_every);
+  const auto rec = probe_trace(code, seed, true, gap, frames, irq_every);
   ASSERT_GT(ref.size(), 1000u);  // the probe keeps firing
   ASSERT_EQ(ref.size(), rec.size()) << "the probe fired a different number of times";
   for (size_t k = 0; k < ref.size(); ++k)
@@ -366,6 +369,80 @@ TEST(RecompilerTiming, ProbedJumpAfterLoadToTheDeadline) {
   for (u32 seed = 1; seed <= 6; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     expect_same_trace(code, seed, 10 + 7 * seed, 1);
+  }
+}
+
+// Native I/O loads (Impl::io_load(): a load from a port the recompiler guessed makes its read
+// through one call and goes on natively): polls of timer 0's counter, I_STAT, GPUSTAT, SPUSTAT and
+// the CD-ROM's status through s5, each followed in its i-cache line by ALU operations reading the
+// value (its load delay slot, then the value) and a RAM load (the shadow), while timer 0's IRQ,
+// booked a few cycles ahead, falls due inside a read (the SPU's and the CD-ROM's ports take longer
+// than the RAM load the deadline's budget reckons with, so Bus::catch_up() runs the event there:
+// the interrupt is taken before the next instruction, and the time left may not cover the rest of
+// the run) and the probe returns to the dispatcher around and inside the reads. Then loops that
+// poll, each one block looping natively (chain()), waiting for the IRQ's bit in I_STAT with a
+// countdown as a way out.
+TEST(RecompilerTiming, ProbedIoPolls) {
+  constexpr u32 kT2 = 10, kT4 = 12, kGpuStat = 0x1F801814, kSpuStat = 0x1F801DAE, kCdStatus = 0x1F801800;
+  constexpr u32 kLw = 0x23, kLhu = 0x25, kLbu = 0x24;
+  constexpr u32 kPorts[][2] = {{kLw, 0x00}, {kLw, kIStat - kTimers}, {kLw, kGpuStat - kTimers}, {kLw, 0x10},
+                               {kLhu, kSpuStat - kTimers}, {kLbu, kCdStatus - kTimers}};
+  std::mt19937 rng(11);
+  std::vector<u32> code;
+  const auto irq_soon = [&] {
+    code.push_back(itype(0x0D, 0, kT3, 8 + rng() % 160));  // ori t3, r0, n: the target
+    code.push_back(itype(0x2B, kS5, kT3, 0x08));
+    code.push_back(itype(0x0D, 0, kT3, 0x18));  // one IRQ at the target, the counter reset there
+    code.push_back(itype(0x2B, kS5, kT3, 0x04));
+  };
+  // Each piece a block of its own (an interrupt returns into the middle of one, which then runs
+  // interpreted to its end: RecompilerT::step_resumed()).
+  const auto next_block = [&] {
+    code.push_back(j(kBase + 4 * (u32(code.size()) + 2)));
+    code.push_back(kNop);
+  };
+  for (u32 unit = 0; unit < 32; ++unit) {
+    irq_soon();
+    next_block();
+    for (u32 n = 0; n < 2 + rng() % 3; ++n) {
+      if (rng() % 3 == 0) {  // a branch split inside the run, mostly falling through to the poll
+        code.push_back(itype(0x04, kT1, kT2, 1));  // beq t1, t2, +1
+        code.push_back(kNop);
+      }
+      const auto& port = kPorts[rng() % 6];
+      code.push_back(itype(port[0], kS5, kT0, port[1]));               // lw t0, a port
+      code.push_back(rtype(0x21, kT0, kT1, kT1));                      // addu t1, t0, t1: the old t0
+      code.push_back(rtype(0x21, kT0, kT2, kT2));                      // addu t2, t0, t2
+      if (rng() % 2) code.push_back(itype(0x23, kS7, kT0, (rng() % 256) * 4));  // lw t0 from RAM
+    }
+    next_block();
+    // SPUSTAT and SPUCNT back to back: the reads outrun the budget, so later ones cross the
+    // deadline.
+    irq_soon();
+    next_block();
+    for (u32 n = 0; n < 3 + rng() % 4; ++n)
+      code.push_back(itype(kLhu, kS5, kT0 + n % 3, kSpuStat - kTimers - 4 * (rng() % 2)));
+    code.push_back(rtype(0x21, kT0, kT1, kT2));  // addu t2, t0, t1
+    next_block();
+  }
+  for (u32 unit = 0; unit < 8; ++unit) {
+    irq_soon();
+    code.push_back(itype(0x0D, 0, kT4, 8 + rng() % 40));  // ori t4, r0: the countdown
+    next_block();
+    const size_t start = code.size();
+    code.push_back(itype(0x23, kS5, kT0, kIStat - kTimers));  // lw t0, I_STAT
+    code.push_back(itype(0x09, kT4, kT4, 0xFFFF));            // addiu t4, t4, -1
+    code.push_back(itype(0x0C, kT0, kT0, 0x10));              // andi t0, t0, 10h: timer 0
+    code.push_back(rtype(0x21, kT0, kT4, kT1));               // addu t1, t0, t4: 0 goes on
+    code.push_back(itype(0x05, kT1, 0, u32(start) - u32(code.size() + 1)));  // bne t1, r0, start
+    code.push_back(kNop);
+  }
+  code.push_back(j(kBase));
+  code.push_back(kNop);
+  for (u32 seed = 1; seed <= 4; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_trace(code, seed, 3 + 11 * seed, 1);
+    expect_same_trace(code, seed, 60 + 30 * seed, 1, 1);  // interrupts from the probe too
   }
 }
 

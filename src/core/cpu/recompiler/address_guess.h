@@ -1,13 +1,16 @@
 // A guess, while a block is compiled, at where its loads and stores will go: the registers'
 // values when the block is compiled, updated by the LUI/ORI/ADDIU constants the block builds
 // before each access (any other write makes a register unknown). A load or store whose guessed
-// address lies outside RAM and the scratchpad (an I/O register that a loop polls, typically) is
-// compiled as a call step: as native code it would check the address, take that call anyway,
-// and check the segment's guard again after it. Only speed depends on the guess: native or a
-// call, the instruction does exactly what the interpreter does.
+// address lies outside RAM and the scratchpad is compiled as a call step: as native code it
+// would check the address, take that call anyway, and check the segment's guard again after it.
+// Except a plain load from an I/O port (a poll of JOY_STAT, I_STAT or GPUSTAT, typically), which
+// the native code makes at that address with one call for the port's read (Impl::io_load()).
+// Only speed depends on the guess: native or a call, the instruction does exactly what the
+// interpreter does.
 #pragma once
 #include <array>
 
+#include "core/bus.h"
 #include "core/cpu/decode.h"
 
 namespace psx {
@@ -24,6 +27,15 @@ class AddressGuess {
     const bool memory = (op(i) >= 0x20 && op(i) <= 0x2E) || op(i) == 0x32 || op(i) == 0x3A;  // LWC2, SWC2
     if (!memory || !((known_ >> s) & 1)) return false;
     return !native_memory(val_[s] + simm(i));
+  }
+  // The I/O port instruction i reads where it is an LB, LH, LW, LBU or LHU whose guessed address
+  // is aligned and in the I/O region (through KUSEG, KSEG0 or KSEG1); else 0.
+  u32 io_load(u32 i) const {
+    using namespace cpu_detail;
+    const u32 width = op(i) == 0x23 ? 4 : (op(i) == 0x21 || op(i) == 0x25) ? 2 : 1;
+    if (!(op(i) >= 0x20 && op(i) <= 0x25 && op(i) != 0x22) || !((known_ >> rs(i)) & 1)) return 0;
+    const u32 a = val_[rs(i)] + simm(i);
+    return (a & (width - 1)) == 0 && Bus::io_address(a) ? a : 0;
   }
   // Follows what instruction i writes.
   void after(u32 i) {

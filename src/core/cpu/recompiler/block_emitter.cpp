@@ -369,7 +369,8 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   // A new i-cache line: its words must hit (guard()), else this instruction runs as a call,
   // which fetches (and fills) it.
   if (k > 0 && (s.pc & 15) == 0) line_check(rest, seg.slow_native[k], fill_entry(s.pc, seg, k), &seg.filled[k]);
-  if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
+  if (s.io != 0) io_address_check(s, seg.fallback[k]);
+  else if (is_memory(op)) address_checks(op, s.word, seg.fallback[k]);
   if (after_branch && !quiet_delay) {  // else sync_pc()
     mov(cpu32(lay.current_pc), s.pc);
     mov(byte[rbx + lay.in_delay_slot], 1);
@@ -396,6 +397,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   }
   const u32 d = dest(op, s.word);
   if (is_branch(op)) branch(op, s.pc, s.word, split);
+  else if (s.io != 0) io_load(s, k);
   else if (is_load(op)) load(op, s.word, pipe, seg.shadow[k] != Shadow::check);
   else if (is_store_or_swc2(op)) store(op, s.word);
   else if (op == NativeOp::Lwc2) lwc2(s.word);
@@ -408,6 +410,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   commit(pipe, is_delayed(op) ? rt(s.word) : d, is_delayed(op), rt(s.word), keeps_r10(op), seg.lazy[k],
          k > 0 && seg.lazy[k - 1]);  // leaves eax
   eax_reg = d;
+  if (s.io != 0 && k + 1 < seg.count) io_checks(rest, k, seg);
 }
 
 // current_pc_, pc_ and next_pc_ after instruction j of a segment, which native code writes only
@@ -461,7 +464,8 @@ void Impl::plan(std::span<const Step> run, Segment& seg) {
   seg.lazy.assign(seg.count, false);
   for (size_t k = 1; k < seg.count; ++k) {
     seg.pipe[k] = {false, is_delayed(run[k - 1].native), cpu_detail::rt(run[k - 1].word)};
-    seg.lazy[k - 1] = is_delayed(run[k - 1].native) && lazy_lands(run[k].native);
+    // (Not before an I/O load, whose call sees the pipeline in memory.)
+    seg.lazy[k - 1] = is_delayed(run[k - 1].native) && lazy_lands(run[k].native) && run[k].io == 0;
   }
   plan_shadow(run, u32(lay.load_issue + lay.load_bus - 1), seg.shadow, seg.shadowed);
   // Branches with their delay slot and more of the segment after them split (compile() went on

@@ -43,6 +43,9 @@ class BlockEmitter {
     u32 word;  // the instruction compiled
     StepFn fn;
     NativeOp native = NativeOp::None;
+    // A native load's I/O port (0: none): the address the recompiler guessed (address_guess.h),
+    // where the native code calls the port's read itself (Impl::io_load()).
+    u32 io = 0;
   };
   // Where native code finds the machine's state: byte offsets of CpuT's fields from the context
   // plus `bias` (u32 unless noted), of the scheduler's time and deadline from `sched`, and the
@@ -102,6 +105,9 @@ class BlockEmitter {
     const bool* any_dirty;
     const void* recent_blocks;
     u32 recent_count;
+    // An I/O load's access for native code (RecompilerT::io_load()), for LB, LH, LW, LBU and LHU
+    // in that order: the value, with bit 32 set where the CPU may no longer run natively.
+    u64 (*io_loads[5])(void* context, u32 address);
   };
 
   // Whether a block may go on past its last two steps, a branch that may fall through (not `b` or

@@ -183,6 +183,72 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe, bool bus_free) {
   if (is_unaligned(op)) merge_unaligned(op, t, pipe);
 }
 
+// A native I/O load's address (r13d) against its port (Step::io): any other address takes the
+// load's call (`slow`), which makes whatever access that is. The guard's memory checks hold
+// (kernel mode, no D-cache mode, no DCIC data break) and the port's address is aligned, so the
+// load passes CpuT::load()'s checks.
+void Impl::io_address_check(const Step& s, Label& slow) {
+  using namespace cpu_detail;
+  with_reg(rs(s.word), [&](const Xbyak::Operand& o) { mov(r13d, o); });
+  if (simm(s.word) != 0) add(r13d, simm(s.word));
+  cmp(r13d, s.io);
+  jne(slow, T_NEAR);
+}
+
+// CpuT::load() past its checks for a native I/O load (instruction k of the segment): one call,
+// RecompilerT::io_load(), makes timed_read()'s wait and the port's read, which may run events.
+// Those see the CPU as the interpreter leaves it during the read, as they would during a step's
+// call: the time (r14, with this instruction's cycle) and the count (with this instruction), the
+// pc's fields (sync_pc()'s, and no delay slot: the recompiler makes no I/O load native in one),
+// the pipeline (plan() keeps the load before this one out of r10 alone) and the load shadow
+// (shadow() checks it here as at a segment's last instruction). The call leaves the value in
+// eax and whether the CPU must leave native code in r9d (io_checks()). r10, a load landing, is
+// kept across it.
+void Impl::io_load(const Step& s, size_t k) {
+  mov(cpu32(lay.current_pc), s.pc);
+  mov(cpu32(lay.pc), s.pc + 4);
+  mov(cpu32(lay.next_pc), s.pc + 8);
+  mov(byte[rbx + lay.in_delay_slot], 0);
+  mov(byte[rbx + lay.next_in_delay], 0);
+  add(instructions, int(k + 1));
+  push(r10);
+  sub(rsp, 8);  // the stack's alignment at a call
+  flush();
+  lea(rdi, ptr[rbx - lay.bias]);
+  mov(esi, r13d);
+  call_leaf(reinterpret_cast<const void*>(lay.io_loads[u32(s.native) - u32(NativeOp::Lb)]));
+  reload();
+  add(rsp, 8);
+  pop(r10);
+  sub(instructions, int(k + 1));
+  mov(r9, rax);
+  shr(r9, 32);
+}
+
+// After a native I/O load (instruction k), the guard's checks for the instructions after it that
+// the call may have changed: the CPU stopped, a hook armed or an interrupt pending (r9d, from
+// io_load()), and the deadline for the rest (the read's time, or an event booked sooner). The
+// rest the events during the call cannot change (guard()); not the i-cache either, which only
+// the CPU's fetches and stores fill and tag: code a DMA writes marks its lines stale
+// (ICache::kStale), but they still hold the words compiled, which the native run goes on with
+// as the interpreter would. Failing, on to instruction k + 1's slow path, with the load pending
+// as commit() left it.
+void Impl::io_checks(std::span<const Step> rest, size_t k, Segment& seg) {
+  Label& fail = cold_label();
+  test(r9d, r9d);
+  jnz(fail, T_NEAR);
+  budget_check(seg.budget[k + 1], fail);
+  cold.push_back([this, &fail, &seg, k, rt = cpu_detail::rt(rest[0].word)] {
+    L(fail);
+    if (seg.lazy[k]) {  // pending() for k + 1
+      mov(cpu32(lay.load_reg), rt);
+      mov(cpu32(lay.load_val), r10d);
+    }
+    add(instructions, int(k + 1));
+    jmp(seg.slow[k + 1], T_NEAR);
+  });
+}
+
 // CpuT::load_unaligned()'s merge of the word read (eax) into rt's value, which is the value of a
 // load to rt still in its delay slot (load_reg_ == rt: load_val_) rather than the register.
 // LWL puts the word's low (offset + 1) bytes in the top of rt, LWR its bytes from the offset on

@@ -138,15 +138,19 @@ void Impl::plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>
   shadow.resize(run.size());
   shadowed.assign(run.size(), Segment::kUnknownShadow);
   bool waited = false;
+  bool known = false;  // run[last] is a load whose shadow native code knows (not an I/O load)
   for (size_t k = 0, since = 1, last = 0; k < run.size(); ++k) {
     shadow[k] = waited || since > reach ? Shadow::none : since < reach ? Shadow::check : Shadow::clear;
-    if (shadow[k] == Shadow::check && k > 0 && is_load(run[last].native) && k - last < reach) {
+    if (shadow[k] == Shadow::check && known && k - last < reach) {
       const u32 r = cpu_detail::rt(run[last].word);
       shadowed[k] = r;
       const bool delay_slot = is_delayed(run[k - 1].native) && cpu_detail::rt(run[k - 1].word) == r;
       waited = waits_for_load(run[k], r, delay_slot);
     }
     if (is_load(run[k].native)) {
+      // An I/O load leaves the shadow as it was, its access over (wait_load()); but its call
+      // for another address (its fallback) may be a RAM load's, shadowing rt: checked at run time.
+      known = run[k].io == 0;
       last = k;
       waited = false;
     }
@@ -164,7 +168,7 @@ void Impl::plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>
 // interrupts; no native instruction raises an interrupt, and a hook armed by a branch ending the
 // block is left alone in its delay slot, where the next block starts (CpuT::step()).
 void Impl::shadow(const Step& s, size_t k, Segment& seg) {
-  const bool last = k + 1 == seg.count || exit_way;
+  const bool last = k + 1 == seg.count || exit_way || s.io != 0;  // an I/O load's call sees it
   const bool deferred = last && (seg.ends_block || exit_way) && !uses_time(s.native);
   if (seg.shadow[k] == Shadow::check && seg.shadowed[k] != Segment::kUnknownShadow) {
     shadow_known(s, seg.pipe[k], seg.shadowed[k], last && !deferred);

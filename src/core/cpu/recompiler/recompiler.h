@@ -114,6 +114,8 @@ class RecompilerT {
   static void store_call(Cpu& c, u32 instr);
   template <NativeOp K>
   static void load_call(Cpu& c, u32 instr);
+  template <NativeOp K>
+  static u64 io_load(void* context, u32 address);
 
   BusT& bus_;
   CodePages pages_;
@@ -188,15 +190,24 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
     // Native code runs only words that memory still holds (an i-cache line still holding older
     // code runs it through calls), since it checks a line by its tag alone (ICache::kStale).
     NativeOp native = native_for(word);
+    u32 io = 0;
     const bool branch_in_slot = delay_slot && ends_block(word);
-    if (branch_in_slot || guess.elsewhere(word) || !memory_holds(a, word)) native = NativeOp::None;
+    if (branch_in_slot || !memory_holds(a, word)) {
+      native = NativeOp::None;
+    } else if (native != NativeOp::None && guess.elsewhere(word)) {
+      io = delay_slot ? 0 : guess.io_load(word);  // not where a split branch's flag lives (r8)
+      if (io == 0) native = NativeOp::None;
+    }
     guess.after(word);
-    steps_.push_back({a, word, step_for(word), native});
+    steps_.push_back({a, word, step_for(word), native, io});
     if (delay_slot && !BlockEmitter::goes_on(steps_, u32(Cpu::kLoadIssue + Cpu::kLoadBus - 1))) break;
     delay_slot = ends_block(word);  // a delay slot that goes on is no branch (goes_on())
     a += 4;
   }
   if (steps_.empty()) return nullptr;  // no code there: the interpreter raises the bus error
+  // A native I/O load checks the machine after its call for the instructions after it
+  // (Impl::io_checks()); as the block's last it would leave that to the chain, which does not.
+  if (steps_.back().io != 0) steps_.back().native = NativeOp::None, steps_.back().io = 0;
   if (!emitter_) emitter_ = std::make_unique<BlockEmitter>(kCodeBytes);
   const BlockEmitter::Layout lay = layout(cpu);
   BlockEmitter::BlockFn fn = emitter_->emit(lay, steps_);

@@ -146,6 +146,25 @@ void RecompilerT<BusT>::load_call(Cpu& c, u32 i) {
   c.delayed_load(rt(i), v);
 }
 
+// A native I/O load's access (Impl::io_load()), load_call()'s after the native code has made
+// CpuT::load()'s checks and the instruction's bookkeeping: the wait for a load in flight, the
+// port's read, the sign. Events may run during the read (Bus::catch_up()), so the answer's bit 32
+// says where the CPU may no longer run natively: stopped, a hook armed or an interrupt pending,
+// as may_step() would find before the next instruction (the native code checks the deadline).
+template <class BusT>
+template <NativeOp K>
+u64 RecompilerT<BusT>::io_load(void* context, u32 address) {
+  Cpu& c = *static_cast<Cpu*>(context);
+  constexpr u32 width = K == NativeOp::Lw ? 4 : (K == NativeOp::Lh || K == NativeOp::Lhu) ? 2 : 1;
+  c.wait_load();
+  u32 v;
+  c.bus_.read_io(address, v, width);
+  if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
+  if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
+  const bool leave = c.stop_ || c.hook_armed_ || c.interrupt_pending();
+  return v | u64{leave} << 32;
+}
+
 // The checks at the top of CpuT::run()'s loop and CpuT::step(): whether the step can run the
 // instruction itself (true), or must leave the block (false, having stepped the CPU through a
 // hook or an interrupt where one was due).
@@ -271,6 +290,13 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.gte_write_data = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_data(r, v); };
   l.gte_write_control = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_control(r, v); };
   l.gte_cycles = &Gte::command_cycles;
+  if constexpr (std::is_same_v<BusT, Bus>) {
+    l.io_loads[0] = &io_load<NativeOp::Lb>;
+    l.io_loads[1] = &io_load<NativeOp::Lh>;
+    l.io_loads[2] = &io_load<NativeOp::Lw>;
+    l.io_loads[3] = &io_load<NativeOp::Lbu>;
+    l.io_loads[4] = &io_load<NativeOp::Lhu>;
+  }
   l.gte_longest = Gte::kLongestCommandCycles;
   l.hi = cpu_at(&c.hi_);
   l.lo = cpu_at(&c.lo_);

@@ -372,10 +372,12 @@ TEST(RecompilerTiming, ProbedJumpAfterLoadToTheDeadline) {
   }
 }
 
-// Native I/O loads (Impl::io_load(): a load from a port the recompiler guessed makes its read
-// through one call and goes on natively): polls of timer 0's counter, I_STAT, GPUSTAT, SPUSTAT and
-// the CD-ROM's status through s5, each followed in its i-cache line by ALU operations reading the
-// value (its load delay slot, then the value) and a RAM load (the shadow), while timer 0's IRQ,
+// Native I/O accesses (Impl::io_access(): a load from or store to a port the recompiler guessed
+// makes its read or write through one call and goes on natively): polls of timer 0's counter,
+// I_STAT, GPUSTAT, SPUSTAT and the CD-ROM's status through s5, each followed in its i-cache line
+// by ALU operations reading the value (its load delay slot, then the value), a RAM load (the
+// shadow) and now and then a store of a register in a RAM load's delay slot (the old value) to
+// timer 1's target, with the timer writes that book timer 0's IRQ native too, while that IRQ,
 // booked a few cycles ahead, falls due inside a read (the SPU's and the CD-ROM's ports take longer
 // than the RAM load the deadline's budget reckons with, so Bus::catch_up() runs the event there:
 // the interrupt is taken before the next instruction, and the time left may not cover the rest of
@@ -414,6 +416,10 @@ TEST(RecompilerTiming, ProbedIoPolls) {
       code.push_back(rtype(0x21, kT0, kT1, kT1));                      // addu t1, t0, t1: the old t0
       code.push_back(rtype(0x21, kT0, kT2, kT2));                      // addu t2, t0, t2
       if (rng() % 2) code.push_back(itype(0x23, kS7, kT0, (rng() % 256) * 4));  // lw t0 from RAM
+      if (rng() % 3 == 0) {  // a store to a port of the register a RAM load is about to land in
+        code.push_back(itype(0x23, kS7, kT3, (rng() % 256) * 4));  // lw t3 from RAM
+        code.push_back(itype(rng() % 2 ? 0x2B : 0x29, kS5, kT3, 0x18));  // sw/sh t3, timer 1's target
+      }
     }
     next_block();
     // SPUSTAT and SPUCNT back to back: the reads outrun the budget, so later ones cross the

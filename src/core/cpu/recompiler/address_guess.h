@@ -3,8 +3,9 @@
 // before each access (any other write makes a register unknown). A load or store whose guessed
 // address lies outside RAM and the scratchpad is compiled as a call step: as native code it
 // would check the address, take that call anyway, and check the segment's guard again after it.
-// Except a plain load from an I/O port (a poll of JOY_STAT, I_STAT or GPUSTAT, typically), which
-// the native code makes at that address with one call for the port's read (Impl::io_load()).
+// Except a plain load from or store to an I/O port (a poll of JOY_STAT, I_STAT or GPUSTAT, a write
+// to GP0 or a DMA register, typically), which the native code makes at that address with one call
+// for the port's read or write (Impl::io_access()).
 // Only speed depends on the guess: native or a call, the instruction does exactly what the
 // interpreter does.
 #pragma once
@@ -28,12 +29,14 @@ class AddressGuess {
     if (!memory || !((known_ >> s) & 1)) return false;
     return !native_memory(val_[s] + simm(i));
   }
-  // The I/O port instruction i reads where it is an LB, LH, LW, LBU or LHU whose guessed address
-  // is aligned and in the I/O region (through KUSEG, KSEG0 or KSEG1); else 0.
-  u32 io_load(u32 i) const {
+  // The I/O port instruction i reaches where it is an LB, LH, LW, LBU, LHU, SB, SH or SW whose
+  // guessed address is aligned and in the I/O region (through KUSEG, KSEG0 or KSEG1); else 0.
+  u32 io_port(u32 i) const {
     using namespace cpu_detail;
-    const u32 width = op(i) == 0x23 ? 4 : (op(i) == 0x21 || op(i) == 0x25) ? 2 : 1;
-    if (!(op(i) >= 0x20 && op(i) <= 0x25 && op(i) != 0x22) || !((known_ >> rs(i)) & 1)) return 0;
+    const u32 o = op(i);
+    const bool plain = (o >= 0x20 && o <= 0x25 && o != 0x22) || o == 0x28 || o == 0x29 || o == 0x2B;
+    const u32 width = (o == 0x23 || o == 0x2B) ? 4 : (o == 0x21 || o == 0x25 || o == 0x29) ? 2 : 1;
+    if (!plain || !((known_ >> rs(i)) & 1)) return 0;
     const u32 a = val_[rs(i)] + simm(i);
     return (a & (width - 1)) == 0 && Bus::io_address(a) ? a : 0;
   }

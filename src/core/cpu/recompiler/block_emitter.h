@@ -43,8 +43,9 @@ class BlockEmitter {
     u32 word;  // the instruction compiled
     StepFn fn;
     NativeOp native = NativeOp::None;
-    // A native load's I/O port (0: none): the address the recompiler guessed (address_guess.h),
-    // where the native code calls the port's read itself (Impl::io_load()).
+    // A native load's or store's I/O port (0: none): the address the recompiler guessed
+    // (address_guess.h), where the native code calls the port's read or write itself
+    // (Impl::io_access()).
     u32 io = 0;
   };
   // Where native code finds the machine's state: byte offsets of CpuT's fields from the context
@@ -105,9 +106,11 @@ class BlockEmitter {
     const bool* any_dirty;
     const void* recent_blocks;
     u32 recent_count;
-    // An I/O load's access for native code (RecompilerT::io_load()), for LB, LH, LW, LBU and LHU
-    // in that order: the value, with bit 32 set where the CPU may no longer run natively.
+    // An I/O load's or store's access for native code (RecompilerT::io_load(), io_store()), for
+    // LB, LH, LW, LBU and LHU, and SB, SH and SW, in that order: the value loaded, with bit 32
+    // set where the CPU may no longer run natively.
     u64 (*io_loads[5])(void* context, u32 address);
+    u64 (*io_stores[3])(void* context, u32 address, u32 value);
   };
 
   // Whether a block may go on past its last two steps, a branch that may fall through (not `b` or

@@ -183,10 +183,11 @@ void Impl::load(NativeOp op, u32 i, const Pipe& pipe, bool bus_free) {
   if (is_unaligned(op)) merge_unaligned(op, t, pipe);
 }
 
-// A native I/O load's address (r13d) against its port (Step::io): any other address takes the
-// load's call (`slow`), which makes whatever access that is. The guard's memory checks hold
-// (kernel mode, no D-cache mode, no DCIC data break) and the port's address is aligned, so the
-// load passes CpuT::load()'s checks.
+// A native I/O load's or store's address (r13d) against its port (Step::io): any other address
+// takes the instruction's call (`slow`), which makes whatever access that is. The guard's memory
+// checks hold (kernel mode, no D-cache mode, no DCIC data break; for a store, no isolated cache or
+// memory watch) and the port's address is aligned, so the access passes CpuT::load()'s or
+// store()'s checks.
 void Impl::io_address_check(const Step& s, Label& slow) {
   using namespace cpu_detail;
   with_reg(rs(s.word), [&](const Xbyak::Operand& o) { mov(r13d, o); });
@@ -195,16 +196,23 @@ void Impl::io_address_check(const Step& s, Label& slow) {
   jne(slow, T_NEAR);
 }
 
-// CpuT::load() past its checks for a native I/O load (instruction k of the segment): one call,
-// RecompilerT::io_load(), makes timed_read()'s wait and the port's read, which may run events.
-// Those see the CPU as the interpreter leaves it during the read, as they would during a step's
-// call: the time (r14, with this instruction's cycle) and the count (with this instruction), the
-// pc's fields (sync_pc()'s, and no delay slot: the recompiler makes no I/O load native in one),
-// the pipeline (plan() keeps the load before this one out of r10 alone) and the load shadow
-// (shadow() checks it here as at a segment's last instruction). The call leaves the value in
-// eax and whether the CPU must leave native code in r9d (io_checks()). r10, a load landing, is
-// kept across it.
-void Impl::io_load(const Step& s, size_t k) {
+// CpuT::load() or store() past its checks for a native I/O access (instruction k of the segment):
+// one call makes a load's timed_read() wait and the port's read (RecompilerT::io_load()), or a
+// store's write of rt as it is before the pending load lands (io_store()). Either may run events
+// (and a store, DMA). Those see the CPU as the interpreter leaves it during the access, as they
+// would during a step's call: the time (r14, with this instruction's cycle) and the count (with
+// this instruction), the pc's fields (sync_pc()'s, and no delay slot: the recompiler makes no I/O
+// access native in one), the pipeline (plan() keeps the load before this one out of r10 alone)
+// and the load shadow (shadow() checks it here as at a segment's last instruction). The call
+// leaves a load's value in eax and whether the CPU must leave native code in r9d (io_checks()).
+// r10, a load landing, is kept across it.
+void Impl::io_access(const Step& s, size_t k) {
+  settle();  // a load's is made already (uses_time())
+  const bool store = is_store(s.native);
+  if (store) {
+    read_eax(cpu_detail::rt(s.word));
+    mov(edx, eax);
+  }
   mov(cpu32(lay.current_pc), s.pc);
   mov(cpu32(lay.pc), s.pc + 4);
   mov(cpu32(lay.next_pc), s.pc + 8);
@@ -216,7 +224,8 @@ void Impl::io_load(const Step& s, size_t k) {
   flush();
   lea(rdi, ptr[rbx - lay.bias]);
   mov(esi, r13d);
-  call_leaf(reinterpret_cast<const void*>(lay.io_loads[u32(s.native) - u32(NativeOp::Lb)]));
+  if (store) call_leaf(reinterpret_cast<const void*>(lay.io_stores[u32(s.native) - u32(NativeOp::Sb)]));
+  else call_leaf(reinterpret_cast<const void*>(lay.io_loads[u32(s.native) - u32(NativeOp::Lb)]));
   reload();
   add(rsp, 8);
   pop(r10);
@@ -225,14 +234,14 @@ void Impl::io_load(const Step& s, size_t k) {
   shr(r9, 32);
 }
 
-// After a native I/O load (instruction k), the guard's checks for the instructions after it that
+// After a native I/O access (instruction k), the guard's checks for the instructions after it that
 // the call may have changed: the CPU stopped, a hook armed or an interrupt pending (r9d, from
-// io_load()), and the deadline for the rest (the read's time, or an event booked sooner). The
-// rest the events during the call cannot change (guard()); not the i-cache either, which only
-// the CPU's fetches and stores fill and tag: code a DMA writes marks its lines stale
-// (ICache::kStale), but they still hold the words compiled, which the native run goes on with
-// as the interpreter would. Failing, on to instruction k + 1's slow path, with the load pending
-// as commit() left it.
+// io_access()), and the deadline for the rest (the access's time, a DMA's, or an event booked
+// sooner). The rest the port and the events during the call cannot change (guard()); not the
+// i-cache either, which only the CPU's fetches and stores fill and tag: code a DMA writes marks
+// its lines stale (ICache::kStale), but they still hold the words compiled, which the native run
+// goes on with as the interpreter would. Failing, on to instruction k + 1's slow path, with a
+// load pending as commit() left it.
 void Impl::io_checks(std::span<const Step> rest, size_t k, Segment& seg) {
   Label& fail = cold_label();
   test(r9d, r9d);

@@ -291,7 +291,7 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
   void load(NativeOp op, u32 i, const Pipe& pipe, bool bus_free);
   void io_address_check(const Step& s, Xbyak::Label& slow);
-  void io_load(const Step& s, size_t k);
+  void io_access(const Step& s, size_t k);
   void io_checks(std::span<const Step> rest, size_t k, Segment& seg);
   void merge_unaligned(NativeOp op, u32 rt, const Pipe& pipe);
   void store(NativeOp op, u32 i);

@@ -116,6 +116,9 @@ class RecompilerT {
   static void load_call(Cpu& c, u32 instr);
   template <NativeOp K>
   static u64 io_load(void* context, u32 address);
+  template <NativeOp K>
+  static u64 io_store(void* context, u32 address, u32 value);
+  static bool leaves_native(const Cpu& c) { return c.stop_ || c.hook_armed_ || c.interrupt_pending(); }
 
   BusT& bus_;
   CodePages pages_;
@@ -195,7 +198,7 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
     if (branch_in_slot || !memory_holds(a, word)) {
       native = NativeOp::None;
     } else if (native != NativeOp::None && guess.elsewhere(word)) {
-      io = delay_slot ? 0 : guess.io_load(word);  // not where a split branch's flag lives (r8)
+      io = delay_slot ? 0 : guess.io_port(word);  // not where a split branch's flag lives (r8)
       if (io == 0) native = NativeOp::None;
     }
     guess.after(word);
@@ -205,7 +208,7 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
     a += 4;
   }
   if (steps_.empty()) return nullptr;  // no code there: the interpreter raises the bus error
-  // A native I/O load checks the machine after its call for the instructions after it
+  // A native I/O access checks the machine after its call for the instructions after it
   // (Impl::io_checks()); as the block's last it would leave that to the chain, which does not.
   if (steps_.back().io != 0) steps_.back().native = NativeOp::None, steps_.back().io = 0;
   if (!emitter_) emitter_ = std::make_unique<BlockEmitter>(kCodeBytes);

@@ -146,7 +146,7 @@ void RecompilerT<BusT>::load_call(Cpu& c, u32 i) {
   c.delayed_load(rt(i), v);
 }
 
-// A native I/O load's access (Impl::io_load()), load_call()'s after the native code has made
+// A native I/O load's access (Impl::io_access()), load_call()'s after the native code has made
 // CpuT::load()'s checks and the instruction's bookkeeping: the wait for a load in flight, the
 // port's read, the sign. Events may run during the read (Bus::catch_up()), so the answer's bit 32
 // says where the CPU may no longer run natively: stopped, a hook armed or an interrupt pending,
@@ -161,8 +161,20 @@ u64 RecompilerT<BusT>::io_load(void* context, u32 address) {
   c.bus_.read_io(address, v, width);
   if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
   if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
-  const bool leave = c.stop_ || c.hook_armed_ || c.interrupt_pending();
-  return v | u64{leave} << 32;
+  return v | u64{leaves_native(c)} << 32;
+}
+
+// A native I/O store's access (Impl::io_access()), store_call()'s after the native code has made
+// CpuT::store()'s checks: the port's write, which may run events and DMA (a write to a channel's
+// control). The answer's bit 32 as io_load()'s.
+template <class BusT>
+template <NativeOp K>
+u64 RecompilerT<BusT>::io_store(void* context, u32 address, u32 value) {
+  Cpu& c = *static_cast<Cpu*>(context);
+  constexpr u32 width = K == NativeOp::Sw ? 4 : K == NativeOp::Sh ? 2 : 1;
+  constexpr u32 mask = width == 4 ? 0xFFFFFFFF : (1u << (width * 8)) - 1;
+  c.bus_.write_io(address, value & mask, width);
+  return u64{leaves_native(c)} << 32;
 }
 
 // The checks at the top of CpuT::run()'s loop and CpuT::step(): whether the step can run the
@@ -296,6 +308,9 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
     l.io_loads[2] = &io_load<NativeOp::Lw>;
     l.io_loads[3] = &io_load<NativeOp::Lbu>;
     l.io_loads[4] = &io_load<NativeOp::Lhu>;
+    l.io_stores[0] = &io_store<NativeOp::Sb>;
+    l.io_stores[1] = &io_store<NativeOp::Sh>;
+    l.io_stores[2] = &io_store<NativeOp::Sw>;
   }
   l.gte_longest = Gte::kLongestCommandCycles;
   l.hi = cpu_at(&c.hi_);

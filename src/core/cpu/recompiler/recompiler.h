@@ -114,6 +114,17 @@ class RecompilerT {
   static void store_call(Cpu& c, u32 instr);
   template <NativeOp K>
   static void load_call(Cpu& c, u32 instr);
+  // The bytes a load or store of kind K moves.
+  template <NativeOp K>
+  static constexpr u32 access_width() {
+    if constexpr (K == NativeOp::Lw || K == NativeOp::Sw) return 4;
+    else if constexpr (K == NativeOp::Lh || K == NativeOp::Lhu || K == NativeOp::Sh) return 2;
+    else return 1;
+  }
+  template <NativeOp K>
+  static u32 port_read(Cpu& c, u32 address);
+  template <NativeOp K>
+  static bool port_write(Cpu& c, u32 address, u32 value);
   template <NativeOp K>
   static u64 io_load(void* context, u32 address);
   template <NativeOp K>

@@ -116,12 +116,10 @@ template <class BusT>
 template <NativeOp K>
 void RecompilerT<BusT>::store_call(Cpu& c, u32 i) {
   using namespace cpu_detail;
-  constexpr u32 width = K == NativeOp::Sw ? 4 : K == NativeOp::Sh ? 2 : 1;
-  constexpr u32 mask = width == 4 ? 0xFFFFFFFF : (1u << (width * 8)) - 1;
   const u32 addr = c.regs_[rs(i)] + simm(i);
-  const bool plain = (addr & (width - 1)) == 0 && !(c.cop0_.sr & (Cop0::kKUc | Cop0::kIsC)) &&
+  const bool plain = (addr & (access_width<K>() - 1)) == 0 && !(c.cop0_.sr & (Cop0::kKUc | Cop0::kIsC)) &&
                      !(c.cop0_.dcic & Cop0::kDcicDAE);
-  if (!plain || !c.bus_.write_io(addr, c.regs_[rt(i)] & mask, width)) c.execute(i);
+  if (!plain || !port_write<K>(c, addr, c.regs_[rt(i)])) c.execute(i);
 }
 
 // A load's call, the counterpart of store_call(): mostly a poll of an I/O port (JOY_STAT, I_STAT,
@@ -133,47 +131,56 @@ template <class BusT>
 template <NativeOp K>
 void RecompilerT<BusT>::load_call(Cpu& c, u32 i) {
   using namespace cpu_detail;
-  constexpr u32 width = K == NativeOp::Lw ? 4 : (K == NativeOp::Lh || K == NativeOp::Lhu) ? 2 : 1;
   const u32 addr = c.regs_[rs(i)] + simm(i);
-  const bool plain =
-      (addr & (width - 1)) == 0 && !(c.cop0_.sr & Cop0::kKUc) && !(c.cop0_.dcic & Cop0::kDcicDAE);
+  const bool plain = (addr & (access_width<K>() - 1)) == 0 && !(c.cop0_.sr & Cop0::kKUc) &&
+                     !(c.cop0_.dcic & Cop0::kDcicDAE);
   if (!plain || !BusT::io_address(addr)) return c.execute(i);
-  c.wait_load();
-  u32 v;
-  c.bus_.read_io(addr, v, width);
-  if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
-  if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
-  c.delayed_load(rt(i), v);
+  c.delayed_load(rt(i), port_read<K>(c, addr));
 }
 
-// A native I/O load's access (Impl::io_access()), load_call()'s after the native code has made
-// CpuT::load()'s checks and the instruction's bookkeeping: the wait for a load in flight, the
-// port's read, the sign. Events may run during the read (Bus::catch_up()), so the answer's bit 32
+// What CpuT::load() does past its checks for an I/O port: timed_read() waits for a load in
+// flight (an access outside RAM does not overlap one) and reads the port; the value, sign-extended
+// for LB/LH.
+template <class BusT>
+template <NativeOp K>
+u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address) {
+  c.wait_load();
+  u32 v;
+  c.bus_.read_io(address, v, access_width<K>());
+  if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
+  if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
+  return v;
+}
+
+// What CpuT::store() does past its checks: the register's low bytes to the port (Bus::write());
+// false where the address is no I/O port.
+template <class BusT>
+template <NativeOp K>
+bool RecompilerT<BusT>::port_write(Cpu& c, u32 address, u32 value) {
+  constexpr u32 width = access_width<K>();
+  return c.bus_.write_io(address, width == 4 ? value : value & ((1u << (width * 8)) - 1), width);
+}
+
+// A native I/O load's access (Impl::io_access()): port_read(), the native code having made
+// CpuT::load()'s checks and the instruction's bookkeeping. Events may run during the read (Bus::catch_up()), so the answer's bit 32
 // says where the CPU may no longer run natively: stopped, a hook armed or an interrupt pending,
 // as may_step() would find before the next instruction (the native code checks the deadline).
 template <class BusT>
 template <NativeOp K>
 u64 RecompilerT<BusT>::io_load(void* context, u32 address) {
   Cpu& c = *static_cast<Cpu*>(context);
-  constexpr u32 width = K == NativeOp::Lw ? 4 : (K == NativeOp::Lh || K == NativeOp::Lhu) ? 2 : 1;
-  c.wait_load();
-  u32 v;
-  c.bus_.read_io(address, v, width);
-  if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
-  if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
+  const u32 v = port_read<K>(c, address);
   return v | u64{leaves_native(c)} << 32;
 }
 
-// A native I/O store's access (Impl::io_access()), store_call()'s after the native code has made
-// CpuT::store()'s checks: the port's write, which may run events and DMA (a write to a channel's
-// control). The answer's bit 32 as io_load()'s.
+// A native I/O store's access (Impl::io_access()): port_write(), the native code having made
+// CpuT::store()'s checks. The write may run events and DMA (a write to a channel's control). The
+// answer's bit 32 as io_load()'s.
 template <class BusT>
 template <NativeOp K>
 u64 RecompilerT<BusT>::io_store(void* context, u32 address, u32 value) {
   Cpu& c = *static_cast<Cpu*>(context);
-  constexpr u32 width = K == NativeOp::Sw ? 4 : K == NativeOp::Sh ? 2 : 1;
-  constexpr u32 mask = width == 4 ? 0xFFFFFFFF : (1u << (width * 8)) - 1;
-  c.bus_.write_io(address, value & mask, width);
+  port_write<K>(c, address, value);
   return u64{leaves_native(c)} << 32;
 }
 

@@ -392,8 +392,8 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
     add(eax, 4);
     mov(cpu32(lay.next_pc), eax);
     eax_reg = 0;
-  } else if (is_branch(op) && !split) {
-    mov(cpu32(lay.next_pc), s.pc + 8);  // a branch not taken leaves it so; its delay slot reads it
+  } else if (is_branch(op) && !split && op != NativeOp::Jr && op != NativeOp::Jalr) {
+    mov(cpu32(lay.next_pc), s.pc + 8);  // a branch not taken leaves it so (JR and JALR write their target)
   }
   const u32 d = dest(op, s.word);
   if (is_branch(op)) branch(op, s.pc, s.word, split);

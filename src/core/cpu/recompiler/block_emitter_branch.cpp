@@ -24,22 +24,34 @@ void Impl::arm_hook_static(u32 target) {
   L(skip);
 }
 
+// The main path tests only what rules a hook out for almost every target: a BIOS vector's
+// address has no bits set but 4-7 and the segment's (29-31), and it is not extra_hook_pc_.
 void Impl::arm_hook_ecx() {
-  Label skip, arm;
-  cmp(qword[rbx + lay.hooks], 0);
-  je(skip, T_NEAR);
-  mov(edx, ecx);
-  and_(edx, 0x1FFFFFFF);
-  for (u32 v : {0xA0u, 0xB0u, 0xC0u}) {
-    cmp(edx, v);
-    je(arm);
-  }
+  Label &maybe = cold_label(), &back = cold_label();
+  test(ecx, 0x1FFFFF0F);
+  jz(maybe, T_NEAR);
   cmp(ecx, cpu32(lay.extra_hook_pc));
-  jne(skip);
-  L(arm);
-  mov(byte[rbx + lay.hook_armed], 1);
-  mov(cpu32(lay.hook_pc), ecx);
-  L(skip);
+  je(maybe, T_NEAR);
+  L(back);
+  cold.push_back([this, &maybe, &back] {
+    Label arm;
+    L(maybe);
+    cmp(qword[rbx + lay.hooks], 0);
+    je(back, T_NEAR);
+    cmp(ecx, cpu32(lay.extra_hook_pc));
+    je(arm);
+    mov(edx, ecx);
+    and_(edx, 0x1FFFFFFF);
+    for (u32 v : {0xA0u, 0xB0u, 0xC0u}) {
+      cmp(edx, v);
+      je(arm);
+    }
+    jmp(back, T_NEAR);
+    L(arm);
+    mov(byte[rbx + lay.hook_armed], 1);
+    mov(cpu32(lay.hook_pc), ecx);
+    jmp(back, T_NEAR);
+  });
 }
 
 // Where a branch or J/JAL at pc goes when taken (JR and JALR: nowhere known now).
@@ -82,7 +94,7 @@ void Impl::branch(NativeOp op, u32 pc, u32 i, bool split) {
     case NativeOp::Jal: mov(eax, pc + 8); break;  // the link, written by the caller
     case NativeOp::Jr: case NativeOp::Jalr:
       with_reg(rs(i), [&](const Xbyak::Operand& o) { mov(ecx, o); });  // the target, read before the link is written
-      mov(eax, pc + 8);
+      if (op == NativeOp::Jalr) mov(eax, pc + 8);
       mov(cpu32(lay.next_pc), ecx);
       arm_hook_ecx();
       break;

@@ -352,12 +352,24 @@ IdleSkip::Examined IdleSkip::repeat(Cpu& cpu) {
 bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
   Bus& bus = cpu.bus_;
   const Cycles now = cpu.sched_.now(), deadline = cpu.sched_.next_deadline();
-  if (now >= deadline || (p.cells.count > 0 && *bus.watches_cell() != nullptr) ||
+  if (now >= deadline) return false;
+  // The loads first: where the loop is about to leave (the status bit it waited for came with the
+  // event that ended the last skip), a load's value is what differs, and the checks below would
+  // all pass first.
+  const Proven::Checks& c = p.checks;
+  for (u32 l = 0; l < c.loads; ++l) {
+    const IdleStep& st = p.path[c.load_step[l]];
+    const u32 width = load_width(st.instr);
+    u32 v;
+    if (!bus.peek_data(st.addr, width, v)) return false;
+    if (load_signed(st.instr)) v = width == 2 ? u32(s32(s16(v))) : u32(s32(s8(v)));  // as CpuT::load
+    if ((v ^ st.load_value) & st.load_bits) return false;
+  }
+  if ((p.cells.count > 0 && *bus.watches_cell() != nullptr) ||
       pipeline(cpu) != p.at.pipeline || cpu.cop0_.sr != p.at.sr || *bus.cache_control_cell() != p.at.cache_control ||
       bus.memory_control() != p.at.memory_control ||
       shadow_left(cpu.load_done_at_, now) != p.at.shadow || cpu.shadow_reg_ != p.at.shadow_reg)
     return false;
-  const Proven::Checks& c = p.checks;
   const ICache& icache = bus.icache();
   for (u32 l = 0; l < c.lines; ++l)
     if (icache.tag(c.line[l]) != c.tag[l]) return false;
@@ -370,14 +382,6 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
   }
   for (u32 j = 0; j < c.jumps; ++j)
     if (cpu.hooked(c.jump_target[j])) return false;
-  for (u32 l = 0; l < c.loads; ++l) {
-    const IdleStep& st = p.path[c.load_step[l]];
-    const u32 width = load_width(st.instr);
-    u32 v;
-    if (!bus.peek_data(st.addr, width, v)) return false;
-    if (load_signed(st.instr)) v = width == 2 ? u32(s32(s16(v))) : u32(s32(s8(v)));  // as CpuT::load
-    if ((v ^ st.load_value) & st.load_bits) return false;
-  }
   u64 covered;  // iterations from this one on that a proof covers (~0: no end)
   u32 j;
   if (!p.line.iterations(p.before, cpu.regs_, j, ~p.named)) return false;

@@ -56,6 +56,7 @@ void Gpu::gp0_write(u32 word) {
 }
 
 void Gpu::gp0_execute(const u32* w) {
+  if (log_wanted_ && !replaying_ && !log_full_ && draw_.deferred() && log_command(w)) return;
   const u32 c = w[0] >> 24;
   switch (c >> 5) {
     case 1: return gp0_polygon(w);
@@ -106,15 +107,7 @@ void Gpu::gp0_polygon(const u32* w) {
     if (k == 0) clut = uv >> 16;
     if (k == 1) texpage = uv >> 16;
   }
-  if (textured) {
-    // The polygon's texpage attribute replaces GP0(E1) bits 0-8 and 11.
-    u32 mask = texture_disable_allowed_ ? 0x9FF : 0x1FF;
-    const u32 mode = (draw_mode_ & ~mask) | (texpage & mask);
-    if (mode != draw_mode_) {  // most polygons repeat the texpage in force
-      draw_mode_ = mode;
-      update_draw_state();
-    }
-  }
+  if (textured) apply_texpage(texpage);
   gpu::Triangle t;
   t.clut_x = static_cast<u16>((clut & 0x3F) * 16);
   t.clut_y = static_cast<u16>((clut >> 6) & 0x1FF);
@@ -122,6 +115,16 @@ void Gpu::gp0_polygon(const u32* w) {
   t.v[0] = v[0], t.v[1] = v[1], t.v[2] = v[2];
   if (corners == 4) draw_.quad({t, v[3]}, draw_state());
   else draw_.triangle(t, draw_state());
+}
+
+// A textured polygon's texpage attribute replaces GP0(E1) bits 0-8 and 11.
+void Gpu::apply_texpage(u32 texpage) {
+  const u32 mask = texture_disable_allowed_ ? 0x9FF : 0x1FF;
+  const u32 mode = (draw_mode_ & ~mask) | (texpage & mask);
+  if (mode != draw_mode_) {  // most polygons repeat the texpage in force
+    draw_mode_ = mode;
+    update_draw_state();
+  }
 }
 
 // GP0(40)-(5F): bit 4 Gouraud, 3 polyline, 1 semi-transparent.

@@ -130,6 +130,8 @@ void Gpu::dma_read(u32* words, u32 count) {
 
 void Gpu::gp1_write(u32 word) {
   const u32 command = (word >> 24) & 0x3F;
+  // The draw log decodes with the display mode and GP1(09) it was logged under.
+  if (command == 0x00 || command == 0x08 || command == 0x09) replay_log();
   switch (command) {
     case 0x00: gp1_reset(); break;
     case 0x01: gp1_reset_command_buffer(); break;
@@ -207,6 +209,7 @@ gpu::DisplayArea Gpu::display_area() const {
 }
 
 std::shared_ptr<const void> Gpu::vram_token() {
+  replay_log();
   if (!vram_token_ || draw_.executed() != token_draws_) {
     vram_token_ = std::make_shared<const int>(0);  // stands for VRAM's contents now
     token_draws_ = draw_.executed();
@@ -225,11 +228,18 @@ void Gpu::set_renderer(std::unique_ptr<gpu::Renderer> renderer) {
 
 void Gpu::set_deferred_drawing(bool on) {
   deferral_wanted_ = on;
+  replay_log();
   draw_.set_deferred(on && dynamic_cast<gpu::SoftwareRenderer*>(renderer_.get()) != nullptr);
 }
 
 void Gpu::vblank_started() {
-  draw_.frame_due(display_area());
+  if (log_words_ == 0) {
+    draw_.frame_due(display_area());
+  } else {  // noted where the log is now, for its replay
+    log_frame_ = true;
+    log_frame_at_ = log_words_;
+    log_frame_area_ = display_area();
+  }
   irq_.raise(Irq::VBlank);
   if (on_vblank) on_vblank();
 }
@@ -242,6 +252,7 @@ const u8* Gpu::vram_rgb() {
 
 // Converts the display area as VRAM holds it now (a program may have drawn since the last VBlank).
 bool Gpu::write_display_png(const std::string& path, std::string& error) const {
+  settle_log();
   draw_.flush();
   gpu::FrameOutput now;
   now.refresh(*renderer_, display_area());
@@ -257,10 +268,13 @@ void Gpu::do_state(StateIO& s) {
   // its padding bytes, which made equal consoles give unequal states.
   const u32 version = s.section("GPU ", 2, 1);
   // A state holds what eager drawing would have: everything drawn, the last VBlank's picture.
-  if (s.loading())
+  if (s.loading()) {
+    drop_log();
     draw_.drop();
-  else
+  } else {
+    replay_log();
     draw_.frame_ready();
+  }
   // VRAM goes straight between the state and the renderer where it can (no 1 MiB copy; it was
   // most of a snapshot restore). Saving only reads through the pointer.
   constexpr size_t kVramBytes = size_t{gpu::kVramPixels} * sizeof(u16);

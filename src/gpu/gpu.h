@@ -55,10 +55,12 @@ class Gpu final : public IoDevice, public DmaPort {
   u32 display_width() const { return display().width(); }
   u32 display_height() const { return display().height(); }
   const gpu::FrameOutput& display() const {
+    settle_log();
     draw_.frame_ready();
     return output_;
   }
   const u16* vram() const {
+    settle_log();
     draw_.flush();
     return renderer_->vram();
   }
@@ -67,7 +69,16 @@ class Gpu final : public IoDevice, public DmaPort {
   // the software renderer defers: the queue's pruning follows its coverage rules.
   void set_deferred_drawing(bool on);
   bool deferred_drawing() const { return draw_.deferred(); }
-  size_t queued_draws() const { return draw_.size(); }
+  // Drawing calls waiting: queued (draw_queue.h) or in the draw log (gp0_log.cpp), and of those
+  // the logged ones.
+  size_t queued_draws() const { return draw_.size() + log_draws_; }
+  size_t logged_draws() const { return log_draws_; }
+  // The draw log, on by default, keeps deferred drawing commands undecoded (gp0_log.cpp); off,
+  // they are decoded and queued as they come (what is logged is queued first).
+  void set_draw_log(bool on);
+  // The log's words at most (1 MiB): filled, it is decoded, and commands are queued as they come
+  // until the next state load.
+  static constexpr size_t kMaxLogWords = size_t{1} << 18;
   // The whole VRAM as 1024x512 RGB888, converted on each call.
   const u8* vram_rgb();
 
@@ -117,6 +128,20 @@ class Gpu final : public IoDevice, public DmaPort {
   void set_position(gpu::Vertex& v, u32 xy) const;
   void update_draw_state();
   const gpu::DrawState& draw_state();
+  void apply_texpage(u32 texpage);
+
+  // The draw log (gp0_log.cpp): while drawing is deferred, drawing commands are kept as the words
+  // that came, with their effects on the GPU's registers made at once, and decoded only when
+  // something needs VRAM (or the log is full); a state load drops them undecoded.
+  struct DecodeRegs {
+    u32 draw_mode, texture_window, area_top_left, area_bottom_right, draw_offset, mask_bits;
+  };
+  bool log_command(const u32* w);
+  void replay_log();
+  void settle_log() const { const_cast<Gpu*>(this)->replay_log(); }
+  void drop_log();
+  DecodeRegs decode_regs() const;
+  void set_decode_regs(const DecodeRegs& r);
 
   // GP1 (gpu.cpp)
   void gp1_reset();
@@ -139,6 +164,18 @@ class Gpu final : public IoDevice, public DmaPort {
   // vram_token(): the token VRAM holds and draw_.executed() when it got it; expect_vram()'s.
   std::shared_ptr<const void> vram_token_, expected_vram_;
   u64 token_draws_ = 0;
+
+  std::unique_ptr<u32[]> log_;  // kMaxLogWords + 16 words, log_words_ of them used
+  size_t log_words_ = 0;
+  size_t log_draws_ = 0;  // drawing commands in the log
+  DecodeRegs log_start_{};  // the registers before the log's first command
+  bool replaying_ = false;
+  bool log_full_ = false;  // the log filled up: off until the next state load
+  bool log_wanted_ = true;  // set_draw_log()
+  // The VBlank frame noted while the log held log_frame_at_ words (DrawQueue::frame_due there).
+  bool log_frame_ = false;
+  size_t log_frame_at_ = 0;
+  gpu::DisplayArea log_frame_area_;
 
   // GP0 state
   Gp0Mode gp0_mode_ = Gp0Mode::Command;

@@ -53,10 +53,15 @@ struct Rig {
   }
 };
 
-// The reference draws at once; the other defers. Every word goes to both.
+// The reference draws at once; the other defers, its drawing commands queued as they come
+// (draw_log false: the queue's own tests) or first kept in the draw log (gp0_log.cpp). Every word
+// goes to both.
 struct Twins {
   Rig eager, lazy;
-  Twins() { lazy.gpu.set_deferred_drawing(true); }
+  explicit Twins(bool draw_log = false) {
+    lazy.gpu.set_deferred_drawing(true);
+    lazy.gpu.set_draw_log(draw_log);
+  }
   void gp0(u32 w) { eager.gp0(w), lazy.gp0(w); }
   void gp1(u32 w) { eager.gp1(w), lazy.gp1(w); }
   void frame() { eager.frame(), lazy.frame(); }
@@ -183,10 +188,17 @@ class Stream {
     ++reads;
   }
   void display(Twins& t) {
-    switch (pick(4)) {
+    switch (pick(5)) {
       case 0: return t.gp1(0x05000000 | pick(1024) | pick(512) << 10);
       case 1: return t.gp1(0x08000000 | pick(0x80));
       case 2: return t.gp1(0x03000000 | (pick(4) == 0));
+      case 3: {  // GP1(10h): the drawing environment read back (texture window, area, offset)
+        if (t.eager.gpu.gpustat() & (1u << 27)) return;  // GPUREAD is a download's
+        t.gp1(0x10000002 + pick(4));
+        const u32 a = t.eager.read(), b = t.lazy.read();
+        ASSERT_EQ(a, b) << "GP1(10h) answer";
+        return;
+      }
       default: return t.gp1(0x07000000 | 16 | (16 + 1 + pick(300)) << 10);
     }
   }
@@ -197,13 +209,14 @@ class Stream {
 TEST(GpuDeferred, RandomStreamsEqualEagerDrawing) {
   for (int seed = 1; seed <= test_scale::sized(24, 6); ++seed) {
     SCOPED_TRACE(seed);
-    Twins t;
+    Twins t(seed % 2 == 0);  // the draw log on every other stream
     t.gp1(0x03000000);
     Stream s(seed);
     u32 frames = 0, reads = 0;
     size_t most_queued = 0;
     for (int i = 0; i < 4000; ++i) {
       s.step(t, frames, reads);
+      ASSERT_EQ(t.eager.gpu.gpustat(), t.lazy.gpu.gpustat()) << "GPUSTAT at step " << i;
       most_queued = std::max(most_queued, t.lazy.gpu.queued_draws());
       if (i % 500 == 499) {  // a frame request in the middle, sometimes
         ASSERT_EQ(t.eager.picture(), t.lazy.picture()) << "picture at step " << i;
@@ -419,28 +432,105 @@ TEST(GpuDeferred, TumbleMovesSameStates) {
   unseen.console.set_pixels_observed(false);
   ASSERT_TRUE(seen.start_level(1));
   ASSERT_TRUE(unseen.start_level(1));
-  size_t queued = 0;
+  size_t queued = 0, logged = 0;
   const psx::u16 moves[] = {psx::pad_button::kUp, psx::pad_button::kLeft, psx::pad_button::kUp, psx::pad_button::kRight,
                             psx::pad_button::kCross, psx::pad_button::kUp};
   for (psx::u16 m : moves) {
     seen.move(m);
     unseen.move(m);
     queued = std::max(queued, unseen.console.gpu().queued_draws());
+    logged = std::max(logged, unseen.console.gpu().logged_draws());
     ASSERT_EQ(seen.console.save_state(false), unseen.console.save_state(false));
   }
   EXPECT_GT(queued, 0u);
-  // Left alone for ten seconds of play, the queue stays far below its cap (the sky quad prunes).
-  size_t most = 0;
+  EXPECT_GT(logged, 0u);
+  // Left alone for ten seconds of play, the log fills (no state load drops it) and gives way to
+  // the queue, which stays far below its cap (the sky quad prunes); a drawing command is at
+  // least 3 words.
+  size_t most = 0, most_logged = 0;
   for (int f = 0; f < 600; ++f) {
     unseen.console.run_frame(), seen.console.run_frame();
-    most = std::max(most, unseen.console.gpu().queued_draws());
+    const psx::Gpu& gpu = unseen.console.gpu();
+    most = std::max(most, gpu.queued_draws() - gpu.logged_draws());
+    most_logged = std::max(most_logged, gpu.logged_draws());
   }
+  EXPECT_EQ(unseen.console.gpu().logged_draws(), 0u);
+  EXPECT_LE(most_logged, psx::Gpu::kMaxLogWords / 3);
   EXPECT_LT(most, psx::gpu::DrawQueue::kMaxCommands / 4);
   ASSERT_EQ(seen.console.save_state(false), unseen.console.save_state(false));
   const psx::Console::Frame a = seen.console.frame(), b = unseen.console.frame();
   ASSERT_EQ(a.width, b.width);
   ASSERT_EQ(a.height, b.height);
   EXPECT_EQ(std::memcmp(a.rgb, b.rgb, size_t{a.width} * a.height * 3), 0);
+}
+
+// The draw log keeps drawing commands as words, so a state load (an environment's reset) drops
+// them undecoded: before it every waiting call is a logged one, after it none waits, and the
+// states match the eager GPU's loaded alike.
+TEST(GpuDrawLog, StateLoadDropsTheLogUndecoded) {
+  Twins t(true);
+  t.gp1(0x03000000);
+  t.gp0(0xE3000000), t.gp0(0xE4000000 | 239u << 10 | 319);
+  const std::vector<u8> start = t.eager.state();
+  ASSERT_EQ(start, t.lazy.state());
+  for (u32 i = 0; i < 50; ++i) {
+    t.gp0(0x600000FF | i << 8), t.gp0(xy(static_cast<int>(i) * 4, 10)), t.gp0(xy(8, 8));  // rectangles
+    t.gp0(0xE1000000 | (i & 15));                                                          // texture pages
+  }
+  EXPECT_EQ(t.lazy.gpu.logged_draws(), 50u);
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), 50u);
+  for (Rig* r : {&t.eager, &t.lazy}) {
+    psx::StateIO s(start.data(), start.size());
+    r->gpu.do_state(s);
+  }
+  EXPECT_EQ(t.lazy.gpu.queued_draws(), 0u);
+  ASSERT_EQ(t.eager.state(), t.lazy.state());
+}
+
+// A filled log (Gpu::kMaxLogWords) is decoded into the queue, which then takes the commands as
+// they come until the next state load logs them again; VRAM ends as eager drawing leaves it.
+// 1x1 fills of 3 words each, spread over VRAM so that no prune drops them all.
+TEST(GpuDrawLog, FullLogGivesWayToTheQueue) {
+  Twins t(true);
+  const std::vector<u8> start = t.lazy.state();
+  u32 n = 0;
+  const auto fill = [&] {
+    t.gp0(0x02000000 | n), t.gp0(xy(static_cast<int>(n % 1024) & ~15, static_cast<int>(n / 1024 % 512))),
+        t.gp0(xy(1, 1));
+    ++n;
+  };
+  while (t.lazy.gpu.logged_draws() < psx::Gpu::kMaxLogWords / 3) fill();
+  fill();  // the log's last words: decoded
+  EXPECT_EQ(t.lazy.gpu.logged_draws(), 0u);
+  fill();
+  EXPECT_EQ(t.lazy.gpu.logged_draws(), 0u);  // queued as it came
+  EXPECT_GT(t.lazy.gpu.queued_draws(), 0u);
+  ASSERT_EQ(std::memcmp(t.eager.gpu.vram(), t.lazy.gpu.vram(), psx::gpu::kVramPixels * 2), 0);
+  psx::StateIO s(start.data(), start.size());
+  t.lazy.gpu.do_state(s);
+  t.lazy.gp0(0x02000000), t.lazy.gp0(xy(0, 0)), t.lazy.gp0(xy(16, 16));
+  EXPECT_EQ(t.lazy.gpu.logged_draws(), 1u);  // logged again after the load
+}
+
+// In 480-line interlace without GP0(E1).10 a primitive leaves alone the rows of the field shown
+// when it comes, so it is decoded at once; with E1.10 set it is logged. Both end as eager drawing.
+TEST(GpuDrawLog, FieldRowsAreNotLogged) {
+  Twins t(true);
+  t.gp1(0x08000024), t.gp1(0x03000000);  // 480-line interlace
+  t.gp0(0xE3000000), t.gp0(0xE4000000 | 479u << 10 | 639);
+  t.gp0(0xE1000000);
+  t.gp0(0x60112233), t.gp0(xy(0, 0)), t.gp0(xy(64, 64));
+  EXPECT_EQ(t.lazy.gpu.logged_draws(), 0u);
+  t.frame();
+  t.gp0(0xE1000400);  // draw to the displayed field too
+  t.gp0(0x60445566), t.gp0(xy(32, 32)), t.gp0(xy(64, 64));
+  EXPECT_EQ(t.lazy.gpu.logged_draws(), 1u);
+  t.frame();
+  t.gp0(0xE1000000);
+  t.gp0(0x60778899), t.gp0(xy(48, 48)), t.gp0(xy(64, 64));
+  EXPECT_EQ(t.lazy.gpu.logged_draws(), 0u);  // the log went to the queue first, in order
+  ASSERT_EQ(std::memcmp(t.eager.gpu.vram(), t.lazy.gpu.vram(), psx::gpu::kVramPixels * 2), 0);
+  ASSERT_EQ(t.eager.state(), t.lazy.state());
 }
 
 }  // namespace

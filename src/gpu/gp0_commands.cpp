@@ -19,11 +19,9 @@ inline void set_colour(gpu::Vertex& v, u32 colour) {
   v.r = static_cast<u8>(colour), v.g = static_cast<u8>(colour >> 8), v.b = static_cast<u8>(colour >> 16);
 }
 
-}  // namespace
-
 // Words per command, including the command word. Polylines are counted up to their first
 // segment; the rest streams through gp0_polyline_word.
-u32 Gpu::gp0_command_length(u32 c) {
+constexpr u32 command_length(u32 c) {
   switch (c >> 5) {
     case 1: {  // polygon: vertex (+ texcoord) per corner, + colour per corner after the first when shaded
       u32 corners = (c & 0x08) ? 4 : 3;
@@ -37,6 +35,14 @@ u32 Gpu::gp0_command_length(u32 c) {
     default: return c == 0x02 ? 3 : 1;
   }
 }
+
+}  // namespace
+
+const std::array<u8, 256> Gpu::kGp0Lengths = [] {
+  std::array<u8, 256> t{};
+  for (u32 c = 0; c < 256; ++c) t[c] = static_cast<u8>(command_length(c));
+  return t;
+}();
 
 void Gpu::gp0_write(u32 word) {
   if (gp0_mode_ == Gp0Mode::CpuToVram) {
@@ -56,7 +62,7 @@ void Gpu::gp0_write(u32 word) {
 }
 
 void Gpu::gp0_execute(const u32* w) {
-  if (log_wanted_ && !replaying_ && !log_full_ && draw_.deferred() && log_command(w)) return;
+  if (logging_ && log_command(w)) return;
   const u32 c = w[0] >> 24;
   switch (c >> 5) {
     case 1: return gp0_polygon(w);

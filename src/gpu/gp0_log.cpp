@@ -67,6 +67,7 @@ bool Gpu::log_command(const u32* w) {
     // the commands as they come again until the next load.
     replay_log();
     log_full_ = true;
+    update_logging();
   }
   return true;
 }
@@ -76,13 +77,13 @@ void Gpu::replay_log() {
   if (log_words_ == 0) return;
   const DecodeRegs now = decode_regs();
   set_decode_regs(log_start_);
-  replaying_ = true;
+  logging_ = false;  // the commands replayed go to the queue
   for (size_t i = 0; i < log_words_; i += gp0_command_length(log_[i] >> 24)) {
     if (log_frame_ && i == log_frame_at_) draw_.frame_due(log_frame_area_), log_frame_ = false;
     gp0_execute(&log_[i]);
   }
   if (log_frame_) draw_.frame_due(log_frame_area_), log_frame_ = false;
-  replaying_ = false;
+  update_logging();
   set_decode_regs(now);
   log_words_ = 0;
   log_draws_ = 0;
@@ -91,10 +92,14 @@ void Gpu::replay_log() {
 void Gpu::set_draw_log(bool on) {
   replay_log();
   log_wanted_ = on;
+  update_logging();
 }
+
+void Gpu::update_logging() { logging_ = log_wanted_ && !log_full_ && draw_.deferred(); }
 
 void Gpu::drop_log() {
   log_full_ = false;
+  update_logging();
   log_words_ = 0;
   log_draws_ = 0;
   log_frame_ = false;

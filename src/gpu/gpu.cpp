@@ -230,6 +230,7 @@ void Gpu::set_deferred_drawing(bool on) {
   deferral_wanted_ = on;
   replay_log();
   draw_.set_deferred(on && dynamic_cast<gpu::SoftwareRenderer*>(renderer_.get()) != nullptr);
+  update_logging();
 }
 
 void Gpu::vblank_started() {

@@ -3,6 +3,7 @@
 // +4, and DMA channel 2. Command processing lives here and in gp0_commands.cpp; drawing is done by
 // a Renderer backend; video timing and frame output are separate helpers this class owns.
 #pragma once
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -76,9 +77,9 @@ class Gpu final : public IoDevice, public DmaPort {
   // The draw log, on by default, keeps deferred drawing commands undecoded (gp0_log.cpp); off,
   // they are decoded and queued as they come (what is logged is queued first).
   void set_draw_log(bool on);
-  // The log's words at most (1 MiB): filled, it is decoded, and commands are queued as they come
+  // The log's words at most (2 MiB): filled, it is decoded, and commands are queued as they come
   // until the next state load.
-  static constexpr size_t kMaxLogWords = size_t{1} << 18;
+  static constexpr size_t kMaxLogWords = size_t{1} << 19;
   // The whole VRAM as 1024x512 RGB888, converted on each call.
   const u8* vram_rgb();
 
@@ -106,7 +107,9 @@ class Gpu final : public IoDevice, public DmaPort {
   };
 
   // GP0 (gp0_commands.cpp)
-  static u32 gp0_command_length(u32 command);
+  // Words per command (the command word included; a polyline up to its first segment).
+  static const std::array<u8, 256> kGp0Lengths;
+  static u32 gp0_command_length(u32 command) { return kGp0Lengths[command & 0xFF]; }
   // A whole command's words: the FIFO's, or a DMA block's where it lies (dma_write()).
   void gp0_execute(const u32* w);
   void gp0_polygon(const u32* w);
@@ -140,6 +143,7 @@ class Gpu final : public IoDevice, public DmaPort {
   void replay_log();
   void settle_log() const { const_cast<Gpu*>(this)->replay_log(); }
   void drop_log();
+  void update_logging();
   DecodeRegs decode_regs() const;
   void set_decode_regs(const DecodeRegs& r);
 
@@ -169,9 +173,9 @@ class Gpu final : public IoDevice, public DmaPort {
   size_t log_words_ = 0;
   size_t log_draws_ = 0;  // drawing commands in the log
   DecodeRegs log_start_{};  // the registers before the log's first command
-  bool replaying_ = false;
   bool log_full_ = false;  // the log filled up: off until the next state load
   bool log_wanted_ = true;  // set_draw_log()
+  bool logging_ = false;    // commands go to the log now: wanted, not full, drawing deferred
   // The VBlank frame noted while the log held log_frame_at_ words (DrawQueue::frame_due there).
   bool log_frame_ = false;
   size_t log_frame_at_ = 0;

@@ -444,16 +444,19 @@ TEST(GpuDeferred, TumbleMovesSameStates) {
   }
   EXPECT_GT(queued, 0u);
   EXPECT_GT(logged, 0u);
-  // Left alone for ten seconds of play, the log fills (no state load drops it) and gives way to
-  // the queue, which stays far below its cap (the sky quad prunes); a drawing command is at
-  // least 3 words.
+  // Left alone, the log fills (no state load drops it) and gives way to the queue, which then
+  // stays far below its cap for ten seconds of play (the sky quad prunes); a drawing command is
+  // at least 3 words.
   size_t most = 0, most_logged = 0;
-  for (int f = 0; f < 600; ++f) {
+  int full_at = -1;
+  for (int f = 0; f < 1200 && (full_at < 0 || f < full_at + 600); ++f) {
     unseen.console.run_frame(), seen.console.run_frame();
     const psx::Gpu& gpu = unseen.console.gpu();
     most = std::max(most, gpu.queued_draws() - gpu.logged_draws());
     most_logged = std::max(most_logged, gpu.logged_draws());
+    if (full_at < 0 && gpu.logged_draws() == 0) full_at = f;
   }
+  EXPECT_GE(full_at, 0);  // it filled within 1200 frames (20 s)
   EXPECT_EQ(unseen.console.gpu().logged_draws(), 0u);
   EXPECT_LE(most_logged, psx::Gpu::kMaxLogWords / 3);
   EXPECT_LT(most, psx::gpu::DrawQueue::kMaxCommands / 4);

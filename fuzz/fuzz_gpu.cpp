@@ -1,9 +1,10 @@
 // Guest-side fuzzing of the GPU (src/gpu/gpu.h) and its DMA channel: random GP0 command words,
 // GP1 display commands, GPUREAD/GPUSTAT reads, RAM contents and DMA register writes (block and
 // linked-list transfers on channel 2, ordering tables on channel 6), with the scheduler run in
-// between so VBlank, transfers and IRQs happen. Odd commands and wild DMA are guest behaviour:
-// they must never touch host memory outside VRAM and RAM. Each input is a list of operations,
-// an op byte then its arguments; emulated time is capped per input so a run stays short.
+// between so VBlank, transfers and IRQs happen, with drawing deferred or not. Odd commands and
+// wild DMA are guest behaviour: they must never touch host memory outside VRAM and RAM. Each
+// input is a list of operations, an op byte then its arguments; emulated time is capped per input
+// so a run stays short.
 #include <algorithm>
 
 #include "core/bus.h"
@@ -45,6 +46,9 @@ struct Rig {
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, size_t size) {
   if (size > 16 * 1024) return 0;  // bounds the drawing work per input
   Rig r;
+  // Odd-sized inputs run with drawing deferred (the draw log and queue, gp0_log.cpp), even ones
+  // drawing at once, so the ops keep their meaning either way.
+  r.gpu.set_deferred_drawing(size & 1);
   psxfuzz::Reader in(data, size);
   Cycles budget = kMaxCycles;
   u32 words[256];

@@ -186,16 +186,27 @@ bool Reverb::quiet_ticks(u32 n) {
   skip_quiet(skipped);
   // The last ticks, whose values a later tick could still read: owe() with clear_ticks_ > 0 (it
   // counts down from n or more), side by side as end_tick() alternates them.
+  // Each side's ticks take the next slots of its ring in turn, each owing the buffer address of
+  // its tick, which moves after every right-side tick: the k-th right tick and the k-th left one
+  // (k from 0) see k moves, a left tick one more where a right tick came first.
   const u32 owed = n - skipped;
-  u32 side = phase_;
-  for (u32 k = 0; k < owed; ++k) {
-    const u32 pos = out_pos_[side] = (out_pos_[side] + 1) & (kRing - 1);
-    owed_at_[side][pos] = current_;
-    owed_[side] |= u64{1} << pos;
-    if (side == 1) step_address();
-    side ^= 1;
+  const u32 longer = (owed + 1) / 2, shorter = owed / 2;  // ticks of the side first, then the other
+  const u32 count[2] = {phase_ == 0 ? longer : shorter, phase_ == 0 ? shorter : longer};
+  const u32 base = base_ * 4u;
+  for (u32 side = 0; side < 2; ++side) {
+    u32 address = current_;
+    if (side == 0 && phase_ == 1) address = std::max<u32>(base, (address + 1) & 0x3FFFF);
+    const u32 first = (out_pos_[side] + 1) & (kRing - 1);
+    for (u32 k = 0, pos = first; k < count[side]; ++k, pos = (pos + 1) & (kRing - 1)) {
+      owed_at_[side][pos] = address;
+      address = std::max<u32>(base, (address + 1) & 0x3FFFF);  // step_address()
+    }
+    out_pos_[side] = (out_pos_[side] + count[side]) & (kRing - 1);
+    const u64 slots = count[side] >= kRing ? ~u64{0} : (u64{1} << count[side]) - 1;
+    owed_[side] |= std::rotl(slots, static_cast<int>(first));
   }
-  phase_ = side;
+  step_address(count[1]);
+  phase_ ^= owed & 1;
   clear_ticks_ -= owed;
   return true;
 }

@@ -135,10 +135,12 @@ inline void Reverb::push_input(s32 in_left, s32 in_right) {
   zero_inputs_ = (in_left == 0 && in_right == 0) ? std::min(zero_inputs_ + 1, kRing) : 0;
 }
 
-inline void Reverb::step_address() {
+inline u32 Reverb::moved(u32 address) const {
   // psx-spx "SPU Reverb Formula": BufferAddress = MAX(mBASE, (BufferAddress+2) AND 7FFFEh).
-  current_ = std::max<u32>(base_ * 4u, (current_ + 1) & 0x3FFFF);
+  return std::max<u32>(base_ * 4u, (address + 1) & 0x3FFFF);
 }
+
+inline void Reverb::step_address() { current_ = moved(current_); }
 
 void Reverb::step_address(u32 k) {
   if (k == 0) return;
@@ -192,14 +194,12 @@ bool Reverb::quiet_ticks(u32 n) {
   const u32 owed = n - skipped;
   const u32 longer = (owed + 1) / 2, shorter = owed / 2;  // ticks of the side first, then the other
   const u32 count[2] = {phase_ == 0 ? longer : shorter, phase_ == 0 ? shorter : longer};
-  const u32 base = base_ * 4u;
   for (u32 side = 0; side < 2; ++side) {
-    u32 address = current_;
-    if (side == 0 && phase_ == 1) address = std::max<u32>(base, (address + 1) & 0x3FFFF);
+    u32 address = side == 0 && phase_ == 1 ? moved(current_) : current_;
     const u32 first = (out_pos_[side] + 1) & (kRing - 1);
     for (u32 k = 0, pos = first; k < count[side]; ++k, pos = (pos + 1) & (kRing - 1)) {
       owed_at_[side][pos] = address;
-      address = std::max<u32>(base, (address + 1) & 0x3FFFF);  // step_address()
+      address = moved(address);
     }
     out_pos_[side] = (out_pos_[side] + count[side]) & (kRing - 1);
     const u64 slots = count[side] >= kRing ? ~u64{0} : (u64{1} << count[side]) - 1;

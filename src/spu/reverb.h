@@ -79,6 +79,7 @@ class Reverb {
   static_assert(kTicksToOverwrite == 2 * kRing);
   void push_input(s32 in_left, s32 in_right);
   // The buffer address's move after each right-side tick, wrapping to ESA.
+  u32 moved(u32 address) const;
   void step_address();
   void step_address(u32 k);  // k of them at once
   void end_tick();

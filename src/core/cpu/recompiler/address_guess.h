@@ -13,6 +13,7 @@
 
 #include "core/bus.h"
 #include "core/cpu/decode.h"
+#include "core/cpu/recompiler/block_emitter.h"
 
 namespace psx {
 
@@ -29,16 +30,16 @@ class AddressGuess {
     if (!memory || !((known_ >> s) & 1)) return false;
     return !native_memory(val_[s] + simm(i));
   }
-  // The I/O port instruction i reaches where it is an LB, LH, LW, LBU, LHU, SB, SH or SW whose
-  // guessed address is aligned and in the I/O region (through KUSEG, KSEG0 or KSEG1); else 0.
-  u32 io_port(u32 i) const {
+  // The I/O port instruction i (compiled as `native`) reaches where it is an LB, LH, LW, LBU, LHU,
+  // SB, SH or SW whose guessed address is aligned and in the I/O region (through KUSEG, KSEG0 or
+  // KSEG1); else 0.
+  u32 io_port(u32 i, NativeOp native) const {
     using namespace cpu_detail;
-    const u32 o = op(i);
-    const bool plain = (o >= 0x20 && o <= 0x25 && o != 0x22) || o == 0x28 || o == 0x29 || o == 0x2B;
-    const u32 width = (o == 0x23 || o == 0x2B) ? 4 : (o == 0x21 || o == 0x25 || o == 0x29) ? 2 : 1;
+    const bool plain =
+        (native >= NativeOp::Lb && native <= NativeOp::Lhu) || (native >= NativeOp::Sb && native <= NativeOp::Sw);
     if (!plain || !((known_ >> rs(i)) & 1)) return 0;
     const u32 a = val_[rs(i)] + simm(i);
-    return (a & (width - 1)) == 0 && Bus::io_address(a) ? a : 0;
+    return (a & (access_width(native) - 1)) == 0 && Bus::io_address(a) ? a : 0;
   }
   // Follows what instruction i writes.
   void after(u32 i) {

@@ -34,6 +34,15 @@ enum class NativeOp : u8 {
   Beq, Bne, Blez, Bgtz, J, Jal, Jr, Jalr, Bltz, Bgez, Bltzal, Bgezal,
 };
 
+// The bytes a load or store moves (the word of LWL/LWR/SWL/SWR; 1 for what is no memory access).
+constexpr u32 access_width(NativeOp op) {
+  switch (op) {
+    case NativeOp::Lw: case NativeOp::Sw: case NativeOp::Lwc2: case NativeOp::Swc2: return 4;
+    case NativeOp::Lh: case NativeOp::Lhu: case NativeOp::Sh: return 2;
+    default: return 1;
+  }
+}
+
 class BlockEmitter {
  public:
   using StepFn = bool (*)(void* context, u32 pc, u32 word);

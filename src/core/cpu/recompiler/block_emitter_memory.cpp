@@ -30,14 +30,6 @@ constexpr u32 kNotRam = 0x1F800000;
 // scratchpad take the cold path, which sends the rest to the call step.
 constexpr u32 kNotCachedRam = 0x7F800000;
 
-u32 width_of(NativeOp op) {
-  switch (op) {
-    case NativeOp::Lw: case NativeOp::Sw: case NativeOp::Lwc2: case NativeOp::Swc2: return 4;
-    case NativeOp::Lh: case NativeOp::Lhu: case NativeOp::Sh: return 2;
-    default: return 1;
-  }
-}
-
 }  // namespace
 
 // What guard() checks once for a segment with loads or stores, because no native instruction
@@ -63,7 +55,7 @@ void Impl::memory_guard(bool stores, Label& fail) {
 // nothing after this reads the address, and the offset keeps its low two bits.
 void Impl::address_checks(NativeOp op, u32 i, Label& slow) {
   using namespace cpu_detail;
-  const u32 width = width_of(op);
+  const u32 width = access_width(op);
   with_reg(rs(i), [&](const Xbyak::Operand& o) { mov(r13d, o); });
   if (simm(i) != 0) add(r13d, simm(i));
   // One test on the main path: aligned, and KUSEG's or KSEG0's RAM.
@@ -384,7 +376,7 @@ void Impl::pending(std::span<const Step> run, size_t k, const Segment& seg) {
 // (WrittenPages::mark()), with CodePages::on_ram_write() called when the word holds compiled
 // code. Stores take no time (the write queue).
 void Impl::store(NativeOp op, u32 i) {
-  const u32 width = width_of(op);
+  const u32 width = access_width(op);
   Label& done = cold_label();
   if (op == NativeOp::Swc2) {  // SWC2: the GTE register, once the GTE is done
     wait_gte();

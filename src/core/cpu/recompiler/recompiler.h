@@ -114,13 +114,6 @@ class RecompilerT {
   static void store_call(Cpu& c, u32 instr);
   template <NativeOp K>
   static void load_call(Cpu& c, u32 instr);
-  // The bytes a load or store of kind K moves.
-  template <NativeOp K>
-  static constexpr u32 access_width() {
-    if constexpr (K == NativeOp::Lw || K == NativeOp::Sw) return 4;
-    else if constexpr (K == NativeOp::Lh || K == NativeOp::Lhu || K == NativeOp::Sh) return 2;
-    else return 1;
-  }
   template <NativeOp K>
   static u32 port_read(Cpu& c, u32 address);
   template <NativeOp K>
@@ -209,7 +202,7 @@ BlockEmitter::BlockFn RecompilerT<BusT>::compile(Cpu& cpu, u32 pc) {
     if (branch_in_slot || !memory_holds(a, word)) {
       native = NativeOp::None;
     } else if (native != NativeOp::None && guess.elsewhere(word)) {
-      io = delay_slot ? 0 : guess.io_port(word);  // not where a split branch's flag lives (r8)
+      io = delay_slot ? 0 : guess.io_port(word, native);  // not where a split branch's flag lives (r8)
       if (io == 0) native = NativeOp::None;
     }
     guess.after(word);

@@ -117,7 +117,7 @@ template <NativeOp K>
 void RecompilerT<BusT>::store_call(Cpu& c, u32 i) {
   using namespace cpu_detail;
   const u32 addr = c.regs_[rs(i)] + simm(i);
-  const bool plain = (addr & (access_width<K>() - 1)) == 0 && !(c.cop0_.sr & (Cop0::kKUc | Cop0::kIsC)) &&
+  const bool plain = (addr & (access_width(K) - 1)) == 0 && !(c.cop0_.sr & (Cop0::kKUc | Cop0::kIsC)) &&
                      !(c.cop0_.dcic & Cop0::kDcicDAE);
   if (!plain || !port_write<K>(c, addr, c.regs_[rt(i)])) c.execute(i);
 }
@@ -132,7 +132,7 @@ template <NativeOp K>
 void RecompilerT<BusT>::load_call(Cpu& c, u32 i) {
   using namespace cpu_detail;
   const u32 addr = c.regs_[rs(i)] + simm(i);
-  const bool plain = (addr & (access_width<K>() - 1)) == 0 && !(c.cop0_.sr & Cop0::kKUc) &&
+  const bool plain = (addr & (access_width(K) - 1)) == 0 && !(c.cop0_.sr & Cop0::kKUc) &&
                      !(c.cop0_.dcic & Cop0::kDcicDAE);
   if (!plain || !BusT::io_address(addr)) return c.execute(i);
   c.delayed_load(rt(i), port_read<K>(c, addr));
@@ -146,7 +146,7 @@ template <NativeOp K>
 u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address) {
   c.wait_load();
   u32 v;
-  c.bus_.read_io(address, v, access_width<K>());
+  c.bus_.read_io(address, v, access_width(K));
   if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
   if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
   return v;
@@ -157,7 +157,7 @@ u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address) {
 template <class BusT>
 template <NativeOp K>
 bool RecompilerT<BusT>::port_write(Cpu& c, u32 address, u32 value) {
-  constexpr u32 width = access_width<K>();
+  constexpr u32 width = access_width(K);
   return c.bus_.write_io(address, width == 4 ? value : value & ((1u << (width * 8)) - 1), width);
 }
 

@@ -76,12 +76,7 @@ void Gpu::gp0_execute(const u32* w) {
   switch (c) {
     case 0x02: return gp0_fill_rectangle(w);
     case 0x1F: return gp0_irq();
-    case 0xE1: return gp0_draw_mode(w[0]);
-    case 0xE2: return gp0_texture_window(w[0]);
-    case 0xE3: return gp0_draw_area_top_left(w[0]);
-    case 0xE4: return gp0_draw_area_bottom_right(w[0]);
-    case 0xE5: return gp0_draw_offset(w[0]);
-    case 0xE6: return gp0_mask_bit(w[0]);
+    case 0xE1: case 0xE2: case 0xE3: case 0xE4: case 0xE5: case 0xE6: return gp0_environment(w[0]);
     // 00h NOP, 01h clear texture cache (no cache is modelled: texels are always read from
     // VRAM), 03h-1Eh and E0h/E7h-FFh: no effect.
     default: return;
@@ -240,6 +235,18 @@ void Gpu::upload_pixels(const u16* pixels, u32 count) {
       upload_.active = false;
       gp0_mode_ = Gp0Mode::Command;
     }
+  }
+}
+
+// GP0(E1)-(E6), the drawing environment.
+void Gpu::gp0_environment(u32 word) {
+  switch (word >> 24) {
+    case 0xE1: return gp0_draw_mode(word);
+    case 0xE2: return gp0_texture_window(word);
+    case 0xE3: return gp0_draw_area_top_left(word);
+    case 0xE4: return gp0_draw_area_bottom_right(word);
+    case 0xE5: return gp0_draw_offset(word);
+    default: return gp0_mask_bit(word);
   }
 }
 

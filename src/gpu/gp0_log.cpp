@@ -51,17 +51,9 @@ bool Gpu::log_command(const u32* w) {
   std::copy_n(w, n, log_.get() + log_words_);
   log_words_ += n;
   if (draws || c == 0x02) ++log_draws_;
+  // A textured polygon's texpage rides in its second vertex's texcoord word (gp0_polygon()).
   if ((c >> 5) == 1 && (c & 0x04)) apply_texpage(w[(c & 0x10) ? 5 : 4] >> 16);
-  if (environment) {
-    switch (c) {
-      case 0xE1: gp0_draw_mode(w[0]); break;
-      case 0xE2: gp0_texture_window(w[0]); break;
-      case 0xE3: gp0_draw_area_top_left(w[0]); break;
-      case 0xE4: gp0_draw_area_bottom_right(w[0]); break;
-      case 0xE5: gp0_draw_offset(w[0]); break;
-      default: gp0_mask_bit(w[0]); break;
-    }
-  }
+  if (environment) gp0_environment(w[0]);
   if (log_words_ >= kMaxLogWords) {
     // A run this long without a state load is not an episode that ends soon: the queue takes
     // the commands as they come again until the next load.

@@ -120,6 +120,7 @@ class Gpu final : public IoDevice, public DmaPort {
   void gp0_copy_rectangle(const u32* w);
   void gp0_copy_to_vram(const u32* w);
   void gp0_copy_from_vram(const u32* w);
+  void gp0_environment(u32 word);  // E1-E6
   void gp0_draw_mode(u32 word);
   void gp0_texture_window(u32 word);
   void gp0_draw_area_top_left(u32 word);

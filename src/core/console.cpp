@@ -194,8 +194,6 @@ void Console::run_frame() {
     cpu_.run();
     sched_.run_due_events();
   }
-  // A frame ends with its samples made, as when the SPU's event ran at every sample.
-  spu_.sync();
 }
 
 void Console::run_frames(u64 n) {

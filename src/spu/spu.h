@@ -33,11 +33,11 @@ class Spu final : public IoDevice, public DmaPort {
   static constexpr u32 kNumVoices = 24;
   static constexpr u32 kSampleRate = 44100;
   static constexpr Cycles kCyclesPerSample = 768;  // 33.8688 MHz / 44.1 kHz
-  // Longest batch, in samples: more than a frame (882 samples at 50 Hz), so that a frame's own
-  // catch-up (Console::run_frame) ends most batches and the event rarely runs. Each event ends an
-  // idle skip and each catch-up has a fixed cost: batches of 256 cost Tumble's environment four
-  // catch-ups and three more skips a frame.
-  static constexpr u32 kDefaultMaxBatch = 1024;
+  // Longest batch, in samples: several frames (5.6 at 60 Hz). Each event ends an idle skip and
+  // each catch-up has a fixed cost. An observer's catch-up (an environment's per-frame
+  // take_loud()) does not move the event booked at the batch's start, so the event runs once per
+  // this many samples: at 1024, Tumble's environment made 2.3 catch-ups a frame; at 4096, 1.3.
+  static constexpr u32 kDefaultMaxBatch = 4096;
 
   Spu(Scheduler& sched, InterruptController& irq, AudioFifo& cd_audio);
 

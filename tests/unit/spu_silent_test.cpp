@@ -321,7 +321,8 @@ void quiet_workload(Rig& r, Lcg& steps, u16 esa, u16 attr_bits, u16 evol = 0x300
       r.sched.run_due_events();
     }
     if (round == 5) break;
-    r.run_for(3 * Spu::kDefaultMaxBatch * Spu::kCyclesPerSample, steps);
+    // 3072 samples a round: the main volume's sweep is still above 0 when EVOL is set.
+    r.run_for(3072 * Spu::kCyclesPerSample, steps);
     r.take();
   }
 }

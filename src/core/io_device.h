@@ -28,8 +28,9 @@ class DmaPort {
 
 // Video timing edges the GPU exports to the root counters (timers 0 and 1 count dots and
 // HBlanks and can synchronise to the blanking periods). Called at the scheduler time of the edge.
-// HBlank edges come only while wants_hblank() is true: two a scanline would otherwise be the
-// busiest events of the console, and nothing else needs them as events.
+// HBlank edges come only while wants_hblank() is true (timer 0 synchronised to HBlank): two a
+// scanline would otherwise be the busiest events of the console. Timer 1 counts HBlanks without
+// them (VideoClock::hblanks_by).
 class VideoSignals {
  public:
   virtual ~VideoSignals() = default;
@@ -50,6 +51,12 @@ class VideoClock {
   virtual ~VideoClock() = default;
   virtual bool hblank_now() = 0;
   virtual void hblank_wanted_changed() = 0;
+  // HBlank starts from power-on up to and including cycle t (t not before the last edge the
+  // video timing delivered), in closed form: how timer 1 counts HBlanks, with no event per line.
+  virtual u64 hblanks_by(Cycles t) const = 0;
+  // The cycle of HBlank start number n as hblanks_by() counts (n past the last delivered edge):
+  // when timer 1, counting HBlanks, reaches its interrupt.
+  virtual Cycles hblank_time(u64 n) const = 0;
 };
 
 }  // namespace psx

@@ -3,6 +3,7 @@
 #include "core/timers.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/irq.h"
 
@@ -58,7 +59,10 @@ u64 Timers::source_ticks(u32 i, Cycles elapsed) {
     c.phase = static_cast<u32>(total % 8);
     return (c.mode & kPscl) ? total / 8 : elapsed;
   }
-  return (c.mode & kExtc) ? 0 : elapsed;  // timer 1's HBlank ticks arrive as edges
+  if (!(c.mode & kExtc)) return elapsed;
+  // Timer 1 on HBlanks: the starts since the last catch-up (synced_at_ is now).
+  const u64 hblanks = video_ ? video_->hblanks_by(synced_at_) : hblank_mark_;
+  return hblanks - std::exchange(hblank_mark_, hblanks);
 }
 
 Cycles Timers::cycles_for_ticks(u32 i, u64 ticks) const {
@@ -167,9 +171,11 @@ void Timers::catch_up() {
 void Timers::reschedule() {
   Cycles best = Scheduler::kNever;
   for (u32 i = 0; i < 3; ++i) {
-    if (!counts_time(i) || !gate_open(i)) continue;
+    if (!gate_open(i)) continue;
     u64 ticks = ticks_to_irq(counters_[i]);
-    if (ticks != kNoIrq) best = std::min(best, cycles_for_ticks(i, ticks));
+    if (ticks == kNoIrq) continue;
+    if (counts_time(i)) best = std::min(best, cycles_for_ticks(i, ticks));
+    else if (video_) best = std::min(best, video_->hblank_time(hblank_mark_ + ticks) - sched_.now());
   }
   if (best == Scheduler::kNever) sched_.cancel(event_);
   else sched_.schedule(event_, best);
@@ -186,15 +192,12 @@ void Timers::blank_start(u32 i) {
   if (sync == 3) c.released = true;
 }
 
-bool Timers::wants_hblank() const { return (counters_[0].mode & kGatf) || (counters_[1].mode & kExtc); }
+bool Timers::wants_hblank() const { return counters_[0].mode & kGatf; }
 
 void Timers::hblank_changed(bool active) {
   catch_up();
   hblank_ = active;
-  if (active) {
-    blank_start(0);
-    if ((counters_[1].mode & kExtc) && gate_open(1)) advance(1, 1);
-  }
+  if (active) blank_start(0);
   reschedule();
 }
 
@@ -257,6 +260,8 @@ void Timers::io_write(u32 offset, u32 value, u32 width) {
       c.hold = true;
       c.irq_done = false;
       c.released = false;
+      // Timer 1 counts the HBlanks from here (catch_up() counted up to now for the old mode).
+      if (i == 1 && (c.mode & kExtc) && video_) hblank_mark_ = video_->hblanks_by(sched_.now());
       if (video_ && wants_hblank() != wanted) video_->hblank_wanted_changed();
       break;
     }
@@ -267,7 +272,9 @@ void Timers::io_write(u32 offset, u32 value, u32 width) {
 }
 
 void Timers::do_state(StateIO& s) {
-  s.section("TMRS", 2);
+  // Version 3 adds the HBlank count timer 1 has reached (version 2 loads it as 0, as the video
+  // timing's version 1 loads its count).
+  const u32 version = s.section("TMRS", 3, 2);
   for (Counter& c : counters_) {
     s.pod(c.value);
     s.pod(c.mode);
@@ -282,6 +289,8 @@ void Timers::do_state(StateIO& s) {
   s.boolean(vblank_);
   s.pod(video_hz_);
   s.pod(dot_divider_);
+  if (version >= 3) s.pod(hblank_mark_);
+  else hblank_mark_ = 0;
   s.end_section("TMRS");
 }
 

@@ -39,7 +39,7 @@ class Timers : public IoDevice, public VideoSignals {
   void io_write(u32 offset, u32 value, u32 width) override;
 
   // The GPU's video timing, which the timers ask for the HBlank state when they start wanting its
-  // edges (timer 0 synchronised to HBlank, timer 1 counting HBlanks).
+  // edges (timer 0 synchronised to HBlank) and for the HBlanks timer 1 counts, and when.
   void set_video_clock(VideoClock* clock) { video_ = clock; }
   bool wants_hblank() const override;
   void hblank_changed(bool active) override;
@@ -86,6 +86,10 @@ class Timers : public IoDevice, public VideoSignals {
   std::array<Counter, 3> counters_{};
   Cycles synced_at_ = 0;
   bool hblank_ = false;  // follows the edges only while wants_hblank()
+  // HBlank starts up to synced_at_ (VideoClock::hblanks_by), while timer 1 counts them: they come
+  // in closed form, not as edges, so that the CPU is not stopped twice a scanline (Sony's libetc
+  // and PSn00bSDK keep timer 1 on HBlanks for VSync()).
+  u64 hblank_mark_ = 0;
   bool vblank_ = false;
   // The dot clock: NTSC video clock, 256-pixel mode (10 video cycles per dot) after reset.
   u64 video_hz_ = 53693175;

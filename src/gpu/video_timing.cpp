@@ -54,6 +54,7 @@ void VideoTiming::pass_edge(Position& p) const {
   u32 line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
   if (!p.hblank) {
     p.hblank = true;
+    ++p.hblanks;
     advance(p, line_cycles - kActiveCycles);
     return;
   }
@@ -82,16 +83,39 @@ void VideoTiming::sync() const {
 // would. Whole lines are passed while the edge after them is due by `now` and none of them
 // reaches the line whose start changes VBlank; the last edges are left to pass_edge().
 void VideoTiming::pass_lines(Position& p, Cycles now) const {
-  const u64 hz = video_hz(), line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
-  // edge_at after n lines = edge_at + (remainder + n * line_cycles * kCpuClockHz) / hz <= now.
-  const u64 by_time = ((now - p.edge_at + 1) * hz - p.remainder - 1) / (line_cycles * kCpuClockHz);
+  const u64 by_time = lines_by(p, now), line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
   const u32 lines = lines_per_frame();
   const u32 boundary = vblank_ ? (pal_ ? kPalFirstVisible : kNtscFirstVisible) : (pal_ ? kPalVblankStart : kNtscVblankStart);
   const u32 before_boundary = (boundary + lines - p.line - 1) % lines;  // lines line+1.. that are not it
   const u64 n = std::min<u64>(by_time, before_boundary);
   if (n == 0) return;
   p.line = static_cast<u32>((p.line + n) % lines);
+  p.hblanks += n;  // a line holds one HBlank start
   advance(p, n * line_cycles);
+}
+
+u64 VideoTiming::lines_by(const Position& p, Cycles now) const {
+  const u64 hz = video_hz(), line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
+  // edge_at after n lines = edge_at + (remainder + n * line_cycles * kCpuClockHz) / hz <= now.
+  return ((now - p.edge_at + 1) * hz - p.remainder - 1) / (line_cycles * kCpuClockHz);
+}
+
+VideoTiming::Position VideoTiming::next_hblank(Position p) const {
+  if (p.hblank) pass_edge(p);  // the line start before it
+  return p;
+}
+
+u64 VideoTiming::hblanks_by(Cycles t) const {
+  // The edges are evenly spaced in video cycles, so the starts past the position are counted
+  // as pass_lines() counts lines, whatever the position has been brought up to.
+  const Position p = next_hblank(pos_);
+  return p.edge_at > t ? p.hblanks : p.hblanks + 1 + lines_by(p, t);
+}
+
+Cycles VideoTiming::hblank_time(u64 n) const {
+  Position p = next_hblank(pos_);  // its edge is HBlank start number p.hblanks + 1
+  advance(p, (n - p.hblanks - 1) * (pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine));
+  return p.edge_at;
 }
 
 bool VideoTiming::hblank_now() {
@@ -144,7 +168,8 @@ void VideoTiming::book() {
 void VideoTiming::do_state(StateIO& s) {
   // Saved up to date, so a state does not depend on when the position was last asked for.
   if (!s.loading()) sync();
-  s.section("GPUT", 1);
+  // Version 2 adds the HBlank starts passed (version 1 loads them as 0: timer 1 counts from there).
+  const u32 version = s.section("GPUT", 2, 1);
   s.boolean(pal_);
   s.boolean(interlaced_);
   s.pod(dot_divider_);
@@ -154,6 +179,8 @@ void VideoTiming::do_state(StateIO& s) {
   s.boolean(odd_field_);
   s.pod(pos_.edge_at);
   s.pod(pos_.remainder);
+  if (version >= 2) s.pod(pos_.hblanks);
+  else pos_.hblanks = 0;
   s.end_section("GPUT");
 }
 

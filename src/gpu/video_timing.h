@@ -49,6 +49,8 @@ class VideoTiming : public VideoClock {
 
   bool hblank_now() override;
   void hblank_wanted_changed() override;
+  u64 hblanks_by(Cycles t) const override;
+  Cycles hblank_time(u64 n) const override;
 
   void do_state(StateIO& s);
 
@@ -61,6 +63,7 @@ class VideoTiming : public VideoClock {
     bool hblank = false;
     Cycles edge_at = 0;
     u64 remainder = 0;
+    u64 hblanks = 0;  // HBlank starts passed since power-on
   };
 
   void on_event();
@@ -70,6 +73,11 @@ class VideoTiming : public VideoClock {
   bool next_edge_changes_vblank(const Position& p) const;
   void pass_edge(Position& p) const;
   void pass_lines(Position& p, Cycles now) const;
+  // Lines of `line_cycles` from p's next edge whose next edge is due by `now`: edges of p's next
+  // kind at or before now, less the first.
+  u64 lines_by(const Position& p, Cycles now) const;
+  // p moved on to its next HBlank start (itself where that is its next edge).
+  Position next_hblank(Position p) const;
   void advance(Position& p, u64 video_cycles) const;
   void deliver_edge();
   void book();

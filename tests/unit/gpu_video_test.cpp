@@ -132,6 +132,27 @@ TEST_F(GpuTest, HblankEdgesWantedMidFrameComeOnTime) {
   gpu.set_video_signals(nullptr);
 }
 
+// Timer 1 counts HBlanks in closed form (VideoClock::hblanks_by, hblank_time): HBlank n (from
+// 1) starts 2560 video cycles into line n - 1, at ntsc_line_time(n - 1, 2560). Asked at uneven
+// times, across VBlank, with the position brought up to date in between or not.
+TEST_F(GpuTest, HblankCountsAndTimesInClosedForm) {
+  const auto starts_by = [](Cycles t) {
+    u64 n = 0;
+    while (ntsc_line_time(n, 2560) <= t) ++n;
+    return n;
+  };
+  VideoClock& video = gpu.video_clock();
+  for (Cycles t : {Cycles{0}, Cycles{1615}, Cycles{1616}, Cycles{300000}, Cycles{566107}, Cycles{1234567}}) {
+    if (t > sched.now()) run(t - sched.now());
+    if (t == 300000) (void)stat();  // GPUSTAT.31 brings the line position up to date
+    EXPECT_EQ(video.hblanks_by(t), starts_by(t)) << t;
+    EXPECT_EQ(video.hblanks_by(t + 5000), starts_by(t + 5000)) << t;
+    const u64 next = video.hblanks_by(t) + 1;
+    EXPECT_EQ(video.hblank_time(next), ntsc_line_time(next - 1, 2560)) << t;
+    EXPECT_EQ(video.hblank_time(next + 300), ntsc_line_time(next + 299, 2560)) << t;
+  }
+}
+
 TEST_F(GpuTest, InterlaceFieldToggles) {
   gp1(0x08000024);  // 480 lines, interlaced
   std::vector<u32> fields;

@@ -193,15 +193,55 @@ TEST_F(TimersTest, Timer0DotclockPal) {
   EXPECT_EQ(count(0), 1702u);
 }
 
+// A video clock whose HBlanks start at cycles 100, 220, 340, ... (every 120 cycles; the real
+// line times are tested in gpu_video_test.cpp). Timer 1 asks it for them in closed form.
+class EvenHblanks : public VideoClock {
+ public:
+  bool hblank_now() override { return false; }
+  void hblank_wanted_changed() override {}
+  u64 hblanks_by(Cycles t) const override { return t < 100 ? 0 : (t - 100) / 120 + 1; }
+  Cycles hblank_time(u64 n) const override { return 100 + (n - 1) * 120; }
+};
+
 TEST_F(TimersTest, Timer1CountsHblanks) {
+  EvenHblanks video;
+  t.set_video_clock(&video);
+  at(50);
   set_mode(1, Timers::kExtc);
-  for (int i = 0; i < 5; ++i) {
-    at(sched.now() + 100);
-    t.hblank_changed(true);
-    at(sched.now() + 20);
-    t.hblank_changed(false);
-  }
-  EXPECT_EQ(count(1), 4u);  // 5 HBlanks, the first held
+  at(579);
+  EXPECT_EQ(count(1), 3u);  // HBlanks at 100, 220, 340, 460: the first held
+  at(580);
+  EXPECT_EQ(count(1), 4u);
+  at(580 + 10 * 120);
+  EXPECT_EQ(count(1), 14u);
+  // From a MODE write on, only later HBlanks count (the held one first).
+  set_mode(1, Timers::kExtc);
+  at(580 + 12 * 120);
+  EXPECT_EQ(count(1), 1u);
+}
+
+TEST_F(TimersTest, Timer1HblankIrqOnTheHblankThatReachesComp) {
+  // COMP 3 after the held tick: the 4th HBlank after the MODE write at 50 (at 460) reaches it,
+  // and the IRQ comes on that cycle, from the timers' own event (no event per HBlank).
+  EvenHblanks video;
+  t.set_video_clock(&video);
+  at(50);
+  t.io_write(reg(1, kTarget), 3, 2);
+  set_mode(1, Timers::kExtc | Timers::kCmp | Timers::kZret | Timers::kRept);
+  EXPECT_EQ(sched.when(sched.find("timers")), 460u);
+  at(459);
+  EXPECT_FALSE(irq_line(1));
+  at(460);
+  EXPECT_TRUE(irq_line(1));
+  ack();
+  // A reset at COMP holds 0 for two ticks (psx-spx "Reset and Wrap"): the HBlanks at 580 and 700
+  // leave it at 0, those at 820, 940 and 1060 count to 3.
+  EXPECT_EQ(sched.when(sched.find("timers")), 1060u);
+  at(1059);
+  EXPECT_FALSE(irq_line(1));
+  EXPECT_EQ(count(1), 2u);
+  at(1060);
+  EXPECT_TRUE(irq_line(1));
 }
 
 TEST_F(TimersTest, SyncMode0PausesDuringHblank) {

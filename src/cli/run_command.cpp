@@ -200,6 +200,10 @@ int run_command(const std::vector<std::string>& args) {
     return kBadInput;
   }
 
+  // Headless: nothing looks at a frame as it ends (a screenshot converts VRAM as it is then, with
+  // the drawing owed made first) and only --wav listens. Either way the same bits.
+  console.set_pixels_observed(false);
+  console.set_sound_observed(!wav.empty());
   if (!wav.empty()) console.keep_all_audio();
   Pacer pacer(60000.0 / 1001.0);  // NTSC frame rate
   std::vector<std::string> written;

@@ -1,13 +1,14 @@
 // psxrl's one-command benchmark: the machine, then emulation speed (emulated frames per second
-// and multiple of real time) on a CPU-bound program, a GTE/GPU-bound program and Tumble (title
-// and in play, idle skipping on and off), each with the interpreter and the recompiler,
-// environment moves per second per observation kind, vector-environment scaling over threads
-// (batched and asynchronous), host memory per console, save-state and snapshot times and the
-// environment's reset time. Prints Markdown tables, then the same figures as JSON. The host clock
+// and multiple of real time) on a CPU-bound program, a GTE/GPU-bound program, a VSync-bound cube
+// and Tumble (title and in play; the last three with idle skipping on and off), each with the
+// interpreter and the recompiler, environment moves per second per observation kind,
+// vector-environment scaling over threads (batched and asynchronous), host memory per console,
+// save-state and snapshot times and the environment's reset time. Prints Markdown tables, then the same figures as JSON. The host clock
 // is used only to time the runs; on a shared machine figures vary with its load, which is
 // printed with them.
 #include <malloc.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -65,6 +66,8 @@ struct Workload {
   std::string exe;
   bool level;      // Tumble: start level 1 and play (moves every 40 frames)
   int warm_frames;
+  int frames;      // timed
+  bool waits;      // waits for VBlank: also measured with idle skipping off
 };
 
 // Emulated frames per second and multiple of real time over `frames` frames after warming up,
@@ -97,16 +100,19 @@ void measure(const Workload& w, Console::CpuMode cpu, bool skip, int frames, Jso
 
 void emulation(Json& json) {
   const std::vector<Workload> loads = {
-      {"cpu_loop", "CPU-bound (bench/roms/cpu_loop.c)", PSXRL_BUILD_DIR "/bench/cpu_loop.exe", false, 10},
-      {"gte_gpu_loop", "GTE/GPU-bound (bench/roms/gte_gpu_loop.c)", PSXRL_BUILD_DIR "/bench/gte_gpu_loop.exe", false, 10},
-      {"tumble_title", "Tumble, title", kTumble, false, 200},
-      {"tumble_level", "Tumble, level 1 in play", kTumble, true, 200},
+      {"cpu_loop", "CPU-bound (bench/roms/cpu_loop.c)", PSXRL_BUILD_DIR "/bench/cpu_loop.exe", false, 10, 300, false},
+      {"gte_gpu_loop", "GTE/GPU-bound (bench/roms/gte_gpu_loop.c)", PSXRL_BUILD_DIR "/bench/gte_gpu_loop.exe", false, 10,
+       300, false},
+      {"vsync_cube", "VSync-bound cube (bench/roms/vsync_cube.c)", PSXRL_BUILD_DIR "/bench/vsync_cube.exe", false, 10,
+       3000, true},
+      {"tumble_title", "Tumble, title", kTumble, false, 200, 300, true},
+      {"tumble_level", "Tumble, level 1 in play", kTumble, true, 200, 300, true},
   };
   std::printf("\n## Emulation\n\n| workload | cpu | idle skip | frames/s | real time |\n| --- | --- | --- | --- | --- |\n");
   for (const Workload& w : loads) {
     for (Console::CpuMode cpu : {Console::CpuMode::Interpreter, Console::CpuMode::Recompiler}) {
-      measure(w, cpu, true, 300, json);
-      if (w.exe == kTumble) measure(w, cpu, false, 300, json);
+      measure(w, cpu, true, w.frames, json);
+      if (w.waits) measure(w, cpu, false, std::min(w.frames, 300), json);
     }
   }
 }

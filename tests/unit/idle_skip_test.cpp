@@ -473,6 +473,18 @@ TEST(IdleSkipPrograms, CdbootRomBootsTumbleDisc) {
   expect_same(tumble_test::boot_disc_with_cdboot_rom, [](Console& c) { c.run_frames(300); });
 }
 
+TEST(IdleSkipPrograms, VsyncCubeWithTimer1OnHblanks) {
+  // Waits for the GPU's DMA and for VBlank with timer 1 counting HBlanks, which it takes in closed
+  // form (VideoClock::hblanks_by): no event per HBlank edge ends its skips. With one, a frame's
+  // wait was cut at each of its 526 edges; without, about 2 skips a frame.
+  const auto boot = [](Console& c) { c.boot_exe(PSXRL_BUILD_DIR "/bench/vsync_cube.exe"); };
+  expect_same(boot, [](Console& c) { c.run_frames(240); });
+  Console c;
+  boot(c);
+  c.run_frames(240);
+  EXPECT_LT(c.idle_skip_stats().skips, 240u * 10);
+}
+
 TEST(IdleSkipPrograms, TestRoms) {
   for (const char* name : {"gpu_polygons", "dma_modes", "cdrom_controller", "timers_video", "spu_voices", "sio_pad",
                            "cpu_load_timing", "cpu_icache_code"}) {

@@ -304,6 +304,25 @@ TEST_F(GpuTest, DisplayOutput15BitWrapsAtTheVramEdge) {
   EXPECT_EQ(at(320), (std::vector<int>{0, 0, 0}));  // the next row's first pixel (VRAM (1000, 1))
 }
 
+TEST_F(GpuTest, DisplayOutputConvertsEveryColour) {
+  // A 256x240 display holding every 15-bit colour, then the first 28,672 again with the mask bit
+  // (bit 15) set, which the display ignores: each channel is (c << 3) | (c >> 2).
+  for (u32 i = 0; i < 256 * 240; ++i) poke(i % 256, i / 256, static_cast<u16>(i & 0xFFFF));
+  gp1(0x08000000);  // 256x240 NTSC
+  gp1(0x03000000);
+  run(vblank_time(256, 263, 3413, 53693175, 0) + 1);
+  ASSERT_EQ(gpu.display_width(), 256u);
+  ASSERT_EQ(gpu.display_height(), 240u);
+  const u8* rgb = gpu.display_rgb();
+  const auto expand = [](u32 c) { return static_cast<int>((c << 3) | (c >> 2)); };
+  for (u32 i = 0; i < 256 * 240; ++i) {
+    const u32 c = i & 0x7FFF;
+    ASSERT_EQ(rgb[i * 3], expand(c & 31)) << i;
+    ASSERT_EQ(rgb[i * 3 + 1], expand((c >> 5) & 31)) << i;
+    ASSERT_EQ(rgb[i * 3 + 2], expand(c >> 10)) << i;
+  }
+}
+
 TEST_F(GpuTest, DisplayOutput24BitAndDisabled) {
   gp0({0xA0000000, 0x00000000, 0x00010003, 0x44332211, 0x00006655});
   gp1(0x08000011);  // 320 wide, 24-bit

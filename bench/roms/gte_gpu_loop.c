@@ -4,17 +4,11 @@
    no idle time. Uses Tumble's GTE access macros (games/tumble/src/gte.h). */
 #include <stdint.h>
 
+#include "bench_video.h"
 #include "gte.h"
 
-#define GP0 (*(volatile uint32_t *)0x1F801810)
-#define GP1 (*(volatile uint32_t *)0x1F801814)
-
 static void gpu_setup(void) {
-  GP1 = 0x00000000;                 /* reset */
-  GP1 = 0x08000001;                 /* 320x240, NTSC, 15-bit */
-  GP1 = 0x06C60260;                 /* horizontal display range */
-  GP1 = 0x07042018;                 /* vertical display range */
-  GP1 = 0x03000000;                 /* display on */
+  display_320x240();
   GP0 = 0xE1000200;                 /* dither on */
   GP0 = 0xE3000000;                 /* drawing area 0,0 .. */
   GP0 = 0xE4000000 | (239u << 10) | 319u;
@@ -31,10 +25,7 @@ static void set_rotation(int32_t c, int32_t s) {
 }
 
 int main(void) {
-  uint32_t sr;
-  __asm__ volatile("mfc0 %0, $12" : "=r"(sr));
-  sr |= 1u << 30; /* CU2 */
-  __asm__ volatile("mtc0 %0, $12\n\tnop\n\tnop" : : "r"(sr));
+  enable_gte();
   gpu_setup();
   gte_ctc2(0, 5);
   gte_ctc2(0, 6);

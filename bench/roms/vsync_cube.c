@@ -8,11 +8,10 @@
    "Interrupt Control", "GPU Display Control Commands"). */
 #include <stdint.h>
 
+#include "bench_video.h"
 #include "gte.h"
 
 #define REG(a) (*(volatile uint32_t *)(a))
-#define GP0 REG(0x1F801810)
-#define GP1 REG(0x1F801814)
 #define I_STAT REG(0x1F801070)
 #define DPCR REG(0x1F8010F0)
 #define D2_MADR REG(0x1F8010A0)
@@ -107,15 +106,8 @@ static void vsync(void) {
 }
 
 int main(void) {
-  uint32_t sr;
-  __asm__ volatile("mfc0 %0, $12" : "=r"(sr));
-  sr |= 1u << 30; /* CU2 */
-  __asm__ volatile("mtc0 %0, $12\n\tnop\n\tnop" : : "r"(sr));
-  GP1 = 0x00000000;  /* reset */
-  GP1 = 0x08000001;  /* 320x240, NTSC, 15-bit */
-  GP1 = 0x06C60260;  /* horizontal display range */
-  GP1 = 0x07042018;  /* vertical display range */
-  GP1 = 0x03000000;  /* display on */
+  enable_gte();
+  display_320x240();
   GP1 = 0x04000002;  /* DMA direction CPU to GP0 */
   DPCR |= 0x08000800; /* enable DMA channels 2 and 6 */
   T1_MODE = 0x0100;  /* timer 1 counts HBlanks */

@@ -86,6 +86,43 @@ TEST(Observation, LocalCropRotatesWithTheFacing) {
   EXPECT_EQ(std::vector<float>(big, big + 12), (std::vector<float>{V, F, I, V, F, I, V, F, I, V, I, F}));
 }
 
+TEST(Observation, VisualPlanesAreEachBoxsMean) {
+  // Against the definition, box by box: output pixel (ox, oy) averages the frame's pixels with
+  // cx + ox*cw/out_w <= x < cx + (ox+1)*cw/out_w (at least one column) and likewise in y, those
+  // outside the frame as 0, rounded down; gray is (299 R + 587 G + 114 B) / 1000 of the sums.
+  std::vector<std::uint8_t> rgb(37 * 23 * 3);
+  std::uint32_t seed = 12345;
+  for (auto& v : rgb) v = static_cast<std::uint8_t>((seed = seed * 1103515245u + 12345u) >> 24);
+  struct Crop {
+    int cx, cy, cw, ch, out_w, out_h;
+  };
+  for (const Crop c : {Crop{0, 0, 37, 23, 8, 5}, Crop{3, 2, 30, 20, 30, 20}, Crop{5, 1, 40, 30, 7, 9},
+                       Crop{0, 0, 37, 23, 50, 40}, Crop{36, 22, 4, 4, 2, 2}}) {
+    for (bool gray : {false, true}) {
+      const size_t plane = static_cast<size_t>(c.out_w) * c.out_h;
+      std::vector<std::uint8_t> got(plane * (gray ? 1 : 3));
+      visual_planes(rgb.data(), 37, 23, c.cx, c.cy, c.cw, c.ch, c.out_w, c.out_h, gray, got.data());
+      for (int oy = 0; oy < c.out_h; ++oy)
+        for (int ox = 0; ox < c.out_w; ++ox) {
+          const int x0 = c.cx + ox * c.cw / c.out_w, x1 = std::max(x0 + 1, c.cx + (ox + 1) * c.cw / c.out_w);
+          const int y0 = c.cy + oy * c.ch / c.out_h, y1 = std::max(y0 + 1, c.cy + (oy + 1) * c.ch / c.out_h);
+          unsigned sum[3] = {0, 0, 0};
+          for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x)
+              for (int k = 0; k < 3; ++k)
+                if (x < 37 && y < 23) sum[k] += rgb[(static_cast<size_t>(y) * 37 + x) * 3 + k];
+          const unsigned n = static_cast<unsigned>((x1 - x0) * (y1 - y0));
+          const size_t at = static_cast<size_t>(oy) * c.out_w + ox;
+          if (gray) {
+            ASSERT_EQ(got[at], (299 * sum[0] + 587 * sum[1] + 114 * sum[2]) / (1000 * n)) << ox << "," << oy;
+          } else {
+            for (int k = 0; k < 3; ++k) ASSERT_EQ(got[k * plane + at], sum[k] / n) << ox << "," << oy << " " << k;
+          }
+        }
+    }
+  }
+}
+
 TEST(Observation, VisualPlanesAverageTheCropAndSplitChannels) {
   // A 4x2 frame: left half (10,20,30), right half (50,60,70); crop the right 2x2, one output pixel.
   std::vector<std::uint8_t> rgb;

@@ -51,11 +51,10 @@ void VideoTiming::advance(Position& p, u64 video_cycles) const {
 // The edge at p.edge_at: HBlank starts (the line's active part is over), or it ends and the next
 // line starts.
 void VideoTiming::pass_edge(Position& p) const {
-  u32 line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
   if (!p.hblank) {
     p.hblank = true;
     ++p.hblanks;
-    advance(p, line_cycles - kActiveCycles);
+    advance(p, line_cycles() - kActiveCycles);
     return;
   }
   p.hblank = false;
@@ -83,7 +82,7 @@ void VideoTiming::sync() const {
 // would. Whole lines are passed while the edge after them is due by `now` and none of them
 // reaches the line whose start changes VBlank; the last edges are left to pass_edge().
 void VideoTiming::pass_lines(Position& p, Cycles now) const {
-  const u64 by_time = lines_by(p, now), line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
+  const u64 by_time = lines_by(p, now);
   const u32 lines = lines_per_frame();
   const u32 boundary = vblank_ ? (pal_ ? kPalFirstVisible : kNtscFirstVisible) : (pal_ ? kPalVblankStart : kNtscVblankStart);
   const u32 before_boundary = (boundary + lines - p.line - 1) % lines;  // lines line+1.. that are not it
@@ -91,13 +90,13 @@ void VideoTiming::pass_lines(Position& p, Cycles now) const {
   if (n == 0) return;
   p.line = static_cast<u32>((p.line + n) % lines);
   p.hblanks += n;  // a line holds one HBlank start
-  advance(p, n * line_cycles);
+  advance(p, n * line_cycles());
 }
 
 u64 VideoTiming::lines_by(const Position& p, Cycles now) const {
-  const u64 hz = video_hz(), line_cycles = pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine;
-  // edge_at after n lines = edge_at + (remainder + n * line_cycles * kCpuClockHz) / hz <= now.
-  return ((now - p.edge_at + 1) * hz - p.remainder - 1) / (line_cycles * kCpuClockHz);
+  const u64 hz = video_hz();
+  // edge_at after n lines = edge_at + (remainder + n * line_cycles() * kCpuClockHz) / hz <= now.
+  return ((now - p.edge_at + 1) * hz - p.remainder - 1) / (u64{line_cycles()} * kCpuClockHz);
 }
 
 VideoTiming::Position VideoTiming::next_hblank(Position p) const {
@@ -114,7 +113,7 @@ u64 VideoTiming::hblanks_by(Cycles t) const {
 
 Cycles VideoTiming::hblank_time(u64 n) const {
   Position p = next_hblank(pos_);  // its edge is HBlank start number p.hblanks + 1
-  advance(p, (n - p.hblanks - 1) * (pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine));
+  advance(p, (n - p.hblanks - 1) * line_cycles());
   return p.edge_at;
 }
 
@@ -160,7 +159,7 @@ void VideoTiming::book() {
     u32 target = vblank_ ? (pal_ ? kPalFirstVisible : kNtscFirstVisible) : (pal_ ? kPalVblankStart : kNtscVblankStart);
     u32 lines = lines_per_frame();
     u32 lines_to_target = (target + lines - next_line(p.line)) % lines;
-    advance(p, u64{lines_to_target} * (pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine));
+    advance(p, u64{lines_to_target} * line_cycles());
   }
   sched_.schedule_at(event_, p.edge_at);
 }

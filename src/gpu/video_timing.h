@@ -82,6 +82,8 @@ class VideoTiming : public VideoClock {
   void deliver_edge();
   void book();
   u32 next_line(u32 line) const;
+  // Video clock cycles per line of the current standard.
+  u32 line_cycles() const { return pal_ ? kPalCyclesPerLine : kNtscCyclesPerLine; }
   bool hblank_wanted() const { return signals_ && signals_->wants_hblank(); }
 
   Scheduler& sched_;

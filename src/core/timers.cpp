@@ -60,8 +60,9 @@ u64 Timers::source_ticks(u32 i, Cycles elapsed) {
     return (c.mode & kPscl) ? total / 8 : elapsed;
   }
   if (!(c.mode & kExtc)) return elapsed;
+  if (!video_) return 0;  // no video timing, no HBlanks
   // Timer 1 on HBlanks: the starts since the last catch-up (synced_at_ is now).
-  const u64 hblanks = video_ ? video_->hblanks_by(synced_at_) : hblank_mark_;
+  const u64 hblanks = video_->hblanks_by(synced_at_);
   return hblanks - std::exchange(hblank_mark_, hblanks);
 }
 

@@ -76,7 +76,7 @@ void FrameOutput::refresh(const Renderer& renderer, const DisplayArea& area) {
   scaled_vram_.resize(size_t{w} * h);
   renderer.read_scaled(area.x, area.y, width_, height_, scaled_vram_.data());
   scaled_.resize(size_t{w} * h * 3);
-  for (size_t i = 0; i < scaled_vram_.size(); ++i) put15(&scaled_[i * 3], scaled_vram_[i]);
+  put15_row(scaled_.data(), scaled_vram_.data(), w * h);
   // The native picture is each block's top-left sub-pixel, as the renderer's vram() has it.
   for (u32 row = 0; row < height_; ++row)
     for (u32 col = 0; col < width_; ++col)
@@ -93,7 +93,7 @@ void FrameOutput::enlarge() {
 }
 
 void FrameOutput::vram_to_rgb(const u16* vram, u8* out) {
-  for (u32 i = 0; i < kVramPixels; ++i) put15(out + i * 3, vram[i]);
+  put15_row(out, vram, kVramPixels);
 }
 
 void FrameOutput::do_state(StateIO& s) {

@@ -20,6 +20,7 @@
 namespace {
 
 using psx::u32;
+using psx::u64;
 using psx::Console;
 
 // MIPS I encodings (psx-spx "CPU Opcode Encoding"); registers by number.
@@ -119,7 +120,7 @@ TEST(IdleSkip, LoopsFourKibApartBackOffApart) {
   const Outcome on = compare(code);
   EXPECT_EQ(on.stats.skips, 0u);
   EXPECT_GT(on.s1, 1000u);
-  EXPECT_LE(on.stats.examinations, 2 * (13 + 99 * psx::u64{on.s1} / 4096));
+  EXPECT_LE(on.stats.examinations, 2 * (13 + 99 * u64{on.s1} / 4096));
 }
 
 // After the event that ends a skip (the SPU's sample event, every 768 cycles when it steps every
@@ -444,9 +445,10 @@ TEST(IdleSkip, JumpToTheNoLoopHeadMarkRaisesTheAddressError) {
   }
 }
 
-// Whole programs: the same calls with skipping off and on end in the same save state.
-void expect_same(const std::function<void(Console&)>& boot, const std::function<void(Console&)>& play,
-                 bool expect_skips = true) {
+// Whole programs: the same calls with skipping off and on end in the same save state. Returns the
+// skips made.
+u64 expect_same(const std::function<void(Console&)>& boot, const std::function<void(Console&)>& play,
+                bool expect_skips = true) {
   Console off, on;
   off.set_idle_skip(false);
   boot(off);
@@ -459,6 +461,7 @@ void expect_same(const std::function<void(Console&)>& boot, const std::function<
   if (expect_skips) {
     EXPECT_GT(on.idle_skip_stats().skips, 0u);
   }
+  return on.idle_skip_stats().skips;
 }
 
 TEST(IdleSkipPrograms, TumbleTitle) {
@@ -477,12 +480,9 @@ TEST(IdleSkipPrograms, VsyncCubeWithTimer1OnHblanks) {
   // Waits for the GPU's DMA and for VBlank with timer 1 counting HBlanks, which it takes in closed
   // form (VideoClock::hblanks_by): no event per HBlank edge ends its skips. With one, a frame's
   // wait was cut at each of its 526 edges; without, about 2 skips a frame.
-  const auto boot = [](Console& c) { c.boot_exe(PSXRL_BUILD_DIR "/bench/vsync_cube.exe"); };
-  expect_same(boot, [](Console& c) { c.run_frames(240); });
-  Console c;
-  boot(c);
-  c.run_frames(240);
-  EXPECT_LT(c.idle_skip_stats().skips, 240u * 10);
+  const u64 skips = expect_same([](Console& c) { c.boot_exe(PSXRL_BUILD_DIR "/bench/vsync_cube.exe"); },
+                                [](Console& c) { c.run_frames(240); });
+  EXPECT_LT(skips, 240u * 10);
 }
 
 TEST(IdleSkipPrograms, TestRoms) {

@@ -3,9 +3,9 @@
 // and Tumble (title and in play; the last three with idle skipping on and off), each with the
 // interpreter and the recompiler, environment moves per second per observation kind,
 // vector-environment scaling over threads (batched and asynchronous), host memory per console,
-// save-state and snapshot times and the environment's reset time. Prints Markdown tables, then the same figures as JSON. The host clock
-// is used only to time the runs; on a shared machine figures vary with its load, which is
-// printed with them.
+// save-state and snapshot times and the environment's reset time. Prints Markdown tables, then
+// the same figures as JSON. The host clock is used only to time the runs; on a shared machine
+// figures vary with its load, which is printed with them.
 #include <malloc.h>
 
 #include <algorithm>

@@ -18,8 +18,9 @@ import numpy as np
 import pytest
 
 # Ray replaces 127.0.0.1 in a cluster address with the host's network address unless told that this
-# is a one-host setup; it reads this when it is imported.
+# is a one-host setup; it reads this when it is imported. Its usage reporting would reach out.
 os.environ["RAY_ENABLE_WINDOWS_OR_OSX_CLUSTER"] = "0"
+os.environ["RAY_USAGE_STATS_ENABLED"] = "0"
 ray = pytest.importorskip("ray", reason="Ray is installed in .venv-ray: ctest python_ray_tests runs this file")
 
 import psxrl  # noqa: E402
@@ -135,10 +136,8 @@ def kill_a_worker_mid_run(folder, proc):
 
 def test_sweep_survives_a_killed_worker(cluster, reference, tmp_path):
     out = tmp_path / "out"
-    env = dict(os.environ, RAY_ENABLE_WINDOWS_OR_OSX_CLUSTER="0")
     proc = subprocess.Popen([sys.executable, "-m", "psxrl.ray", "sweep", str(write_sweep(tmp_path)), "--out", str(out),
-                             "--address", cluster.address], env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            text=True)
+                             "--address", cluster.address], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     try:
         killed = kill_a_worker_mid_run(out, proc)
         output, _ = proc.communicate(timeout=300)

@@ -30,25 +30,25 @@ _PR_SET_PDEATHSIG = 1
 
 
 def find_executable():
-    """The `psxrl` executable: $PSXRL_EXE, else `psxrl` on PATH, else the build tree's (the
-    $PSXRL_BUILD_DIR one, or the one beside a module imported from build/python)."""
+    """The `psxrl` executable: $PSXRL_EXE, else $PSXRL_BUILD_DIR/psxrl, else the build tree's beside
+    a module imported from build/python, else `psxrl` on PATH."""
     if os.environ.get("PSXRL_EXE"):
         exe = Path(os.environ["PSXRL_EXE"])
         if not exe.is_file():
             raise FileNotFoundError(f"PSXRL_EXE={exe}: no such file")
         return str(exe.resolve())
-    on_path = shutil.which("psxrl")
-    if on_path:
-        return on_path
     import psxrl
 
     candidates = [Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"] if os.environ.get("PSXRL_BUILD_DIR") else []
     candidates.append(Path(psxrl.__file__).resolve().parents[2] / "psxrl")  # build/python/psxrl/__init__.py
     for exe in candidates:
         if exe.is_file():
-            return str(exe)
-    raise FileNotFoundError("cannot find the psxrl executable: set PSXRL_EXE, put psxrl on PATH or set "
-                            "PSXRL_BUILD_DIR to the build folder")
+            return str(exe.resolve())
+    on_path = shutil.which("psxrl")
+    if on_path:
+        return on_path
+    raise FileNotFoundError("cannot find the psxrl executable: set PSXRL_EXE or PSXRL_BUILD_DIR, or put psxrl "
+                            "on PATH")
 
 
 def finished(folder):
@@ -131,10 +131,10 @@ def main(argv=None):
     a = p.parse_args(argv)
     try:
         sweep = load(a.config, a.out)
-    except ValueError as e:
+        failed = run(sweep, a.address)
+    except (ValueError, FileNotFoundError, ConnectionError) as e:  # the file, the executable, the cluster
         print(f"psxrl sweep: {e}", file=sys.stderr)
         return 2
-    failed = run(sweep, a.address)
     print(f"{len(sweep.runs) - len(failed)} of {len(sweep.runs)} runs finished; "
           f"table {report.table_path(sweep)}, figure {report.figure_path(sweep)}")
     return 1 if failed else 0

@@ -125,10 +125,14 @@ def test_sweep_file_errors_name_the_file_and_the_key(tmp_path, text, message):
     assert str(e.value).startswith(f"{path}: ") and message in str(e.value)
 
 
-def test_sweep_command_reports_a_bad_file_and_exits_2(tmp_path):
+@pytest.mark.parametrize("front", ["python", "psxrl"])
+def test_sweep_command_reports_a_bad_file_and_exits_2(tmp_path, front):
+    """`python -m psxrl.ray sweep` and `psxrl sweep`, which runs it in $PSXRL_PYTHON."""
     (tmp_path / "sweep.toml").write_text("seeds = 3\n")
-    done = subprocess.run([sys.executable, "-m", "psxrl.ray", "sweep", str(tmp_path / "sweep.toml")],
-                          capture_output=True, text=True, timeout=120)
+    command = [sys.executable, "-m", "psxrl.ray"] if front == "python" else \
+        [str(Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl")]
+    done = subprocess.run(command + ["sweep", str(tmp_path / "sweep.toml")], capture_output=True, text=True,
+                          timeout=120, env=dict(os.environ, PSXRL_PYTHON=sys.executable))
     assert done.returncode == 2
     assert done.stderr.strip() == f"psxrl sweep: {tmp_path / 'sweep.toml'}: seeds must be a list of distinct " \
                                   "non-negative integers, got 3"

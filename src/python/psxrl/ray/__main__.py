@@ -9,8 +9,15 @@ def main(argv=None):
     if not argv or argv[0] != "sweep":
         print(USAGE, file=sys.stderr)
         return 0 if argv and argv[0] in ("-h", "--help") else 2
-    from .sweep import main as sweep_main
-
+    try:
+        from .sweep import main as sweep_main
+    except ModuleNotFoundError as e:
+        if e.name != "ray":
+            raise
+        print("psxrl sweep: psxrl.ray needs Ray, which this Python lacks: pip install .[ray], or use the "
+              ".venv-ray that scripts/setup.sh makes (psxrl sweep runs the Python named by PSXRL_PYTHON)",
+              file=sys.stderr)
+        return 2
     return sweep_main(argv[1:])
 
 

@@ -70,6 +70,12 @@ class RolloutWorker:
         """The actor hop alone (the benchmark's overhead figure): actions in, same-sized arrays out."""
         return actions
 
+    def cpu_seconds(self):
+        """CPU time of this worker process so far, all its threads (the benchmark's cost figure)."""
+        import time
+
+        return time.process_time()
+
 
 class RayVecEnv:
     """`workers` RolloutWorker actors of `envs_per_worker` environments each, stepped as one batch:

@@ -92,8 +92,8 @@ def main():
     for workers in (1, 2):
         rows[workers] = (in_process(workers, a.envs, a.steps, config), through_ray(workers, a.envs, a.steps, config))
         (local, local_cpu, _, _), (remote, remote_cpu, worker_cpu, learner) = rows[workers]
-        print(f"{workers} worker{'s' if workers > 1 else ' '}: in-process {local:6.0f} moves/s, {local_cpu:4.0f} per CPU-s"
-              f"  |  Ray actors {remote:6.0f} moves/s, {remote_cpu:4.0f} per CPU-s in all, {worker_cpu:4.0f} per "
+        print(f"{workers} worker{'s' if workers > 1 else ' '}: in-process {local:6.0f} moves/s, "
+              f"{local_cpu:4.0f} per CPU-s  |  Ray actors {remote:6.0f} moves/s, {remote_cpu:4.0f} per CPU-s in all, {worker_cpu:4.0f} per "
               f"worker CPU-s, learner CPU {learner * 1e6 / workers:.0f} us per worker call")
     round_trip, per_call = hop(a.envs, config)
     step_us = a.envs / rows[1][0][1] * 1e6  # CPU time to step one worker's batch in-process

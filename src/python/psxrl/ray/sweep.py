@@ -113,7 +113,7 @@ def run(sweep, address=None, log=print):
             done = ray.get(ref)
             log(f"done   {r.config} seed {r.seed}: {done['seconds']} s on {done['host']}"
                 + (" (resumed)" if done["resumed"] else ""))
-        except (ray.exceptions.RayTaskError, ray.exceptions.WorkerCrashedError) as e:
+        except ray.exceptions.RayError as e:  # the trainer failed, or Ray gave up on the task
             failed.append((r, e))
             log(f"FAILED {r.config} seed {r.seed}: {e}")
     report.write(sweep)

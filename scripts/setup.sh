@@ -53,13 +53,14 @@ fi
 # Ray and RLlib (psxrl.ray, docs/scaling.md; ctest python_ray_tests) also need PyTorch, so they
 # too live over Debian's python3-torch, in .venv-ray of their own: RLlib pins a newer Gymnasium
 # than SB3 2.4 accepts. NumPy stays Debian's 1.24, which torch 1.13 is built against, so pyarrow
-# (imported by Ray Tune, which RLlib uses) is held at 19: its newer releases need NumPy 2.
+# (imported by Ray Tune, which RLlib uses) is held below 20: 19 works with NumPy 1.24, the newest
+# needs NumPy 2. psutil: the tests check which addresses the cluster listens on.
 RAY_VERSION=2.60.0
 if [ ! -x .venv-ray/bin/python ] || ! .venv-ray/bin/python -c \
-     "import ray, pyarrow, pytest, torch; assert ray.__version__ == '$RAY_VERSION'" 2>/dev/null; then
+     "import ray, pyarrow, psutil, pytest, torch; assert ray.__version__ == '$RAY_VERSION'" 2>/dev/null; then
   echo "setup: making .venv-ray (Ray $RAY_VERSION with RLlib over Debian's python3-torch)"
   /usr/bin/python3 -m venv --system-site-packages .venv-ray
-  .venv-ray/bin/python -m pip install -q "ray[rllib]==$RAY_VERSION" "pyarrow<20" "numpy<2" pytest
+  .venv-ray/bin/python -m pip install -q "ray[rllib]==$RAY_VERSION" "pyarrow<20" "numpy<2" psutil pytest
 fi
 
 # ccache lets `pip install .` below reuse what this build compiles: the module's build tree

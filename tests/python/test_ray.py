@@ -44,6 +44,17 @@ VARYING = "seconds"  # host time: the one metrics column that differs between id
 CRUMBLE_LEVEL = 5
 
 
+def assert_listening_on_loopback_only():
+    """Every socket that this process and the cluster's processes (its descendants) listen on is
+    bound to 127.0.0.1 (shown as ::ffff:127.0.0.1 on a dual-stack socket)."""
+    import psutil
+
+    ours = {os.getpid()} | {p.pid for p in psutil.Process().children(recursive=True)}
+    listening = [c for c in psutil.net_connections(kind="inet") if c.status == psutil.CONN_LISTEN and c.pid in ours]
+    assert listening
+    assert all(c.laddr.ip in (LOOPBACK, "::ffff:" + LOOPBACK) for c in listening), listening
+
+
 @pytest.fixture(scope="module")
 def cluster():
     """A head and a second node (2 logical CPUs each), shut down after the tests, also on failure."""
@@ -56,6 +67,7 @@ def cluster():
         ray.init(address=c.address, log_to_driver=False)
         assert len([n for n in ray.nodes() if n["Alive"]]) == 2
         assert all(n["NodeManagerAddress"] == LOOPBACK for n in ray.nodes())
+        assert_listening_on_loopback_only()
         yield c
     finally:
         ray.shutdown()
@@ -139,16 +151,18 @@ def test_sweep_command_reports_a_bad_file_and_exits_2(tmp_path, front):
 
 
 def trainer_processes(folder):
-    """(pid, parent pid) of the `psxrl train` processes writing under `folder`."""
+    """(parent pid, run folder) of each `psxrl train` process writing under `folder`."""
     found = []
     for entry in Path("/proc").iterdir():
         try:
             command = (entry / "cmdline").read_bytes().split(b"\0")
-            stat = (entry / "stat").read_text()
-        except OSError:
+            parent = int((entry / "stat").read_text().rsplit(")", 1)[1].split()[1])
+        except (OSError, ValueError, IndexError):  # not a process, or one that just ended
             continue
-        if b"train" in command and any(str(folder).encode() in part for part in command):
-            found.append((int(entry.name), int(stat.rsplit(")", 1)[1].split()[1])))
+        if b"train" in command and b"--out" in command:
+            run = Path(command[command.index(b"--out") + 1].decode())
+            if run.is_relative_to(folder):
+                found.append((parent, run))
     return found
 
 
@@ -157,14 +171,16 @@ def kill_a_worker_mid_run(folder, proc):
     episodes; returns that run's folder."""
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and proc.poll() is None:
-        for pid, worker in trainer_processes(folder):
-            command = Path(f"/proc/{pid}/cmdline").read_bytes().split(b"\0")
-            run = Path(command[command.index(b"--out") + 1].decode())
+        for worker, run in trainer_processes(folder):
             if (run / "metrics.csv").is_file() and 3 <= len(metrics(run)) < EPISODES - 3:
                 os.kill(worker, signal.SIGKILL)
                 return run
         time.sleep(0.02)
     pytest.fail("no sweep run was caught mid-way to kill its worker")
+
+
+def without_host_time(rows):
+    return [{k: v for k, v in r.items() if k != VARYING} for r in rows]
 
 
 def test_sweep_survives_a_killed_worker(cluster, reference, tmp_path):
@@ -182,8 +198,7 @@ def test_sweep_survives_a_killed_worker(cluster, reference, tmp_path):
     attempts = [line for line in (killed / "train.log").read_text().splitlines() if line.startswith("$ ")]
     assert len(attempts) == 2 and "--resume" not in attempts[0] and "--resume" in attempts[1]
     for mine, theirs in zip(load_sweep(tmp_path / "sweep.toml", out).runs, reference.runs):
-        drop = lambda rows: [{k: v for k, v in r.items() if k != VARYING} for r in rows]  # noqa: E731
-        assert drop(metrics(mine.folder)) == drop(metrics(theirs.folder)), mine.folder
+        assert without_host_time(metrics(mine.folder)) == without_host_time(metrics(theirs.folder)), mine.folder
 
 
 def local_vec_envs(seeds, envs, config):

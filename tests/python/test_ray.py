@@ -273,12 +273,16 @@ def test_async_rollouts_through_actors_equal_local_stepping(cluster):
 def test_rllib_ppo_trains_on_tumble_with_two_env_runners(cluster):
     from psxrl.ray.rllib import ppo_config
 
-    config = ppo_config(env_runners=2, env_config={"max_moves": 20}, train_batch_size_per_learner=200,
-                        minibatch_size=50, num_epochs=1)
+    # Two CPUs per env runner fill a node of this cluster, so the two runners land on both nodes.
+    config = ppo_config(env_runners=2, cpus_per_env_runner=2, env_config={"max_moves": 20},
+                        train_batch_size_per_learner=200, minibatch_size=50, num_epochs=1)
     algo = config.build_algo()
     try:
+        nodes = algo.env_runner_group.foreach_env_runner(lambda runner: ray.get_runtime_context().get_node_id(),
+                                                         local_env_runner=False)
         results = [algo.train() for _ in range(2)]
     finally:
         algo.stop()
+    assert len(set(nodes)) == 2
     assert sum(r["env_runners"]["num_episodes"] for r in results) > 0
     assert math.isfinite(results[-1]["env_runners"]["episode_return_mean"])

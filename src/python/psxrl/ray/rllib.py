@@ -31,9 +31,11 @@ def register():
     register_env(KULA, _kula)
 
 
-def ppo_config(env=TUMBLE, env_runners=2, envs_per_env_runner=1, env_config=None, **training):
+def ppo_config(env=TUMBLE, env_runners=2, envs_per_env_runner=1, cpus_per_env_runner=1, env_config=None,
+               **training):
     """A PPOConfig (RLlib's new API stack, PyTorch) for a psxrl environment: `env_runners` Ray
-    actors sample it in parallel, the learner updates in this process. `env_config` defaults to the
+    actors of `cpus_per_env_runner` CPUs each sample it in parallel (Ray places them on whichever
+    nodes have those CPUs free), the learner updates in this process. `env_config` defaults to the
     agent-local observation (obs="local"); `training` goes to PPOConfig.training()."""
     from ray.rllib.algorithms.ppo import PPOConfig
 
@@ -43,5 +45,5 @@ def ppo_config(env=TUMBLE, env_runners=2, envs_per_env_runner=1, env_config=None
             .environment(env, env_config={"obs": "local", **(env_config or {})})
             .framework("torch")
             .env_runners(num_env_runners=env_runners, num_envs_per_env_runner=envs_per_env_runner,
-                         num_cpus_per_env_runner=1)
+                         num_cpus_per_env_runner=cpus_per_env_runner)
             .training(**settings))

@@ -150,6 +150,23 @@ def test_sweep_command_reports_a_bad_file_and_exits_2(tmp_path, front):
                                   "non-negative integers, got 3"
 
 
+def test_a_run_that_cannot_resume_starts_over(tmp_path):
+    """An interrupted --envs 2 run: psxrl train refuses --resume for it, so the sweep's task clears
+    the folder and trains it again, ending with the metrics of one uninterrupted run."""
+    from psxrl.ray.sweep import find_executable, train
+
+    exe = find_executable()
+    options = ["--agent", "q", "--episodes", "8", "--max-moves", "8", "--envs", "2", "--seed", "4", "--quiet"]
+    subprocess.run([exe, "train", *options, "--out", str(tmp_path / "whole")], check=True, capture_output=True)
+    subprocess.run([exe, "train", *options[:3], "3", *options[4:], "--out", str(tmp_path / "cut")], check=True,
+                   capture_output=True)  # a checkpoint after 3 episodes stands for an interrupted run
+    done = train(exe, tmp_path / "cut", options + ["--out", str(tmp_path / "cut")], resumable=False)
+    assert not done["resumed"] and (tmp_path / "cut" / "done.json").is_file()
+    attempts = [line for line in (tmp_path / "cut" / "train.log").read_text().splitlines() if line.startswith("$ ")]
+    assert len(attempts) == 1 and "--resume" not in attempts[0]
+    assert without_host_time(metrics(tmp_path / "cut")) == without_host_time(metrics(tmp_path / "whole"))
+
+
 def trainer_processes(folder):
     """(parent pid, run folder) of each `psxrl train` process writing under `folder`."""
     found = []

@@ -61,10 +61,9 @@ def _die_with_parent():
     ctypes.CDLL(None, use_errno=True).prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
 
 
-@ray.remote(max_retries=3)
-def train_run(exe, folder, args, resumable):
+def train(exe, folder, args, resumable):
     """Runs one `psxrl train` to its end in `folder`, resuming from the checkpoint there if an
-    earlier attempt was interrupted; returns what it did. A trainer failure raises (not retried)."""
+    earlier attempt was interrupted; returns what it did. A trainer failure raises."""
     folder = Path(folder)
     exe = os.environ.get("PSXRL_EXE", exe)
     resume = (folder / CHECKPOINT).is_file()
@@ -84,6 +83,10 @@ def train_run(exe, folder, args, resumable):
     done = {"resumed": resume, "host": socket.gethostname(), "seconds": round(time.monotonic() - start, 3)}
     (folder / DONE).write_text(json.dumps(done) + "\n")
     return done
+
+
+# The Ray task: run again (resuming) when its worker or node dies, not when the trainer fails.
+train_run = ray.remote(max_retries=3)(train)
 
 
 def run(sweep, address=None, log=print):

@@ -106,7 +106,7 @@ def run(sweep, address=None, log=print):
             log(f"skip   {r.config} seed {r.seed}: finished")
             continue
         cpus = int(r.options.get("envs", 1))
-        ref = train_run.options(num_cpus=cpus).remote(exe, str(r.folder.resolve()), r.train_args(), r.resumable())
+        ref = train_run.options(num_cpus=cpus).remote(exe, str(r.folder), r.train_args(), r.resumable())
         pending[ref] = r
     failed = []
     while pending:

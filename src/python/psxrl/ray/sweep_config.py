@@ -112,7 +112,8 @@ def load(path, out=None):
             raise SweepConfigError(f"{path}: [grid] {key}: expected a non-empty list of values")
         if key in train:
             raise SweepConfigError(f"{path}: {key} is in both [train] and [grid]")
-    folder = Path(out if out is not None else doc.get("out", Path("runs") / path.stem))
+    # Absolute: the runs' trainers start in whatever folder Ray's workers have.
+    folder = Path(out if out is not None else doc.get("out", Path("runs") / path.stem)).absolute()
     runs = []
     for point in itertools.product(*grid.values()):
         values = dict(zip(grid, point))

@@ -7,6 +7,7 @@ does what is left: `done.json` marks a finished run, which is skipped; a folder 
 task again when the worker process or node running it dies, and the retry resumes the same way.
 The sweep folder must be one path that every node sees (a shared file system on a real cluster).
 """
+import argparse
 import ctypes
 import json
 import os
@@ -123,11 +124,16 @@ def run(sweep, address=None, log=print):
     return failed
 
 
-def main(argv=None):
-    import argparse
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # psxrl's exit codes: 1 for a usage error, 2 for a bad file
+        self.print_usage(sys.stderr)
+        self.exit(1, f"{self.prog}: {message}\n")
 
-    p = argparse.ArgumentParser(prog="python -m psxrl.ray sweep",
-                                description="Runs a grid of psxrl train runs x seeds as Ray tasks (docs/scaling.md).")
+
+def main(argv=None):
+    p = _Parser(prog="psxrl sweep", description="Runs a grid of psxrl train runs x seeds as Ray tasks "
+                "(docs/scaling.md); exit codes: 0 all runs finished, 1 usage error or a run failed, 2 bad "
+                "sweep file, psxrl executable or cluster address.")
     p.add_argument("config", help="the sweep file (TOML)")
     p.add_argument("--address", help="an existing Ray cluster (host:port, or auto); default: a local one")
     p.add_argument("--out", help="sweep folder (default: the file's out, else runs/ + the file's name)")

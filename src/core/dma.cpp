@@ -95,7 +95,8 @@ void Dma::write_channel(u32 ch, u32 reg, u32 value) {
   service();
 }
 
-// DICR (psx-spx "DMA Interrupt Register"): bits 0-5 read/write, 6-14 always zero, 15 force IRQ,
+// DICR (psx-spx "DMA Interrupt Register"): bits 0-5 read/write, 6-14 always zero, 15 bus error
+// (read/write: a linked list's unclean end sets it, the CPU may set or clear it; it forces IRQ),
 // 16-22 per-channel enables, 23 master enable; writing 1 to a flag (24-30) clears it.
 void Dma::write_dicr(u32 value) {
   u32 ack = value & 0x7F000000;
@@ -238,7 +239,10 @@ u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
     const u32 count = header >> 24;
     moved += count + 1;
     c.madr = header & 0x00FFFFFF;
-    const bool end = (c.madr & 0x00800000) != 0;  // end marker 0x00FFFFFF (hardware tests bit 23)
+    const bool end = (c.madr & 0x00800000) != 0;  // the hardware tests bit 23 alone
+    // An end marker other than 0x00FFFFFF still ends the list, with the bus error flag raised: on
+    // hardware 0x800000, 0x800001 and 0xFFFFF0 all leave DICR bit 15 set and MADR on the marker.
+    if (end && c.madr != kListEnd) dicr_ |= kDicrBusError;
     if (count) {
       if (uncharged) charge(ch, uncharged), uncharged = 0;
       to_device(ch, addr + 4, count, false);

@@ -57,25 +57,17 @@ u32 Dma::io_read(u32 offset, u32 width) {
   return v >> shift;
 }
 
-void Dma::io_write(u32 offset, u32 value, u32 width) {
-  u32 reg = offset & ~3u;
-  u32 shift = (offset & 3) * 8;
-  u32 lane = (width == 4 ? 0xFFFFFFFFu : (1u << (width * 8)) - 1) << shift;
-  u32 v = (value << shift) & lane;
+// Every register here is 32 bits wide and the bus hands each CPU store over whole (an SB or SH
+// drives the full register value, Bus::io_write()), so `value` is the register's new value.
+void Dma::io_write(u32 offset, u32 value, u32 /*width*/) {
+  const u32 reg = offset & ~3u;
   if (reg < 0x70) {
-    u32 ch = reg >> 4, r = reg & 0xC;
-    Channel& c = channels_[ch];
-    u32 old = r == 0 ? c.madr : r == 4 ? c.bcr : c.chcr;
-    write_channel(ch, r, (old & ~lane) | v);
-    return;
-  }
-  if (reg == 0x70) {
-    dpcr_ = (dpcr_ & ~lane) | v;
+    write_channel(reg >> 4, reg & 0xC, value);
+  } else if (reg == 0x70) {
+    dpcr_ = value;
     service();
   } else if (reg == 0x74) {
-    // A narrow write acknowledges only the flags inside the bytes it wrote.
-    u32 merged = (dicr_ & ~lane & 0x00FF803F) | v;
-    write_dicr((merged & ~0x7F000000u) | (v & 0x7F000000u));
+    write_dicr(value);
   }
 }
 

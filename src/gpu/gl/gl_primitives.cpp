@@ -114,11 +114,13 @@ void GlRenderer::draw_rectangle(const Rectangle& rect, const DrawState& ds) {
 }
 
 void GlRenderer::draw_line(const Line& l, const DrawState& ds) {
-  const Vertex &p0 = l.v[0], &p1 = l.v[1];
+  // Drawn from the left end point whatever the vertex order (the software renderer's rule).
+  const bool swap = l.v[0].x > l.v[1].x;
+  const Vertex &p0 = l.v[swap ? 1 : 0], &p1 = l.v[swap ? 0 : 1];
   const s32 dx = p1.x - p0.x, dy = p1.y - p0.y;
   if (std::abs(dx) >= 1024 || std::abs(dy) >= 512) return;
   const s32 steps = std::max(std::abs(dx), std::abs(dy));
-  PrimitiveRecord r = state_record(Kind::Line, ds, 0, false, l.semi, ds.dither && l.shaded);
+  PrimitiveRecord r = state_record(Kind::Line, ds, 0, false, l.semi, ds.dither);  // flat ones too
   if (!clip_box(r, std::min(p0.x, p1.x), std::min(p0.y, p1.y), std::max(p0.x, p1.x) + 1, std::max(p0.y, p1.y) + 1, ds))
     return;
   r.a[0] = p0.x, r.a[1] = p0.y, r.b[0] = p1.x, r.b[1] = p1.y, r.c[0] = steps;

@@ -16,21 +16,13 @@
 namespace psx::gpu {
 namespace {
 
-// An attribute's value at (x, y): the top vertex's value plus half a unit, stepped by the plane.
+// An attribute's value at (x, y): the core vertex's value (core_vertex(), triangle_setup.h) plus
+// half a unit, stepped by the plane; dx and dy are measured from that vertex.
 inline s32 attribute_at(s32 base, const Gradient& g, s32 dx, s32 dy) {
   return static_cast<s32>((s64{base} << kFrac) + (1 << (kFrac - 1)) + s64{g.dx} * dx + s64{g.dy} * dy);
 }
 
 inline u32 channel(s32 fixed) { return static_cast<u32>(std::clamp(fixed >> kFrac, 0, 255)); }
-
-// The vertex the interpolators start from: the leftmost one of the command's vertices, the later
-// one of two at the same x when it is the second, the third on ties with it (Mednafen's "core
-// vertex"; with truncated gradients the start decides the rounding, and this choice gives
-// ps1-tests' gpu/triangle captures where the top vertex does not).
-inline const Vertex& core_vertex(const Triangle& t) {
-  if (t.v[1].x <= t.v[0].x) return t.v[2].x <= t.v[1].x ? t.v[2] : t.v[1];
-  return t.v[2].x < t.v[0].x ? t.v[2] : t.v[0];
-}
 
 }  // namespace
 

@@ -125,10 +125,10 @@ int interpolate(int base, int gdx, int gdy, ivec2 dn, ivec2 f) {
 }
 
 // Line coordinate after i steps: start + |delta| * i / steps, halves toward the end point
-// (half = steps) or toward the start (half = steps - 1), as the software renderer's LineAxis.
-int line_axis(int start, int delta, int steps, int i, int half) {
+// (bias = steps) or toward the start (bias = steps - 1), as the software renderer's LineAxis.
+int line_axis(int start, int delta, int steps, int i, int bias) {
   if (steps == 0) return start;
-  int n = (half + 2 * abs(delta) * i) / (2 * steps);
+  int n = (bias + 2 * abs(delta) * i) / (2 * steps);
   return delta < 0 ? start - n : start + n;
 }
 

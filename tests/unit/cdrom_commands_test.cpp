@@ -139,7 +139,9 @@ AckTimes ack_times(CdromHarness& h, u8 cmd, int n) {
     EXPECT_EQ(r.irq, 3);
     const Cycles t = r.at - t0;
     a.min = std::min(a.min, t), a.max = std::max(a.max, t), total += t;
-    if (cmd == 0x0A) EXPECT_EQ(h.wait().irq, 2);  // Init's second response
+    if (cmd == 0x0A) {
+      EXPECT_EQ(h.wait().irq, 2);  // Init's second response
+    }
   }
   a.average = total / n;
   return a;

@@ -168,6 +168,34 @@ TEST(CdromCommands, AcknowledgeTimesFollowTheHardwareMeasurements) {
   EXPECT_EQ(init2.average, init.average);
 }
 
+TEST(CdromCommands, Version1StateStartsTheAcknowledgeGeneratorAtItsSeed) {
+  // docs/save-states.md: a CDRM section of version 1 (before the generator's 4 bytes, the last
+  // of the body) loads, with the generator where a fresh console starts it.
+  CdromHarness saved;
+  saved.cd.insert_disc(data_disc());
+  ack_times(saved, 0x01, 3);  // the generator has moved on
+  StateIO w;
+  saved.cd.do_state(w);
+  std::vector<u8> v1 = w.buffer();
+  ASSERT_GE(v1.size(), 16u);
+  ASSERT_EQ(std::string(v1.begin(), v1.begin() + 4), "CDRM");
+  v1[4] = 1;  // version 1
+  u32 length = v1[8] | v1[9] << 8 | v1[10] << 16 | static_cast<u32>(v1[11]) << 24;
+  length -= 4;
+  for (int i = 0; i < 4; ++i) v1[8 + i] = static_cast<u8>(length >> (8 * i));
+  v1.resize(v1.size() - 4);
+  CdromHarness loaded, fresh;
+  loaded.cd.insert_disc(data_disc());
+  fresh.cd.insert_disc(data_disc());
+  StateIO r(v1.data(), v1.size());
+  loaded.cd.do_state(r);
+  EXPECT_TRUE(r.at_end());
+  const Cycles t0 = loaded.sched.now(), f0 = fresh.sched.now();
+  loaded.send(0x01);
+  fresh.send(0x01);
+  EXPECT_EQ(loaded.wait().at - t0, fresh.wait().at - f0);
+}
+
 TEST(CdromCommands, InitWithADiscReportsTheMotorOn) {
   // ps1-tests cdrom/disc-swap and cdrom/getloc logs: after Init, "CD IRQ=2, status=0x02" and
   // "GetStat -> 0x02": the motor-on bit and nothing else.

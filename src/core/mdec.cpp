@@ -148,57 +148,58 @@ bool Mdec::decode_macroblock() {
   const u16* src = input_.data();
   size_t size = input_.size();
   size_t pos = input_pos_;
-  bool is_signed = command_word_ & (1u << 26);
+  mdec::Block blk;
   if (depth() >= 2) {
     // Colour: Cr, Cb (colour quant table), then Y1..Y4 (luminance table), each through the IDCT.
-    mdec::Block cr, cb, y;
+    mdec::Samples cr, cb, y;
     mdec::Rgb16x16 rgb;
-    if (!mdec::rl_decode_block(src, size, pos, iq_uv_, cr)) return false;
-    if (!mdec::rl_decode_block(src, size, pos, iq_uv_, cb)) return false;
-    mdec::idct(scale_, cr);
-    mdec::idct(scale_, cb);
+    if (!mdec::rl_decode_block(src, size, pos, iq_uv_, blk)) return false;
+    mdec::idct(scale_, blk, cr);
+    if (!mdec::rl_decode_block(src, size, pos, iq_uv_, blk)) return false;
+    mdec::idct(scale_, blk, cb);
     for (u32 b = 0; b < 4; ++b) {
-      if (!mdec::rl_decode_block(src, size, pos, iq_y_, y)) return false;
-      mdec::idct(scale_, y);
-      mdec::yuv_to_rgb(cr, cb, y, (b & 1) * 8, (b >> 1) * 8, is_signed, rgb);
+      if (!mdec::rl_decode_block(src, size, pos, iq_y_, blk)) return false;
+      mdec::idct(scale_, blk, y);
+      mdec::yuv_to_rgb(cr, cb, y, (b & 1) * 8, (b >> 1) * 8, rgb);
     }
     pack_colour(rgb);
   } else {
-    mdec::Block y;
-    mdec::Mono8x8 mono;
-    if (!mdec::rl_decode_block(src, size, pos, iq_y_, y)) return false;
-    mdec::idct(scale_, y);
-    mdec::y_to_mono(y, is_signed, mono);
-    pack_mono(mono);
+    mdec::Samples y;
+    if (!mdec::rl_decode_block(src, size, pos, iq_y_, blk)) return false;
+    mdec::idct(scale_, blk, y);
+    pack_mono(y);
   }
   input_pos_ = pos;
   return true;
 }
 
 void Mdec::pack_colour(const mdec::Rgb16x16& rgb) {
+  bool is_signed = command_word_ & (1u << 26);
   if (depth() == 3) {
-    // 15-bit: 5 bits per component (the top bits of each byte), bit 15 from command bit 25.
+    // 15-bit: bit 15 comes from command bit 25 (psx-spx "MDEC(1)").
     u32 stp = (command_word_ >> 25) & 1;
-    auto pixel = [&](u32 p) {
-      const u8* c = &rgb[p * 3];
-      return static_cast<u32>((c[0] >> 3) | (c[1] >> 3) << 5 | (c[2] >> 3) << 10 | stp << 15);
-    };
+    auto pixel = [&](u32 p) { return static_cast<u32>(mdec::rgb15(&rgb[p * 3], is_signed)) | stp << 15; };
     for (u32 p = 0; p < 256; p += 2) output_.push_back(pixel(p) | pixel(p + 1) << 16);
     return;
   }
-  for (u32 i = 0; i < rgb.size(); i += 4)  // 24-bit: R, G, B bytes back to back
-    output_.push_back(rgb[i] | rgb[i + 1] << 8 | rgb[i + 2] << 16 | static_cast<u32>(rgb[i + 3]) << 24);
+  u32 flip = is_signed ? 0x80808080 : 0;  // 24-bit: R, G, B bytes back to back
+  for (u32 i = 0; i < rgb.size(); i += 4)
+    output_.push_back((rgb[i] | rgb[i + 1] << 8 | rgb[i + 2] << 16 | static_cast<u32>(rgb[i + 3]) << 24) ^ flip);
 }
 
-void Mdec::pack_mono(const mdec::Mono8x8& y) {
+void Mdec::pack_mono(const mdec::Samples& y) {
+  bool is_signed = command_word_ & (1u << 26);
   if (depth() == 1) {
-    for (u32 i = 0; i < 64; i += 4)
-      output_.push_back(y[i] | y[i + 1] << 8 | y[i + 2] << 16 | static_cast<u32>(y[i + 3]) << 24);
+    for (u32 i = 0; i < 64; i += 4) {
+      u32 w = 0;
+      for (u32 j = 0; j < 4; ++j) w |= static_cast<u32>(mdec::mono8(y[i + j], is_signed)) << (8 * j);
+      output_.push_back(w);
+    }
     return;
   }
-  for (u32 i = 0; i < 64; i += 8) {  // 4-bit: the top nibble of each byte, first pixel lowest
+  for (u32 i = 0; i < 64; i += 8) {  // 4-bit: first pixel in the low nibble
     u32 w = 0;
-    for (u32 j = 0; j < 8; ++j) w |= static_cast<u32>(y[i + j] >> 4) << (4 * j);
+    for (u32 j = 0; j < 8; ++j) w |= static_cast<u32>(mdec::mono4(y[i + j], is_signed)) << (4 * j);
     output_.push_back(w);
   }
 }

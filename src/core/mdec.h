@@ -64,7 +64,7 @@ class Mdec : public IoDevice {
   void decode_available();
   bool decode_macroblock();
   void pack_colour(const mdec::Rgb16x16& rgb);
-  void pack_mono(const mdec::Mono8x8& y);
+  void pack_mono(const mdec::Samples& y);
   u32 read_data(bool dma_order);
   void reset();
 

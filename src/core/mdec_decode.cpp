@@ -1,4 +1,5 @@
-// MDEC decompression: run-length decoding, IDCT and colour conversion (psx-spx pseudo code).
+// MDEC decompression: run-length decoding, IDCT and colour conversion. The steps follow psx-spx;
+// the rounding is the one measured against ps1-tests' hardware captures (see mdec_decode.h).
 #include "core/mdec_decode.h"
 
 #include <algorithm>
@@ -25,17 +26,18 @@ constexpr std::array<u8, 64> kZagzig = make_zagzig();
 
 s32 signed10(u16 n) { return static_cast<s32>(static_cast<u32>(n & 0x3FF) << 22) >> 22; }
 s32 signed9(s32 v) { return static_cast<s32>(static_cast<u32>(v & 0x1FF) << 23) >> 23; }
+// Clip to signed 9 bits, then saturate to signed 8 bits (psx-spx "signed9bit" then "minmax").
+s8 clip9(s32 v) { return static_cast<s8>(std::clamp(signed9(v), -128, 127)); }
 
-// Clip to signed 9 bits, saturate to signed 8 bits, then offset by 128 for unsigned output.
-u8 to_output(s32 v, bool is_signed) {
-  s32 c = std::clamp(signed9(v), -128, 127);
-  return static_cast<u8>(is_signed ? c : c ^ 0x80);
+// A dequantised value with four fraction bits: the quantised product (AC: divided by 8, rounding
+// down) shifted left 4, then moved half a step toward zero, as Mednafen's decoder does; a zero
+// factor (q_scale 0) stores the raw value times 2.
+s32 dequantise(s32 value, s32 factor, bool ac) {
+  if (factor == 0) return value * 2 * 16;
+  s32 v = (ac ? (value * factor) >> 3 : value * factor) * 16;
+  if (value != 0) v += value < 0 ? 8 : -8;
+  return std::clamp(v, -0x4000, 0x3FFF);
 }
-
-// YUV->RGB factors in 1/4096 units: R = 1.402 Cr, G = -0.3437 Cb - 0.7143 Cr, B = 1.772 Cb.
-// The hardware's exact fixed-point resolution is undocumented.
-constexpr s32 kCrToR = 5743, kCbToG = -1408, kCrToG = -2926, kCbToB = 7258;
-s32 scale_round(s32 factor, s32 v) { return (factor * v + 2048) >> 12; }
 }  // namespace
 
 bool rl_decode_block(const u16* src, size_t size, size_t& pos, const QuantTable& qt, Block& blk) {
@@ -44,58 +46,79 @@ bool rl_decode_block(const u16* src, size_t size, size_t& pos, const QuantTable&
   if (p >= size) return false;
   blk.fill(0);
   u16 n = src[p++];
-  u32 q_scale = (n >> 10) & 0x3F;
-  u32 k = 0;
-  s32 val = signed10(n) * qt[0];  // DC: quant table only, no q_scale/8
-  for (;;) {
-    if (q_scale == 0) val = signed10(n) * 2;  // special mode: no quantisation, no zigzag
-    val = std::clamp(val, -0x400, 0x3FF);
-    blk[q_scale ? kZagzig[k] : k] = val;
+  const s32 q_scale = (n >> 10) & 0x3F;
+  // q_scale 0 stores values in raster order, unquantised (psx-spx); the DC uses the table alone.
+  auto at = [&](u32 k) -> s32& { return blk[q_scale ? kZagzig[k] : k]; };
+  at(0) = dequantise(signed10(n), qt[0], false);
+  for (u32 k = 0;;) {
+    // A value written at index 63 completes the block without an end code: the hardware reads
+    // no further halfword (ps1-tests mdec/frame's data ends every block that way, and only this
+    // reading gives its 300 macroblocks and the captured picture).
+    if (k == 63) break;
     if (p >= size) return false;
     n = src[p++];
     k += ((n >> 10) & 0x3F) + 1;  // skip zero AC values; FE00h makes k > 63
     if (k > 63) break;
-    val = (signed10(n) * qt[k] * static_cast<s32>(q_scale) + 4) / 8;
+    at(k) = dequantise(signed10(n), qt[k] * q_scale, true);
   }
   pos = p;
   return true;
 }
 
-void idct(const ScaleTable& scale, Block& blk) {
-  Block tmp{};
-  Block* src = &blk;
-  Block* dst = &tmp;
-  for (int pass = 0; pass < 2; ++pass) {
-    for (u32 x = 0; x < 8; ++x) {
-      for (u32 y = 0; y < 8; ++y) {
-        s32 sum = 0;
-        for (u32 z = 0; z < 8; ++z) sum += (*src)[y + z * 8] * (scale[x + z * 8] >> 3);
-        (*dst)[x + y * 8] = (sum + 0xFFF) >> 13;  // strip the fraction, rounding up above one half
-      }
+void idct(const ScaleTable& scale, const Block& blk, Samples& out) {
+  // Columns first (tmp[y][u]), then rows. The first pass drops its 14 low bits, the second
+  // rounds its 16 low bits: 4 fraction bits + 2 x 13 table bits in all. |blk| <= 2^14 and
+  // |scale >> 3| <= 2^12, so eight products stay below 2^30 in both passes.
+  std::array<s32, 64> tmp{};
+  for (u32 u = 0; u < 8; ++u)
+    for (u32 y = 0; y < 8; ++y) {
+      s32 sum = 0;
+      for (u32 v = 0; v < 8; ++v) sum += blk[v * 8 + u] * (scale[v * 8 + y] >> 3);
+      tmp[y * 8 + u] = sum >> 14;
     }
-    std::swap(src, dst);
-  }
-  // After two passes the result is back in blk.
+  for (u32 y = 0; y < 8; ++y)
+    for (u32 x = 0; x < 8; ++x) {
+      s32 sum = 0;
+      for (u32 u = 0; u < 8; ++u) sum += tmp[y * 8 + u] * (scale[u * 8 + x] >> 3);
+      out[y * 8 + x] = clip9((sum + 0x8000) >> 16);
+    }
 }
 
-void yuv_to_rgb(const Block& cr, const Block& cb, const Block& y, u32 xx, u32 yy, bool is_signed, Rgb16x16& out) {
+void yuv_to_rgb(const Samples& cr, const Samples& cb, const Samples& y, u32 xx, u32 yy, Rgb16x16& out) {
+  // R = Y + 1.402 Cr, G = Y - 0.344 Cb - 0.714 Cr, B = Y + 1.772 Cb in 1/256 units; green drops
+  // the low bits of each product before the sum (Mednafen's factors and masks, which come
+  // closest to ps1-tests' mdec/frame captures).
   for (u32 row = 0; row < 8; ++row) {
     for (u32 col = 0; col < 8; ++col) {
       u32 c = (col + xx) / 2 + ((row + yy) / 2) * 8;
-      s32 r = scale_round(kCrToR, cr[c]);
-      s32 g = scale_round(kCbToG, cb[c]) + scale_round(kCrToG, cr[c]);
-      s32 b = scale_round(kCbToB, cb[c]);
+      s32 r = (359 * cr[c] + 0x80) >> 8;
+      s32 g = (((-88 * cb[c]) & ~0x1F) + ((-183 * cr[c]) & ~0x07) + 0x80) >> 8;
+      s32 b = (454 * cb[c] + 0x80) >> 8;
       s32 lum = y[col + row * 8];
       u8* px = &out[((col + xx) + (row + yy) * 16) * 3];
-      px[0] = to_output(lum + r, is_signed);
-      px[1] = to_output(lum + g, is_signed);
-      px[2] = to_output(lum + b, is_signed);
+      px[0] = static_cast<u8>(clip9(lum + r) ^ 0x80);
+      px[1] = static_cast<u8>(clip9(lum + g) ^ 0x80);
+      px[2] = static_cast<u8>(clip9(lum + b) ^ 0x80);
     }
   }
 }
 
-void y_to_mono(const Block& y, bool is_signed, Mono8x8& out) {
-  for (u32 i = 0; i < 64; ++i) out[i] = to_output(y[i], is_signed);
+u8 mono8(s8 y, bool is_signed) { return static_cast<u8>(is_signed ? y : y ^ 0x80); }
+
+u8 mono4(s8 y, bool is_signed) {
+  // Rounded to 4 bits, saturating at the top (ps1-tests mdec/4bit: every nibble of its
+  // hardware log agrees with this and not with plain truncation).
+  u8 n = static_cast<u8>((std::min(127, y + 8) >> 4) & 0xF);
+  return is_signed ? n : n ^ 8;
+}
+
+u16 rgb15(const u8* rgb, bool is_signed) {
+  u16 out = 0;
+  for (u32 i = 0; i < 3; ++i) {
+    u16 c = static_cast<u16>(std::min((rgb[i] + 4) >> 3, 31));
+    out |= static_cast<u16>((is_signed ? c ^ 0x10 : c) << (5 * i));
+  }
+  return out;
 }
 
 }  // namespace psx::mdec

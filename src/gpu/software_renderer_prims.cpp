@@ -1,8 +1,10 @@
 // Software rasterizer: lines (GP0(40)-(5F)) and rectangles (GP0(60)-(7F)).
-// Lines include both end points and step one pixel along the major axis per step; the minor axis
-// takes the pixel nearest the exact line, the one farther from the start where the line passes
-// midway between two, and the colours advance by a 12-bit fixed-point fraction with a half-unit
-// bias. Rectangles are never dithered; textured ones step the texture coordinate by one texel per
+// Lines include both end points and are drawn from the left end point whatever the vertex order,
+// one pixel along the major axis per step; the minor axis takes the pixel nearest the exact line,
+// and where the line passes midway between two, x takes the left one and y the one toward the
+// right end point's y (the rule ps1-tests' gpu/lines captures and Mednafen agree on). Colours
+// advance by a 12-bit fixed-point fraction with a half-unit bias, and are dithered when E1.9 is
+// set, flat or not. Rectangles are never dithered; textured ones step the texture coordinate by one texel per
 // pixel, backwards when GP0(E1) bits 12/13 flip them.
 #include <algorithm>
 #include <cstdlib>
@@ -14,13 +16,17 @@ namespace psx::gpu {
 
 namespace {
 // One coordinate of a line's pixels: start + |delta| * i / steps rounded to the nearest integer,
-// exact halves away from the start (hardware draws (0,0)->(10,3) through (5,2), and (0,3)->(10,0)
-// through (5,1)). An error term, 2|delta|i + steps - 2 steps * offset, kept in [0, 2 steps),
-// makes that exact for any length, where a fixed-point step would drift off the halves.
+// exact halves toward the end point or toward the start. An error term, 2|delta|i + steps
+// (- 1 to round halves toward the start) - 2 steps * offset, kept in [0, 2 steps), makes that
+// exact for any length, where a fixed-point step would drift off the halves.
 struct LineAxis {
   s32 pos, dir, error, add, wrap;
-  LineAxis(s32 start, s32 delta, s32 steps)
-      : pos(start), dir(delta < 0 ? -1 : 1), error(steps), add(2 * std::abs(delta)), wrap(2 * steps) {}
+  LineAxis(s32 start, s32 delta, s32 steps, bool halves_to_end)
+      : pos(start),
+        dir(delta < 0 ? -1 : 1),
+        error(halves_to_end ? steps : steps - 1),
+        add(2 * std::abs(delta)),
+        wrap(2 * steps) {}
   // |delta| <= steps, so one step moves the coordinate by at most one pixel.
   void step() {
     error += add;
@@ -68,12 +74,17 @@ void SoftwareRenderer::draw_rectangle(const Rectangle& r, const DrawState& ds) {
 
 template <bool kSemi, bool kShaded>
 void SoftwareRenderer::rasterize_line(const Line& l, const DrawState& ds) {
-  const Vertex &p0 = l.v[0], &p1 = l.v[1];
+  // Drawn from the left end point: (10,0)->(0,3) is the line (0,3)->(10,0).
+  const bool swap = l.v[0].x > l.v[1].x;
+  const Vertex &p0 = l.v[swap ? 1 : 0], &p1 = l.v[swap ? 0 : 1];
   s32 dx = p1.x - p0.x, dy = p1.y - p0.y;
   s32 steps = std::max(std::abs(dx), std::abs(dy));
-  PixelContext ctx(vram_.data(), ds, 0, 0, kShaded);
+  // Lines are dithered whenever GP0(E1).9 is set, flat ones too (ps1-tests gpu/lines captures:
+  // flat 0xAA lines come out 20 and 21 in the dither pattern).
+  PixelContext ctx(vram_.data(), ds, 0, 0, true);
 
-  LineAxis x(p0.x, dx, steps), y(p0.y, dy, steps);
+  // At an exact half step x rounds down (toward the start) and y toward the right end point.
+  LineAxis x(p0.x, dx, steps, false), y(p0.y, dy, steps, true);
   // Colours in 12-bit fixed point with a half-unit bias.
   s32 r = (p0.r << 12) + 2048, g = (p0.g << 12) + 2048, b = (p0.b << 12) + 2048;
   s32 step_r = 0, step_g = 0, step_b = 0;

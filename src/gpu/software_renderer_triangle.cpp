@@ -2,8 +2,9 @@
 // Rules (psx-spx "GPU Rendering"): a pixel (x, y) is drawn when the exact edge positions on row y
 // satisfy left <= x < right and the row lies in top <= y < bottom (top-left fill rule: right and
 // bottom edges are left out, so quads sharing an edge never overlap). Colours and texture
-// coordinates are affine planes over the screen, stepped with 12 fraction bits and a half-unit
-// bias at the top vertex like the hardware's interpolators; no perspective correction.
+// coordinates are affine planes over the screen, stepped with 12 fraction bits (gradients
+// truncated) and a half-unit bias at the leftmost vertex like the hardware's interpolators; no
+// perspective correction.
 #include <algorithm>
 #include <utility>
 
@@ -15,7 +16,8 @@
 namespace psx::gpu {
 namespace {
 
-// An attribute's value at (x, y): the top vertex's value plus half a unit, stepped by the plane.
+// An attribute's value at (x, y): the core vertex's value (core_vertex(), triangle_setup.h) plus
+// half a unit, stepped by the plane; dx and dy are measured from that vertex.
 inline s32 attribute_at(s32 base, const Gradient& g, s32 dx, s32 dy) {
   return static_cast<s32>((s64{base} << kFrac) + (1 << (kFrac - 1)) + s64{g.dx} * dx + s64{g.dy} * dy);
 }
@@ -51,6 +53,7 @@ void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds
   s32 y_end = std::min(c.y - 1, ds.area_bottom);
   if (y_begin > y_end) return;
   SpanWalk span(sorted, y_begin);
+  const Vertex& o = core_vertex(t);
   const RowPainter rows(ctx, gr.dx, gg.dx, gb.dx);
   for (s32 y = y_begin; y <= y_end; ++y, span.next_row()) {
     if ((y & 1) == ds.skip_row_parity) continue;
@@ -58,17 +61,17 @@ void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds
     const s32 x_right = std::min(span.right(), ds.area_right);
     if (x_left > x_right) continue;
 
-    s32 dx = x_left - a.x, dy = y - a.y;
+    s32 dx = x_left - o.x, dy = y - o.y;
     s32 r = 0, g = 0, bl = 0, u = 0, v = 0;
     u32 r8 = t.v[0].r, g8 = t.v[0].g, b8 = t.v[0].b;
     if constexpr (kGouraud) {
-      r = attribute_at(a.r, gr, dx, dy);
-      g = attribute_at(a.g, gg, dx, dy);
-      bl = attribute_at(a.b, gb, dx, dy);
+      r = attribute_at(o.r, gr, dx, dy);
+      g = attribute_at(o.g, gg, dx, dy);
+      bl = attribute_at(o.b, gb, dx, dy);
     }
     if constexpr (kTex != kUntextured) {
-      u = attribute_at(a.u, gu, dx, dy);
-      v = attribute_at(a.v, gv, dx, dy);
+      u = attribute_at(o.u, gu, dx, dy);
+      v = attribute_at(o.v, gv, dx, dy);
     }
     if constexpr (!kSemi) {  // opaque: eight pixels at a time
       const u32 count = static_cast<u32>(x_right - x_left + 1);

@@ -107,4 +107,20 @@ inline Gradient plane_gradient(const Vertex* const p[3], s64 cross, s32 a0, s32 
   return g;
 }
 
+// The vertex the interpolators start from: the leftmost one of the command's vertices, the later
+// one of two at the same x when it is the second, the third on ties with it (Mednafen's "core
+// vertex"; with truncated gradients the start decides the rounding, and this choice gives
+// ps1-tests' gpu/triangle captures where the top vertex does not).
+inline const Vertex& core_vertex(const Triangle& t) {
+  if (t.v[1].x <= t.v[0].x) return t.v[2].x <= t.v[1].x ? t.v[2] : t.v[1];
+  return t.v[2].x < t.v[0].x ? t.v[2] : t.v[0];
+}
+
+// An attribute's 12-bit fixed-point value at vertex `at`, interpolated from the core vertex `o`
+// (value `base` there, plus half a unit) along the plane `g`.
+inline s32 attribute_from_core(s32 base, const Gradient& g, const Vertex& o, const Vertex& at) {
+  return static_cast<s32>((s64{base} << kFrac) + (1 << (kFrac - 1)) + s64{g.dx} * (at.x - o.x) +
+                          s64{g.dy} * (at.y - o.y));
+}
+
 }  // namespace psx::gpu

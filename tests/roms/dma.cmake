@@ -4,9 +4,10 @@
 psx_add_rom_test(dma_modes SOURCES dma_modes.c CHECKS 47)
 # timers_counts: 3 check_ratio calls + 2 + 4 + 5 + 2 = 16.
 psx_add_rom_test(timers_counts SOURCES timers_counts.c CHECKS 16)
-# mdec_decode: reset status 1; two table uploads with a send() check each, 2; mono block: send 1
-# + 2 + 64 pixels + 1; 15-bit: send 1 + 1 + 256 pixels. 1 + 2 + 68 + 258 = 329.
-psx_add_rom_test(mdec_decode SOURCES mdec_decode.c CHECKS 329)
+# mdec_decode: reset status 1; two table uploads with a send() check each, 2; 4-bit heart block:
+# send 1 + 1 + 8 words; 8-bit heart block: send 1 + 1 + 2 + idle 1; 15-bit: send 1 + 1 + 256
+# pixels. 1 + 2 + 10 + 5 + 258 = 276.
+psx_add_rom_test(mdec_decode SOURCES mdec_decode.c CHECKS 276)
 # timers_video: HBlanks 1 + 5 frames x 2, dot clocks 3, reset at HBlank 3, VBlank sync modes 7
 # = 24.
 psx_add_rom_test(timers_video SOURCES timers_video.c CHECKS 24)

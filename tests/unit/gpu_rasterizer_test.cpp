@@ -215,17 +215,19 @@ TEST_F(GpuTest, LineSlopeSteps) {
   for (u32 x = 0; x < 5; ++x) EXPECT_EQ(px(x, rows[x]), kWhite15) << x;
 }
 
-TEST_F(GpuTest, LineHalfStepsTakeThePixelFartherFromTheStart) {
-  // Where the exact line passes midway between two pixels, hardware draws the one farther from
-  // the start point. Each case is drawn at its own origin (ox, oy), which does not change it.
+TEST_F(GpuTest, LineHalfStepsFollowTheLeftEndPointRule) {
+  // Issue 59 item 4 (ps1-tests gpu/lines captures, Mednafen): a line is drawn from its left end
+  // point whatever the vertex order; where the exact line passes midway between two pixels, x
+  // rounds down and y rounds toward the right end point's y. Each case is drawn at its own origin
+  // (ox, oy), which does not change it.
   struct Case {
     s32 x0, y0, x1, y1, x, y, not_x, not_y;
   };
   const Case cases[] = {
-      {0, 0, 10, 3, 5, 2, 5, 1},    // y = 1.5 at x = 5
-      {0, 3, 10, 0, 5, 1, 5, 2},    // y = 1.5 at x = 5, drawn upwards
-      {10, 0, 7, 10, 8, 5, 9, 5},   // x = 8.5 at y = 5, drawn leftwards
-      {10, 10, 7, 0, 8, 5, 9, 5},   // x = 8.5 at y = 5, drawn up and leftwards
+      {0, 0, 3, 10, 1, 5, 2, 5},    // x = 1.5 at y = 5: x rounds down
+      {10, 0, 0, 3, 5, 1, 5, 2},    // y = 1.5 at x = 5: toward the right end point's y = 0
+      {10, 10, 0, 7, 5, 9, 5, 8},   // y = 8.5 at x = 5: toward the right end point's y = 10
+      {0, 0, 10, 3, 5, 2, 5, 1},    // y = 1.5 at x = 5: toward y = 3
   };
   for (int k = 0; k < 4; ++k) {
     const Case& c = cases[k];

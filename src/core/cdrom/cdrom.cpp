@@ -115,11 +115,16 @@ void Cdrom::io_write(u32 offset, u32 value, u32 width) {
 
 // Request register: BFRD (bit 7) moves the buffered sector into the data FIFO; clearing it
 // empties the FIFO.
-Cycles Cdrom::first_response_time(u8 command) const {
+Cycles Cdrom::first_response_time(u8 command) {
   // Init and ReadTOC initialise the drive before answering; the other commands answer at
-  // GetStat's pace, sooner while the motor is off (psx-spx "CDROM - Response Timings").
-  if (command == 0x0A || command == 0x1E) return kFirstResponseInit;
-  return motor_on_ ? kFirstResponse : kFirstResponseStopped;
+  // GetStat's pace, sooner while the motor is off (psx-spx "CDROM - Response Timings"; that
+  // time has no hardware spread recorded, so it stays fixed).
+  if (command != 0x0A && command != 0x1E && !motor_on_) return kFirstResponseStopped;
+  ack_random_ ^= ack_random_ << 13;
+  ack_random_ ^= ack_random_ >> 17;
+  ack_random_ ^= ack_random_ << 5;
+  if (command == 0x0A || command == 0x1E) return kAckInitMin + ack_random_ % kAckInitSpan;
+  return kAckMin + ack_random_ % kAckSpan;
 }
 
 void Cdrom::write_request(u8 v) {
@@ -174,7 +179,7 @@ void Cdrom::dma_read(u32* words, u32 count) {
 }
 
 void Cdrom::do_state(StateIO& s) {
-  s.section("CDRM", 1);
+  const u32 version = s.section("CDRM", 2, 1);
   s.pod(index_);
   s.pod(params_);
   s.pod(param_count_);
@@ -214,6 +219,8 @@ void Cdrom::do_state(StateIO& s) {
   s.boolean(adpcm_muted_);
   xa_.do_state(s);
   audio_.do_state(s);
+  s.pod_since(version, 2, ack_random_, kAckSeed);  // version 2: acknowledge times vary
+  if (s.loading() && ack_random_ == 0) s.fail("CD-ROM acknowledge generator state is zero");
   if (s.loading() && (param_count_ > 16 || response_.size > 16 || queued_.size > 16 || sector_size_ > sector_.size() ||
                       data_size_ > data_.size() || data_pos_ > data_size_ || static_cast<u8>(drive_) > 3 ||
                       static_cast<u8>(after_seek_) > 3 || static_cast<u8>(second_) > 7))

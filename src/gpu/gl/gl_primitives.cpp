@@ -79,18 +79,22 @@ void GlRenderer::draw_triangle(const Triangle& t, const DrawState& ds) {
   const Vertex& flat = t.v[0];  // flat polygons take the command's first colour
   const u8 colours[3][3] = {{a.r, b.r, c.r}, {a.g, b.g, c.g}, {a.b, b.b, c.b}};
   const u8 flat_colour[3] = {flat.r, flat.g, flat.b};
+  // The planes start at the core vertex (as in the software renderer); the record holds their
+  // value at the top vertex a, which the shader steps from.
+  const Vertex& o = core_vertex(t);
+  const u8 core_colour[3] = {o.r, o.g, o.b};
   for (int i = 0; i < 3; ++i) {
     if (gouraud) {
       Gradient g = plane_gradient(p, cross, colours[i][0], colours[i][1], colours[i][2]);
-      r.base[i] = (s32{colours[i][0]} << kFrac) + kHalf, r.grad[2 * i] = g.dx, r.grad[2 * i + 1] = g.dy;
+      r.base[i] = attribute_from_core(core_colour[i], g, o, a), r.grad[2 * i] = g.dx, r.grad[2 * i + 1] = g.dy;
     } else {
       r.base[i] = (s32{flat_colour[i]} << kFrac) + kHalf;
     }
   }
   if (tex) {
     Gradient gu = plane_gradient(p, cross, a.u, b.u, c.u), gv = plane_gradient(p, cross, a.v, b.v, c.v);
-    r.base[3] = (s32{a.u} << kFrac) + kHalf, r.grad[6] = gu.dx, r.grad[7] = gu.dy;
-    r.base[4] = (s32{a.v} << kFrac) + kHalf, r.grad[8] = gv.dx, r.grad[9] = gv.dy;
+    r.base[3] = attribute_from_core(o.u, gu, o, a), r.grad[6] = gu.dx, r.grad[7] = gu.dy;
+    r.base[4] = attribute_from_core(o.v, gv, o, a), r.grad[8] = gv.dx, r.grad[9] = gv.dy;
   }
   Rect reads[3];
   u32 n = primitive_reads(r, tex, t.clut_x, t.clut_y, t.semi || ds.check_mask, ds.texpage_x, ds.texpage_y, reads);
@@ -114,11 +118,13 @@ void GlRenderer::draw_rectangle(const Rectangle& rect, const DrawState& ds) {
 }
 
 void GlRenderer::draw_line(const Line& l, const DrawState& ds) {
-  const Vertex &p0 = l.v[0], &p1 = l.v[1];
+  // Drawn from the left end point whatever the vertex order (the software renderer's rule).
+  const bool swap = l.v[0].x > l.v[1].x;
+  const Vertex &p0 = l.v[swap ? 1 : 0], &p1 = l.v[swap ? 0 : 1];
   const s32 dx = p1.x - p0.x, dy = p1.y - p0.y;
   if (std::abs(dx) >= 1024 || std::abs(dy) >= 512) return;
   const s32 steps = std::max(std::abs(dx), std::abs(dy));
-  PrimitiveRecord r = state_record(Kind::Line, ds, 0, false, l.semi, ds.dither && l.shaded);
+  PrimitiveRecord r = state_record(Kind::Line, ds, 0, false, l.semi, ds.dither);  // flat ones too
   if (!clip_box(r, std::min(p0.x, p1.x), std::min(p0.y, p1.y), std::max(p0.x, p1.x) + 1, std::max(p0.y, p1.y) + 1, ds))
     return;
   r.a[0] = p0.x, r.a[1] = p0.y, r.b[0] = p1.x, r.b[1] = p1.y, r.c[0] = steps;

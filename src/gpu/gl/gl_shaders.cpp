@@ -124,10 +124,11 @@ int interpolate(int base, int gdx, int gdy, ivec2 dn, ivec2 f) {
   return v;
 }
 
-// Line coordinate after i steps: start + |delta| * i / steps, halves away from the start.
-int line_axis(int start, int delta, int steps, int i) {
+// Line coordinate after i steps: start + |delta| * i / steps, halves toward the end point
+// (bias = steps) or toward the start (bias = steps - 1), as the software renderer's LineAxis.
+int line_axis(int start, int delta, int steps, int i, int bias) {
   if (steps == 0) return start;
-  int n = (steps + 2 * abs(delta) * i) / (2 * steps);
+  int n = (bias + 2 * abs(delta) * i) / (2 * steps);
   return delta < 0 ? start - n : start + n;
 }
 
@@ -180,7 +181,9 @@ void main() {
     int steps = v_c.x;
     int i = abs(delta.x) >= abs(delta.y) ? abs(p.x - p0.x) : abs(p.y - p0.y);
     if (i > steps) discard;
-    if (p.x != line_axis(p0.x, delta.x, steps, i) || p.y != line_axis(p0.y, delta.y, steps, i)) discard;
+    // p0 is the left end point: x halves round toward it, y halves toward the right end point.
+    if (p.x != line_axis(p0.x, delta.x, steps, i, steps - 1) || p.y != line_axis(p0.y, delta.y, steps, i, steps))
+      discard;
     colour = (v_base.xyz + ivec3(v_g0.y, v_g0.w, v_g1.y) * i) >> 12;
   }
 

@@ -41,7 +41,9 @@ struct MemsearchArgs {
   bool verify = false;
 
   void add_to(CLI::App& app) {
-    app.add_option("session", session, "session folder written by psxrl record")->required();
+    app.add_option("session", session, "session folder written by psxrl record")
+        ->required()
+        ->transform(folder_path());
     app.add_option("queries", queries, "queries, each one argument (quote it)");
     app.add_option("--top", top, "candidates to print (default 20)")->type_name("N");
     app.add_option("--encodings", encodings,
@@ -52,7 +54,8 @@ struct MemsearchArgs {
         ->type_name("A-B");
     app.add_flag("--verify", verify, "replay the session from its start state and check every snapshot");
     app.add_option("--integration", integration, "write found variables as DIR/game.toml (a new integration)")
-        ->type_name("DIR");
+        ->type_name("DIR")
+        ->transform(folder_path());
     app.add_option("--name", name, "the new integration's name (default: the folder's name)")->type_name("NAME");
     app.add_option("--var", vars, "a variable for --integration: NAME=ADDRESS:ENCODING (repeatable)")
         ->type_name("SPEC")

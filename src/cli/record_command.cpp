@@ -50,6 +50,7 @@ struct RecordArgs {
     add_user_file_options(app, files);
     app.add_option("--out", out, "session folder to write (created; an existing session is replaced)")
         ->type_name("DIR")
+        ->transform(folder_path())
         ->required();
     app.add_option("--input", input, "input script for port 1, as psxrl run --input takes it")->type_name("FILE");
     app.add_option("--marks", marks, "marks file: one 'FRAME LABEL' per line, set when frame FRAME ends")

@@ -57,7 +57,9 @@ struct EnvConfig {
 };
 
 struct StepInfo {
-  std::uint64_t game_frames = 0;  // emulated frames of this move or reset ("game duration")
+  // Emulated frames of this step or reset ("game duration"): every frame the console ran, the
+  // script's (start_level, after_move) included.
+  std::uint64_t game_frames = 0;
   double real_seconds = 0;        // host time of this call ("real duration"); nothing depends on it
   std::int64_t score = 0;
   double time_left = 0;           // seconds, from the integration's time variable
@@ -148,8 +150,8 @@ class Env {
   const LevelMap& map() const;
   void position(int& x, int& y, int& facing) const;
   double move_reward(std::int64_t score_delta, const std::string& outcome) const;
-  std::uint32_t run_move(const Action& a, bool& hit_bound);
-  std::uint32_t run_frames(int action);
+  void run_move(const Action& a, bool& hit_bound);
+  void run_frames(int action);
   void frame_done(std::vector<std::int64_t>* watched, bool* activity);
   void encode();
   std::uint64_t next_random();

@@ -188,7 +188,6 @@ void Search::changes_at(const std::set<std::string>& labels) {
     any = any || hit;
   }
   if (!any) throw QueryError("changes-at: no mark carries any of the given labels");
-  state_query_ = true;
   std::vector<std::pair<size_t, bool>> seq;
   for (const auto& [frame, hit] : points) seq.emplace_back(static_cast<size_t>(session_.snapshot_at(frame)), hit);
   filter([&](Encoding e, u32 off, double&) {
@@ -298,7 +297,7 @@ double Search::state_likeness(Encoding e, u32 off) const {
   std::sort(v.begin(), v.end());
   double distinct = static_cast<double>(std::unique(v.begin(), v.end()) - v.begin());
   bool codes = v.front() >= -128 && v.back() <= 255;
-  return (labels > 0 ? stable / labels : 0) + 1 / distinct +
+  return (labels > 0 ? stable / labels : 0) + (distinct > 1 ? 2 / distinct : 0) +
          (snaps.size() > 1 ? static_cast<double>(held) / static_cast<double>(snaps.size() - 1) : 0) + (codes ? 1 : 0);
 }
 

@@ -79,10 +79,12 @@ class Search {
   size_t count() const;
   // Survivors grouped by address and by the wider word they lie in, best first: by score, then
   // address. After a `tracks` query the score is its correlation; after a game-state query
-  // (changes-at, same-within, distinct-at, differs-between) it is state_likeness().
+  // (same-within, distinct-at, differs-between) it is state_likeness(); otherwise survivors come
+  // in address order.
   std::vector<Candidate> ranked(size_t limit) const;
   // How much a word looks like a game-state code, 0 to 4: the share of labels (with two or more
-  // marks) at whose marks it holds one value; 1 / its number of values over the session; the
+  // marks) at whose marks it holds one value; 2 / its number of values over the session (0 for
+  // a word that never changes: no variable); the
   // share of consecutive snapshots between which it keeps its value (a state holds still between
   // events and comes in runs, where counters, buffers and stack words move); and 1 when every
   // value is a small code (-128 to 255), as state enumerations are and pointers are not.

@@ -90,6 +90,8 @@ Booted boot(const RecordArgs& a) {
     rl::EnvConfig config;
     config.game = a.game;
     config.files = a.files;
+    config.obs = "ram";                // observations are not recorded: no level maps are needed
+    config.starts_levels = a.level > 0;
     b.env = std::make_unique<rl::Env>(config);
     const rl::Integration& g = b.env->game();
     b.source = {absolute(g.exe), absolute(g.user_disc ? a.files.disc : g.disc), absolute(g.needs_bios ? a.files.bios : ""),

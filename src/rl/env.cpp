@@ -73,7 +73,7 @@ Env::Env(const EnvConfig& config) : config_(config) {
     throw psx::InputError::whole(game_.manifest, "[observations.position] or a position() function is needed for '" +
                                                      config_.obs + "'");
   // Every file the user must supply is named at once, not one per attempt.
-  if (auto missing = missing_user_files(game_, config_.files, positional); !missing.empty())
+  if (auto missing = missing_user_files(game_, config_.files, config_.starts_levels, positional); !missing.empty())
     throw psx::InputError(missing_files_message(game_, missing));
   console_ = std::make_unique<psx::Console>();
   if (config_.cpu == "recompiler") console_->set_cpu_mode(psx::Console::CpuMode::Recompiler);

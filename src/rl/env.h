@@ -54,6 +54,9 @@ struct EnvConfig {
   // The CPU core: "recompiler" (x86-64 code compiled per block, the faster) or "interpreter" (the
   // reference). Both compute the same bits (tests/unit/recompiler_test.cpp), so this is speed only.
   std::string cpu = "recompiler";
+  // false for a tool that only boots the game and never calls reset() (psxrl record without
+  // --level): the level-start states are then not asked for.
+  bool starts_levels = true;
 };
 
 struct StepInfo {

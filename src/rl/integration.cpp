@@ -393,26 +393,27 @@ Integration load_integration(const std::string& games_dir, const std::string& na
     for (const auto& n : list_integrations(games_dir)) known += (known.empty() ? "" : ", ") + n;
     // Games come from one folder: PSXRL_GAMES, else the built-in games (or games_dir in Python).
     const char* from_env = std::getenv("PSXRL_GAMES");
-    std::string source = from_env && games_dir == from_env ? "named by PSXRL_GAMES"
+    std::string source = from_env && games_dir == from_env ? "PSXRL_GAMES names it"
                          : from_env ? "given as games_dir"
-                                    : "PSXRL_GAMES is not set: set it (or games_dir) to the folder that holds " + name +
+                                    : "PSXRL_GAMES is not set: set it, or games_dir, to the folder holding " + name +
                                           "/game.toml";
     throw psx::InputError("unknown game '" + name + "': no " + manifest.string() + " (games are looked for in " +
-                          games_dir + ", " + source + "; that folder holds: " + (known.empty() ? "no games" : known) +
-                          ")");
+                          games_dir + ", which holds " + (known.empty() ? "no games" : known) + "; " + source + ")");
   }
   auto bytes = psx::read_file(manifest.string());
   return parse_integration(std::string(bytes.begin(), bytes.end()), manifest.string(), folder.string(), build_games_dir);
 }
 
-std::vector<std::string> missing_user_files(const Integration& g, const UserFiles& files, bool needs_maps) {
+std::vector<std::string> missing_user_files(const Integration& g, const UserFiles& files, bool needs_states,
+                                            bool needs_maps) {
   std::vector<std::string> missing;
   if (g.needs_bios && files.bios.empty() && g.bios.empty())
     missing.push_back("your PlayStation BIOS image: pass --bios FILE (Python: bios=)");
   if (g.user_disc && files.disc.empty()) missing.push_back("your disc image: pass --disc FILE.cue (Python: disc=)");
-  if (g.level_start == Integration::LevelStart::State && g.state_pattern.find("{states}") != std::string::npos &&
-      files.states_dir.empty())
-    missing.push_back("your level-start save states: pass --states DIR (Python: states=)");
+  if (needs_states && g.level_start == Integration::LevelStart::State &&
+      g.state_pattern.find("{states}") != std::string::npos && files.states_dir.empty())
+    missing.push_back("your level-start save states: pass --states DIR, the folder to read them from (psxrl play "
+                      "saves them there with F5; Python: states=)");
   if (needs_maps && g.map_pattern.find("{maps}") != std::string::npos && files.maps_dir.empty())
     missing.push_back("your level maps, for this observation: pass --maps DIR (Python: maps=)");
   return missing;

@@ -124,8 +124,10 @@ Integration parse_integration(const std::string& text, const std::string& file, 
 
 // What the user must supply and has not, one line each ("your PlayStation BIOS image: pass --bios
 // FILE"), so that one message names every missing file: the BIOS and disc the boot needs, the
-// level states a state start needs, and the maps when `needs_maps` (a simple/local observation).
-std::vector<std::string> missing_user_files(const Integration& g, const UserFiles& files, bool needs_maps);
+// level states a state start needs when `needs_states`, and the maps when `needs_maps` (a
+// simple/local observation).
+std::vector<std::string> missing_user_files(const Integration& g, const UserFiles& files, bool needs_states,
+                                            bool needs_maps);
 // One message naming them all, with where to read about them (help_page()).
 std::string missing_files_message(const Integration& g, const std::vector<std::string>& missing);
 // The integration's README.md when it has one, else the integration guide's section on user files.

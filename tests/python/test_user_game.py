@@ -61,5 +61,5 @@ def test_make_vec_for_a_user_integration(user_games):
 
 
 def test_unknown_game_says_where_games_are_looked_for(user_games):
-    with pytest.raises(psxrl.InputError, match=r"unknown game 'pong'.*looked for in .*mygames.*holds: rolling"):
+    with pytest.raises(psxrl.InputError, match=r"unknown game 'pong'.*looked for in .*mygames, which holds rolling"):
         psxrl.make_env(game="pong", games_dir=user_games)

@@ -163,14 +163,14 @@ TEST(Integration, BiosPathIsBesideTheManifest) {
                                     "mini/game.toml", "mini", kBuildGames);
   EXPECT_TRUE(g.needs_bios);
   EXPECT_EQ(g.bios, (fs::path("mini") / "openbios.bin").string());
-  EXPECT_TRUE(psxrl::rl::missing_user_files(g, {}, false).empty());
+  EXPECT_TRUE(psxrl::rl::missing_user_files(g, {}, true, true).empty());
   Integration a = parse_integration(replace_line(3, "exe = \"mini.exe\"\nbios = { path = \"/roms/bios.bin\" }"),
                                     "mini/game.toml", "mini", kBuildGames);
   EXPECT_EQ(a.bios, "/roms/bios.bin");
   Integration user = parse_integration(replace_line(3, "exe = \"mini.exe\"\nbios = \"user\""), "mini/game.toml", "mini",
                                        kBuildGames);
-  ASSERT_EQ(psxrl::rl::missing_user_files(user, {}, false).size(), 1u);
-  EXPECT_NE(psxrl::rl::missing_user_files(user, {}, false)[0].find("--bios FILE"), std::string::npos);
+  ASSERT_EQ(psxrl::rl::missing_user_files(user, {}, true, true).size(), 1u);
+  EXPECT_NE(psxrl::rl::missing_user_files(user, {}, true, true)[0].find("--bios FILE"), std::string::npos);
   EXPECT_NE(error_of(replace_line(3, "exe = \"mini.exe\"\nbios = \"mine.bin\"")).find(
                 "mini/game.toml:4: [boot] bios: expected \"none\", \"user\" or { path = \"FILE\" }"),
             std::string::npos);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/options.h"
 #include "rl/env.h"
 
 namespace psxrl::cli {
@@ -12,8 +13,10 @@ namespace psxrl::cli {
 inline void add_user_file_options(CLI::App& app, rl::UserFiles& files) {
   app.add_option("--disc", files.disc, "your disc image, for games that need one (Kula World)")->type_name("FILE");
   app.add_option("--bios", files.bios, "your PlayStation BIOS image, for games that need one")->type_name("FILE");
-  app.add_option("--states", files.states_dir, "folder of level-start save states (Kula World)")->type_name("DIR");
-  app.add_option("--maps", files.maps_dir, "folder of level maps (Kula World)")->type_name("DIR");
+  app.add_option("--states", files.states_dir, "folder of level-start save states (Kula World)")
+      ->type_name("DIR")
+      ->transform(folder_path());
+  app.add_option("--maps", files.maps_dir, "folder of level maps (Kula World)")->type_name("DIR")->transform(folder_path());
 }
 
 // --cpu: the environments' CPU core. Only speed differs (the cores compute the same bits), so a

@@ -26,6 +26,11 @@ const char* kMemsearchFooter =
     "  changes-at L1[,L2..]    changes exactly at the marks with these labels, nowhere else\n"
     "                          between consecutive marks\n"
     "  tracks P=V,P=V,...      follows values seen on screen (correlation >= 0.95; ranked by it)\n"
+    "  same-within L1[,L2..]   holds one value at all the marks of each label\n"
+    "  distinct-at most N [ITEM,..]  takes at most N values over the session, or at the items\n"
+    "                          (labels: all their marks; points)\n"
+    "  differs-between L1 L2   no value at an L1 mark is seen at an L2 mark\n"
+    "  (after the last three, survivors are ranked by how much they look like a game-state code)\n"
     "\n"
     "exit codes:\n"
     "  0  success (with --verify: the session replays exactly)\n"
@@ -41,7 +46,9 @@ struct MemsearchArgs {
   bool verify = false;
 
   void add_to(CLI::App& app) {
-    app.add_option("session", session, "session folder written by psxrl record")->required();
+    app.add_option("session", session, "session folder written by psxrl record")
+        ->required()
+        ->transform(folder_path());
     app.add_option("queries", queries, "queries, each one argument (quote it)");
     app.add_option("--top", top, "candidates to print (default 20)")->type_name("N");
     app.add_option("--encodings", encodings,
@@ -52,7 +59,8 @@ struct MemsearchArgs {
         ->type_name("A-B");
     app.add_flag("--verify", verify, "replay the session from its start state and check every snapshot");
     app.add_option("--integration", integration, "write found variables as DIR/game.toml (a new integration)")
-        ->type_name("DIR");
+        ->type_name("DIR")
+        ->transform(folder_path());
     app.add_option("--name", name, "the new integration's name (default: the folder's name)")->type_name("NAME");
     app.add_option("--var", vars, "a variable for --integration: NAME=ADDRESS:ENCODING (repeatable)")
         ->type_name("SPEC")

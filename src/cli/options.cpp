@@ -15,6 +15,15 @@ void setup_app(CLI::App& app, const std::string& exit_codes_footer) {
   app.get_formatter()->column_width(34);
 }
 
+CLI::Validator folder_path() {
+  return CLI::Validator(
+      [](std::string& path) {
+        while (path.size() > 1 && path.back() == '/') path.pop_back();
+        return std::string();
+      },
+      "");
+}
+
 int usage_error(const CLI::App& app, const std::string& message) {
   std::fprintf(stderr, "%s: %s\nsee '%s --help' for the options\n", app.get_name().c_str(), message.c_str(),
                app.get_name().c_str());

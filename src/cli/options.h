@@ -21,6 +21,10 @@ void setup_app(CLI::App& app, const std::string& exit_codes_footer);
 std::optional<int> parse_args(CLI::App& app, const std::vector<std::string>& args,
                               const std::map<std::string, std::string>& needs = {});
 
+// For options that name a folder: drops trailing slashes, so "session/" and "session" name the same
+// folder everywhere the value is used (its name, a sibling "session.partial", paths inside it).
+CLI::Validator folder_path();
+
 // Prints "psxrl CMD: message" and a pointer to --help; returns kUsage.
 int usage_error(const CLI::App& app, const std::string& message);
 

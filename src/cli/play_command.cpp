@@ -116,7 +116,8 @@ namespace {
 void add_play_options(CLI::App& app, PlayOptions& p) {
   ViewOptions& v = p.view;
   app.add_option("--policy", p.policy, "a run folder from psxrl train, or its checkpoint.psxrl; without it, you play")
-      ->type_name("PATH");
+      ->type_name("PATH")
+      ->transform(folder_path());
   app.add_option("--game", p.game, "game integration (default: the policy's, else tumble)")->type_name("NAME");
   app.add_option("--level", p.level, "level to play (default 1)")->type_name("N");
   app.add_option("--obs", p.obs, "observation; must be the policy's (default: the policy's)")->type_name("NAME");
@@ -125,7 +126,8 @@ void add_play_options(CLI::App& app, PlayOptions& p) {
   app.add_option("--max-moves", p.max_moves, "move cap per episode (default: the game's)")->type_name("N");
   app.add_flag("--headless", p.headless, "no window and no sound (also chosen when there is no display)");
   app.add_option("--record", v.record, "record what play shows: FILE.mp4 (.mkv, .mov) with sound, or a PNG folder")
-      ->type_name("OUT");
+      ->type_name("OUT")
+      ->transform(folder_path());
   app.add_option("--record-every", v.record_every, "record 1 picture in N frames (default 1)")->type_name("N");
   app.add_option("--frames", v.max_frames, "stop after N emulated frames shown (default: no limit)")->type_name("N");
   app.add_option("--scale", v.scale,
@@ -136,7 +138,8 @@ void add_play_options(CLI::App& app, PlayOptions& p) {
   app.add_option("--window-screenshot", v.window_screenshot, "at the end, save the window's last picture as PNG")
       ->type_name("FILE");
   app.add_option("--frames-dir", p.frames_dir, "with --policy: the picture after the reset and every move as PNG")
-      ->type_name("DIR");
+      ->type_name("DIR")
+      ->transform(folder_path());
 }
 
 // Checks the options that need no game; returns a usage message or "".

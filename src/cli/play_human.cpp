@@ -10,7 +10,6 @@
 #include "cli/cli.h"
 #include "cli/play.h"
 #include "core/console.h"
-#include "core/input_error.h"
 #include "rl/vec_env.h"
 
 namespace psxrl::cli {
@@ -72,11 +71,7 @@ std::string play_frames(rl::Env& env, PlayView& view, bool judge, std::uint64_t&
 }  // namespace
 
 int play_human(rl::Env& env, const PlayOptions& p, PlayView& view) {
-  const rl::Integration& g = env.game();
-  bool needs_folder = g.state_pattern.find("{states}") != std::string::npos;
-  if (starts_from_states(env) && needs_folder && env.config().files.states_dir.empty())
-    throw psx::InputError("game '" + g.name + "' starts levels from save states: pass --states DIR (the folder to "
-                          "read them from, and where F5 saves them)");
+  // The Env's constructor has asked for a --states folder where the levels start from states.
   view.on_save = [&] { save_level_state(env, p.level); };
   for (std::uint64_t ep = 1; ep <= p.episodes && !view.stopped(); ++ep) {
     // A level whose start state is not made yet is played from the game's boot: the player goes

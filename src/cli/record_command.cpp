@@ -50,6 +50,7 @@ struct RecordArgs {
     add_user_file_options(app, files);
     app.add_option("--out", out, "session folder to write (created; an existing session is replaced)")
         ->type_name("DIR")
+        ->transform(folder_path())
         ->required();
     app.add_option("--input", input, "input script for port 1, as psxrl run --input takes it")->type_name("FILE");
     app.add_option("--marks", marks, "marks file: one 'FRAME LABEL' per line, set when frame FRAME ends")
@@ -89,6 +90,8 @@ Booted boot(const RecordArgs& a) {
     rl::EnvConfig config;
     config.game = a.game;
     config.files = a.files;
+    config.obs = "ram";                // observations are not recorded: no level maps are needed
+    config.starts_levels = a.level > 0;
     b.env = std::make_unique<rl::Env>(config);
     const rl::Integration& g = b.env->game();
     b.source = {absolute(g.exe), absolute(g.user_disc ? a.files.disc : g.disc), absolute(g.needs_bios ? a.files.bios : ""),

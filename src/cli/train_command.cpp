@@ -65,7 +65,9 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, 
   app.add_option("--episodes", c.episodes, "episodes in all, test episodes included (default 1000)")->type_name("N");
   app.add_option("--gamma", c.env.gamma, "discount; rewards are in units of 1 - gamma (default 0.9)")->type_name("G");
   app.add_option("--seed", c.seed, "seed of the agent, exploration and episodes (default 0)")->type_name("S");
-  app.add_option("--out", c.out, "run folder (default runs/GAME-lLEVEL-AGENT-OBS-sSEED)")->type_name("DIR");
+  app.add_option("--out", c.out, "run folder (default runs/GAME-lLEVEL-AGENT-OBS-sSEED)")
+      ->type_name("DIR")
+      ->transform(folder_path());
   app.add_flag("--resume", c.resume, "continue the run in --out from its checkpoint (same options)");
   app.add_option("--max-moves", c.env.max_moves, "move cap per episode (default: the game's)")->type_name("N");
   app.add_option("--test-every", c.test_every, "every Nth episode is a greedy test (default 10: 9 train, 1 test)")

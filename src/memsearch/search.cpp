@@ -222,6 +222,85 @@ void Search::tracks(const std::vector<std::pair<size_t, double>>& series, double
   });
 }
 
+void Search::same_within(const std::set<std::string>& labels) {
+  std::vector<std::vector<size_t>> groups;
+  for (const std::string& label : labels) groups.push_back(label_snapshots(label));
+  state_query_ = true;
+  filter([&](Encoding e, u32 off, double&) {
+    for (const auto& snaps : groups) {
+      int64_t first, v;
+      if (!decode(session_.snapshots[snaps[0]], off, e, first)) return false;
+      for (size_t snap : snaps)
+        if (!decode(session_.snapshots[snap], off, e, v) || v != first) return false;
+    }
+    return true;
+  });
+}
+
+void Search::distinct_at_most(size_t n, const std::vector<size_t>& snaps) {
+  if (n < 1) throw QueryError("distinct-at most N: N must be at least 1");
+  std::vector<size_t> at = snaps;
+  if (at.empty())
+    for (size_t i = 0; i < session_.snapshots.size(); ++i) at.push_back(i);
+  state_query_ = true;
+  std::vector<int64_t> seen;
+  filter([&](Encoding e, u32 off, double&) {
+    seen.clear();
+    for (size_t snap : at) {
+      int64_t v;
+      if (!decode(session_.snapshots[snap], off, e, v)) return false;
+      if (std::find(seen.begin(), seen.end(), v) != seen.end()) continue;
+      if (seen.size() == n) return false;
+      seen.push_back(v);
+    }
+    return true;
+  });
+}
+
+void Search::differs_between(const std::string& label1, const std::string& label2) {
+  std::vector<size_t> a = label_snapshots(label1), b = label_snapshots(label2);
+  state_query_ = true;
+  filter([&](Encoding e, u32 off, double&) {
+    for (size_t i : a)
+      for (size_t j : b) {
+        int64_t va, vb;
+        if (!decode(session_.snapshots[i], off, e, va) || !decode(session_.snapshots[j], off, e, vb) || va == vb)
+          return false;
+      }
+    return true;
+  });
+}
+
+std::vector<size_t> Search::label_snapshots(const std::string& label) const {
+  std::vector<size_t> snaps;
+  for (const Mark& m : session_.marks)
+    if (m.label == label) snaps.push_back(static_cast<size_t>(session_.snapshot_at(m.frame)));
+  if (snaps.empty()) throw QueryError("no mark is labelled '" + label + "'");
+  return snaps;
+}
+
+double Search::state_likeness(Encoding e, u32 off) const {
+  const auto& snaps = session_.snapshots;
+  std::vector<int64_t> v(snaps.size());
+  for (size_t i = 0; i < snaps.size(); ++i)
+    if (!decode(snaps[i], off, e, v[i])) return 0;
+  std::map<std::string, std::vector<int64_t>> by_label;
+  for (const Mark& m : session_.marks) by_label[m.label].push_back(v[static_cast<size_t>(session_.snapshot_at(m.frame))]);
+  double labels = 0, stable = 0;
+  for (const auto& [label, values] : by_label) {
+    if (values.size() < 2) continue;
+    labels += 1;
+    stable += std::all_of(values.begin(), values.end(), [&](int64_t x) { return x == values[0]; }) ? 1 : 0;
+  }
+  size_t held = 0;
+  for (size_t i = 1; i < v.size(); ++i) held += v[i] == v[i - 1];
+  std::sort(v.begin(), v.end());
+  double distinct = static_cast<double>(std::unique(v.begin(), v.end()) - v.begin());
+  bool codes = v.front() >= -128 && v.back() <= 255;
+  return (labels > 0 ? stable / labels : 0) + (distinct > 1 ? 2 / distinct : 0) +
+         (snaps.size() > 1 ? static_cast<double>(held) / static_cast<double>(snaps.size() - 1) : 0) + (codes ? 1 : 0);
+}
+
 size_t Search::resolve_point(const std::string& point) const {
   const Session& s = session_;
   if (point == "start") return 0;
@@ -281,6 +360,29 @@ void Search::apply(const std::string& query) {
     need(2, "changes-at LABEL[,LABEL...]");
     std::vector<std::string> labels = split(w[1], ',');
     changes_at(std::set<std::string>(labels.begin(), labels.end()));
+  } else if (op == "same-within") {
+    need(2, "same-within LABEL[,LABEL...]");
+    std::vector<std::string> labels = split(w[1], ',');
+    same_within(std::set<std::string>(labels.begin(), labels.end()));
+  } else if (op == "distinct-at") {
+    if ((w.size() != 3 && w.size() != 4) || w[1] != "most")
+      throw QueryError("'" + query + "': expected distinct-at most N [LABEL|POINT,...]");
+    int64_t n = parse_value(w[2], query);
+    if (n < 1) throw QueryError("'" + query + "': N must be at least 1");
+    std::vector<size_t> snaps;
+    if (w.size() == 4)
+      for (const std::string& item : split(w[3], ',')) {
+        bool label = std::any_of(session_.marks.begin(), session_.marks.end(), [&](const Mark& m) { return m.label == item; });
+        if (!label) {
+          snaps.push_back(resolve_point(item));
+          continue;
+        }
+        for (size_t snap : label_snapshots(item)) snaps.push_back(snap);
+      }
+    distinct_at_most(static_cast<size_t>(n), snaps);
+  } else if (op == "differs-between") {
+    need(3, "differs-between LABEL1 LABEL2");
+    differs_between(w[1], w[2]);
   } else if (op == "tracks") {
     need(2, "tracks POINT=VALUE,POINT=VALUE,... (no spaces)");
     std::vector<std::pair<size_t, double>> series;
@@ -291,7 +393,9 @@ void Search::apply(const std::string& query) {
     }
     tracks(series);
   } else {
-    throw QueryError("unknown query '" + op + "' (eq, ne, changed, unchanged, increased, decreased, changes-at, tracks)");
+    throw QueryError("unknown query '" + op +
+                     "' (eq, ne, changed, unchanged, increased, decreased, changes-at, tracks, same-within, distinct-at, "
+                     "differs-between)");
   }
 }
 
@@ -313,9 +417,8 @@ void Search::group(std::map<u32, Candidate>& by_offset) const {
   }
 }
 
-void Search::add(std::map<u32, Candidate>& by_offset, const Pool& pool, size_t i) const {
+void Search::add(std::map<u32, Candidate>& by_offset, const Pool& pool, size_t i, double score) const {
   u32 off = pool.offsets[i];
-  double score = pool.scores.empty() ? 0 : pool.scores[i];
   auto [it, fresh] = by_offset.try_emplace(off, Candidate{off, pool.encoding, score, {}});
   if (!fresh) merge(it->second, pool.encoding, score);
 }
@@ -323,12 +426,16 @@ void Search::add(std::map<u32, Candidate>& by_offset, const Pool& pool, size_t i
 std::vector<Candidate> Search::ranked(size_t limit) const {
   std::vector<Candidate> out;
   bool scored = std::any_of(pools_.begin(), pools_.end(), [](const Pool& p) { return !p.scores.empty(); });
-  if (scored) {
+  if (scored || state_query_) {
     std::map<u32, Candidate> by_offset;
     for (const Pool& pool : pools_)
-      for (size_t i = 0; i < pool.offsets.size(); ++i) add(by_offset, pool, i);
+      for (size_t i = 0; i < pool.offsets.size(); ++i)
+        add(by_offset, pool, i, pool.scores.empty() ? 0 : pool.scores[i]);
     group(by_offset);
     for (auto& [off, c] : by_offset) out.push_back(std::move(c));
+    // A state word is judged as it is shown: its row's encoding, not a byte inside it.
+    if (!scored)
+      for (Candidate& c : out) c.score = state_likeness(c.encoding, c.offset);
     std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
     if (out.size() > limit) out.resize(limit);
     return out;
@@ -344,7 +451,7 @@ std::vector<Candidate> Search::ranked(size_t limit) const {
     std::map<u32, Candidate> in_word;
     for (size_t p = 0; p < pools_.size(); ++p)
       for (; cursor[p] < pools_[p].offsets.size() && (pools_[p].offsets[cursor[p]] & ~3u) == word; ++cursor[p])
-        add(in_word, pools_[p], cursor[p]);
+        add(in_word, pools_[p], cursor[p], 0);
     group(in_word);
     for (auto& [off, c] : in_word)
       if (out.size() < limit) out.push_back(std::move(c));

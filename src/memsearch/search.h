@@ -38,7 +38,7 @@ class QueryError : public std::runtime_error {
 struct Candidate {
   psx::u32 offset = 0;
   Encoding encoding = Encoding::U32;
-  double score = 0;                 // correlation for a `tracks` query, else 0
+  double score = 0;                 // tracks correlation, state likeness (ranked()), else 0
   std::vector<Encoding> also;       // other encodings at the same address that also survived
   psx::u32 address() const { return offset_to_address(offset); }
 };
@@ -56,6 +56,10 @@ class Search {
   //   changed A B | unchanged A B | increased A B | decreased A B
   //   changes-at LABEL[,LABEL...]
   //   tracks POINT=VALUE,POINT=VALUE,...   (a value seen on screen at three or more points)
+  //   same-within LABEL[,LABEL...]         (one value at all the marks of each label)
+  //   distinct-at most N [ITEM,ITEM...]    (at most N values over the session, or at the items:
+  //                                         labels (all their marks) and points)
+  //   differs-between LABEL1 LABEL2        (no value at a LABEL1 mark is seen at a LABEL2 mark)
   // Throws QueryError naming what is wrong.
   void apply(const std::string& query);
 
@@ -65,12 +69,26 @@ class Search {
   void compare(size_t a, size_t b, Change how);
   void changes_at(const std::set<std::string>& labels);
   void tracks(const std::vector<std::pair<size_t, double>>& series, double min_correlation = 0.95);
+  void same_within(const std::set<std::string>& labels);
+  void distinct_at_most(size_t n, const std::vector<size_t>& snaps);  // empty: every snapshot
+  void differs_between(const std::string& label1, const std::string& label2);
 
   size_t resolve_point(const std::string& point) const;
+  // The snapshots of every mark carrying `label` (QueryError when none does).
+  std::vector<size_t> label_snapshots(const std::string& label) const;
   size_t count() const;
   // Survivors grouped by address and by the wider word they lie in, best first: by score, then
-  // address.
+  // address. After a `tracks` query the score is its correlation; after a game-state query
+  // (same-within, distinct-at, differs-between) it is state_likeness(); otherwise survivors come
+  // in address order.
   std::vector<Candidate> ranked(size_t limit) const;
+  // How much a word looks like a game-state code, 0 to 4: the share of labels (with two or more
+  // marks) at whose marks it holds one value; 2 / its number of values over the session (0 for
+  // a word that never changes: no variable); the
+  // share of consecutive snapshots between which it keeps its value (a state holds still between
+  // events and comes in runs, where counters, buffers and stack words move); and 1 when every
+  // value is a small code (-128 to 255), as state enumerations are and pointers are not.
+  double state_likeness(Encoding e, psx::u32 offset) const;
   const Session& session() const { return session_; }
 
  private:
@@ -78,7 +96,7 @@ class Search {
   void filter(Keep keep);
   void merge(Candidate& c, Encoding e, double score) const;
   struct Pool;
-  void add(std::map<psx::u32, Candidate>& by_offset, const Pool& pool, size_t i) const;
+  void add(std::map<psx::u32, Candidate>& by_offset, const Pool& pool, size_t i, double score) const;
   void group(std::map<psx::u32, Candidate>& by_offset) const;
 
   const Session& session_;
@@ -88,6 +106,7 @@ class Search {
     std::vector<double> scores;  // parallel to offsets once a tracks query ran
   };
   std::vector<Pool> pools_;
+  bool state_query_ = false;  // a game-state query ran: rank by state_likeness()
 };
 
 }  // namespace psxrl::memsearch

@@ -257,10 +257,13 @@ long Session::snapshot_at(u64 frame) const {
   return it != snapshot_frames.end() && *it == frame ? static_cast<long>(it - snapshot_frames.begin()) : -1;
 }
 
-void write_session(const Session& s, const std::string& dir) {
+void write_session(const Session& s, const std::string& folder) {
   // The session is written whole into a fresh sibling folder that then takes the target's place:
-  // a failed write leaves no half-written session and the old one, if any, untouched.
+  // a failed write leaves no half-written session and the old one, if any, untouched. The sibling
+  // of "session/" is "session.partial", as for "session".
   namespace fs = std::filesystem;
+  std::string dir = folder;
+  while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
   const std::string part = dir + ".partial";
   std::error_code ec;
   fs::remove_all(part, ec);

@@ -82,7 +82,9 @@ std::string integration_skeleton(const std::string& name, const SessionSource& s
     t << v.name << " = { address = " << addr << ", type = \"" << encoding_name(v.encoding) << "\" }\n";
   }
   const char* actions[][2] = {{"FORWARD", "up"}, {"LOOKRIGHT", "right"}, {"LOOKLEFT", "left"}, {"JUMPFORWARD", "cross"}};
-  t << "\n# The seed's four actions; change the buttons to the game's controls.\n";
+  t << "\n# The seed's four actions; change the buttons to the game's controls. In each frame-skip step\n"
+    << "# the buttons are down for `hold` frames, then up for the rest of the step, so a game that acts\n"
+    << "# on presses sees one press per step; hold >= frame_skip keeps them down across steps.\n";
   for (const auto& a : actions) t << "[[actions]]\nname = \"" << a[0] << "\"\nbuttons = [\"" << a[1] << "\"]\nhold = 3\n\n";
   const FoundVariable* state = find(vars, "state");
   t << "# Levels start from save states you make with psxrl play (F5 at a level's start).\n"

@@ -183,15 +183,20 @@ void bind_console(py::module_& m) {
       .def("take_tty", [](PyConsole& c) { return std::exchange(c.tty, {}); })
       // Input.
       .def("set_buttons", [](PyConsole& c, py::handle b, int port) { c.console.set_buttons(port, button_mask(b)); },
-           py::arg("buttons"), py::arg("port") = 1)
+           py::arg("buttons"), py::arg("port") = 1,
+           "Sets exactly these buttons down (the rest up) until changed; runs no frames.")
       .def("press", [](PyConsole& c, py::handle b, int port) { c.console.press(port, button_mask(b)); },
-           py::arg("buttons"), py::arg("port") = 1)
+           py::arg("buttons"), py::arg("port") = 1, "Puts these buttons down until release(); runs no frames.")
       .def("release", [](PyConsole& c, py::handle b, int port) { c.console.release(port, button_mask(b)); },
-           py::arg("buttons"), py::arg("port") = 1)
+           py::arg("buttons"), py::arg("port") = 1, "Lets these buttons up; runs no frames.")
       .def(
           "press_for",
           [](PyConsole& c, py::handle b, psx::u32 frames, int port) { c.console.press_for(port, button_mask(b), frames); },
-          py::arg("buttons"), py::arg("frames"), py::arg("port") = 1)
+          py::arg("buttons"), py::arg("frames"), py::arg("port") = 1,
+          "Puts the buttons down now and lets them up after the next `frames` frames end. It runs no\n"
+          "frames itself (run_frames does) and returns at once. A press_for of a button still down\n"
+          "restarts its count, so it is one longer press: to press twice, run frames + 1 frames (the\n"
+          "game must see a frame with the button up) before the second press_for.")
       .def(
           "set_axes",
           [](PyConsole& c, psx::u8 left_x, psx::u8 left_y, psx::u8 right_x, psx::u8 right_y, int port) {

@@ -70,6 +70,9 @@ Env::Env(const EnvConfig& config) : config_(config) {
   if (positional && game_.position_x.empty() && !lua_->has_function("position"))
     throw psx::InputError::whole(game_.manifest, "[observations.position] or a position() function is needed for '" +
                                                      config_.obs + "'");
+  // Every file the user must supply is named at once, not one per attempt.
+  if (auto missing = missing_user_files(game_, config_.files, config_.starts_levels, positional); !missing.empty())
+    throw psx::InputError(missing_files_message(game_, missing));
   console_ = std::make_unique<psx::Console>();
   if (config_.cpu == "recompiler") console_->set_cpu_mode(psx::Console::CpuMode::Recompiler);
   else if (config_.cpu != "interpreter")
@@ -129,19 +132,11 @@ void Env::use_renderer() {
 }
 
 void Env::boot() {
-  if (game_.needs_bios) {
-    if (config_.files.bios.empty())
-      throw psx::InputError("game '" + game_.name + "' needs your PlayStation BIOS image: pass --bios FILE (see " +
-                            game_.folder + "/README.md)");
-    console_->load_bios(config_.files.bios);
-  }
+  if (game_.needs_bios) console_->load_bios(config_.files.bios.empty() ? game_.bios : config_.files.bios);
   if (!game_.exe.empty()) {
     console_->boot_exe(game_.exe);
   } else {
     std::string disc = game_.user_disc ? config_.files.disc : game_.disc;
-    if (disc.empty())
-      throw psx::InputError("game '" + game_.name + "' needs your own disc image: pass --disc FILE.cue (see " +
-                            game_.folder + "/README.md)");
     console_->insert_disc(disc);
     if (game_.user_disc) check_disc_identity(disc);
     console_->boot_disc();
@@ -217,8 +212,8 @@ const LevelMap& Env::map() const {
   auto& slot = maps_[static_cast<size_t>(level_)];
   if (!slot) {
     if (game_.map_pattern.find("{maps}") != std::string::npos && config_.files.maps_dir.empty())
-      throw psx::InputError("game '" + game_.name + "' needs level maps for this observation: pass --maps DIR (see " +
-                            game_.folder + "/README.md)");
+      throw psx::InputError("game '" + game_.name + "' needs level maps: pass --maps DIR (see " +
+                            help_page(game_) + ")");
     slot = read_level_map(expand(game_.map_pattern, level_, game_, config_.files));
   }
   return *slot;
@@ -226,9 +221,6 @@ const LevelMap& Env::map() const {
 
 std::uint64_t Env::start_level(int level) {
   if (game_.level_start == Integration::LevelStart::State) {
-    if (game_.state_pattern.find("{states}") != std::string::npos && config_.files.states_dir.empty())
-      throw psx::InputError("game '" + game_.name + "' starts levels from your save states: pass --states DIR (see " +
-                            game_.folder + "/README.md)");
     console_->load_state_file(expand(game_.state_pattern, level, game_, config_.files));
   } else {
     console_->restore(boot_state_);

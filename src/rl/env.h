@@ -54,10 +54,15 @@ struct EnvConfig {
   // The CPU core: "recompiler" (x86-64 code compiled per block, the faster) or "interpreter" (the
   // reference). Both compute the same bits (tests/unit/recompiler_test.cpp), so this is speed only.
   std::string cpu = "recompiler";
+  // false for a tool that only boots the game and never calls reset() (psxrl record without
+  // --level): the level-start states are then not asked for.
+  bool starts_levels = true;
 };
 
 struct StepInfo {
-  std::uint64_t game_frames = 0;  // emulated frames of this move or reset ("game duration")
+  // Emulated frames of this step or reset ("game duration"): every frame the console ran, the
+  // script's (start_level, after_move) included.
+  std::uint64_t game_frames = 0;
   double real_seconds = 0;        // host time of this call ("real duration"); nothing depends on it
   std::int64_t score = 0;
   double time_left = 0;           // seconds, from the integration's time variable
@@ -148,8 +153,8 @@ class Env {
   const LevelMap& map() const;
   void position(int& x, int& y, int& facing) const;
   double move_reward(std::int64_t score_delta, const std::string& outcome) const;
-  std::uint32_t run_move(const Action& a, bool& hit_bound);
-  std::uint32_t run_frames(int action);
+  void run_move(const Action& a, bool& hit_bound);
+  void run_frames(int action);
   void frame_done(std::vector<std::int64_t>* watched, bool* activity);
   void encode();
   std::uint64_t next_random();

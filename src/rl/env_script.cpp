@@ -42,7 +42,9 @@ void Env::bind_script() {
     console_->run_frames(static_cast<std::uint64_t>(n));
     return 0;
   });
-  // env.press("cross+up", frames): hold buttons on port 1 for that many frame ends.
+  // env.press("cross+up", frames): runs `frames` frames with the buttons down on port 1, then one
+  // frame with them up, so that the game sees the release and two presses in a row are two
+  // presses (down edges), not one long hold. Returns when those frames + 1 have run.
   lua_->add_function("env", "press", [this](lua_State* L) {
     std::string names = Host::string_arg(L, 1);
     double frames = Host::number_arg(L, 2);
@@ -57,7 +59,10 @@ void Env::bind_script() {
       start = plus + 1;
     }
     if (frames < 1 || frames > 100000) throw std::invalid_argument("press: expected 1 to 100000 frames");
-    console_->press_for(1, bits, static_cast<std::uint32_t>(frames));
+    console_->press(1, bits);
+    console_->run_frames(static_cast<std::uint64_t>(frames));
+    console_->release(1, bits);
+    console_->run_frame();
     return 0;
   });
   // env.map() -> width, height, start_x, start_y, facing of the current level's map.

@@ -44,16 +44,14 @@ void Env::frame_done(std::vector<std::int64_t>* watched, bool* activity) {
   if (activity) *activity = active;
 }
 
-std::uint32_t Env::run_move(const Action& a, bool& hit_bound) {
+void Env::run_move(const Action& a, bool& hit_bound) {
   std::vector<std::int64_t> watched;
   for (const Variable* v : watched_vars_) watched.push_back(raw(*v));
   console_->press_for(1, a.buttons, a.hold);
   MoveDelimiter delimiter;
   delimiter.begin(delim_);
-  std::uint32_t frames = 0;
   for (;;) {
     console_->run_frame();
-    ++frames;
     bool activity = false;
     frame_done(&watched, &activity);
     // A win or a loss ends the move at once: nothing the agent does next can change it.
@@ -61,23 +59,25 @@ std::uint32_t Env::run_move(const Action& a, bool& hit_bound) {
     if (delimiter.frame(activity)) break;
   }
   hit_bound = delimiter.hit_bound();
-  return frames;
 }
 
-std::uint32_t Env::run_frames(int action) {
+void Env::run_frames(int action) {
   std::uint32_t skip = game_.frame_skip_min;
   if (game_.frame_skip_max > game_.frame_skip_min)
     skip += static_cast<std::uint32_t>(next_random() % (game_.frame_skip_max - game_.frame_skip_min + 1));
-  std::uint32_t frames = 0;
-  for (; frames < skip && outcome().empty(); ++frames) {
+  for (std::uint32_t frames = 0; frames < skip && outcome().empty(); ++frames) {
     // Sticky actions (Machado et al.): each frame keeps the previous action with probability p.
     if (sticky_ > 0 && static_cast<double>(next_random() >> 11) * 0x1.0p-53 < sticky_) action = last_action_;
     last_action_ = action;
-    console_->set_buttons(1, game_.actions[static_cast<size_t>(action)].buttons);
+    // The buttons are down for the action's first `hold` frames and up for the rest of the step,
+    // so a game that acts on presses (a button's down edge) sees the same action twice in a row
+    // as two presses; a hold of at least the frame skip keeps them down for the whole step.
+    const Action& a = game_.actions[static_cast<size_t>(action)];
+    console_->set_buttons(1, frames < a.hold ? a.buttons : psx::u16{0});
     console_->run_frame();
     frame_done(nullptr, nullptr);
   }
-  return frames;
+  console_->set_buttons(1, 0);
 }
 
 StepResult Env::step(int action) {
@@ -91,10 +91,12 @@ StepResult Env::step(int action) {
   move_audio_.clear();
   listen();
   bool hit_bound = false;
-  std::uint32_t frames = game_.mode == Integration::StepMode::Moves
-                             ? run_move(game_.actions[static_cast<size_t>(action)], hit_bound)
-                             : run_frames(action);
+  const std::uint64_t f0 = console_->frames();
+  if (game_.mode == Integration::StepMode::Moves) run_move(game_.actions[static_cast<size_t>(action)], hit_bound);
+  else run_frames(action);
   if (lua_->has_function("after_move")) lua_->call("after_move", {double(action)}, 0);
+  // Every frame the console ran counts, the script's in after_move included.
+  const std::uint64_t frames = console_->frames() - f0;
   StepResult r;
   std::string out = outcome();
   r.reward = move_reward(score ? raw(*score) - score0 : 0, out);

@@ -3,6 +3,7 @@
 #include "rl/integration.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 
 #include <toml++/toml.h>
@@ -175,6 +176,24 @@ std::string resolve_program(const std::string& name, const std::string& folder, 
   return (fs::path(build_games_dir) / game / name).string();
 }
 
+// bios = "none" (the built-in kernel), "user" (--bios FILE) or { path = "FILE" }: a file relative
+// to the integration's folder (or absolute), which --bios still overrides.
+void read_bios(const Reader& b, Integration& g) {
+  const char* expected = "expected \"none\", \"user\" or { path = \"FILE\" }";
+  if (const toml::node* n = b.get("bios"); n && n->is_table()) {
+    Reader t = b.table("bios", true);
+    t.only({"path"});
+    std::string path = t.str("path", "", true);
+    if (path.empty()) t.fail(t.get("path"), "path", "expected a file name");
+    g.bios = fs::path(path).is_absolute() ? path : (fs::path(g.folder) / path).string();
+    g.needs_bios = true;
+    return;
+  }
+  std::string bios = b.str("bios", "none");
+  if (bios != "none" && bios != "user") b.fail(b.get("bios"), "bios", expected);
+  g.needs_bios = bios == "user";
+}
+
 void read_boot(const Reader& root, Integration& g, const std::string& build_games_dir) {
   Reader b = root.table("boot", true);
   b.only({"exe", "disc", "bios", "disc_sha1", "ready", "max_frames"});
@@ -183,9 +202,7 @@ void read_boot(const Reader& root, Integration& g, const std::string& build_game
   if (!exe.empty()) g.exe = resolve_program(exe, g.folder, build_games_dir, g.name);
   if (disc == "user") g.user_disc = true;
   else if (!disc.empty()) g.disc = resolve_program(disc, g.folder, build_games_dir, g.name);
-  std::string bios = b.str("bios", "none");
-  if (bios != "none" && bios != "user") b.fail(b.get("bios"), "bios", "expected \"none\" or \"user\"");
-  g.needs_bios = bios == "user";
+  read_bios(b, g);
   g.disc_sha1 = b.strings("disc_sha1");
   for (const auto& h : g.disc_sha1)
     if (h.size() != 40 || h.find_first_not_of("0123456789abcdef") != std::string::npos)
@@ -374,11 +391,43 @@ Integration load_integration(const std::string& games_dir, const std::string& na
   if (name.empty() || name.find('/') != std::string::npos || !fs::exists(manifest)) {
     std::string known;
     for (const auto& n : list_integrations(games_dir)) known += (known.empty() ? "" : ", ") + n;
-    throw psx::InputError("unknown game '" + name + "': no " + manifest.string() + " (games in " + games_dir + ": " +
-                          (known.empty() ? "none" : known) + ")");
+    // Games come from one folder: PSXRL_GAMES, else the built-in games (or games_dir in Python).
+    const char* from_env = std::getenv("PSXRL_GAMES");
+    std::string source = from_env && games_dir == from_env ? "PSXRL_GAMES names it"
+                         : from_env ? "given as games_dir"
+                                    : "PSXRL_GAMES is not set: set it, or games_dir, to the folder holding " + name +
+                                          "/game.toml";
+    throw psx::InputError("unknown game '" + name + "': no " + manifest.string() + " (games are looked for in " +
+                          games_dir + ", which holds " + (known.empty() ? "no games" : known) + "; " + source + ")");
   }
   auto bytes = psx::read_file(manifest.string());
   return parse_integration(std::string(bytes.begin(), bytes.end()), manifest.string(), folder.string(), build_games_dir);
+}
+
+std::vector<std::string> missing_user_files(const Integration& g, const UserFiles& files, bool needs_states,
+                                            bool needs_maps) {
+  std::vector<std::string> missing;
+  if (g.needs_bios && files.bios.empty() && g.bios.empty())
+    missing.push_back("your PlayStation BIOS image: pass --bios FILE (Python: bios=)");
+  if (g.user_disc && files.disc.empty()) missing.push_back("your disc image: pass --disc FILE.cue (Python: disc=)");
+  if (needs_states && g.level_start == Integration::LevelStart::State &&
+      g.state_pattern.find("{states}") != std::string::npos && files.states_dir.empty())
+    missing.push_back("your level-start save states: pass --states DIR, the folder to read them from (psxrl play "
+                      "saves them there with F5; Python: states=)");
+  if (needs_maps && g.map_pattern.find("{maps}") != std::string::npos && files.maps_dir.empty())
+    missing.push_back("your level maps, for this observation: pass --maps DIR (Python: maps=)");
+  return missing;
+}
+
+std::string help_page(const Integration& g) {
+  fs::path readme = fs::path(g.folder) / "README.md";
+  return fs::exists(readme) ? readme.string() : "docs/integrating-a-game.md, \"Files the user supplies\"";
+}
+
+std::string missing_files_message(const Integration& g, const std::vector<std::string>& missing) {
+  std::string text = "game '" + g.name + "' needs files you supply (see " + help_page(g) + "):";
+  for (const std::string& m : missing) text += "\n  " + m;
+  return text;
 }
 
 std::string expand(const std::string& pattern, int level, const Integration& game, const UserFiles& files) {

@@ -56,6 +56,7 @@ struct Integration {
   // Boot: a built-in EXE or disc (paths resolved), or a user's disc (+ BIOS).
   std::string exe, disc;
   bool user_disc = false, needs_bios = false;
+  std::string bios;  // a BIOS file the manifest names (resolved); --bios overrides it
   std::vector<std::string> disc_sha1;  // accepted SHA-1s of the data track; empty accepts any
   Condition boot_ready;
   psx::u32 boot_max_frames = 600;
@@ -120,6 +121,17 @@ Integration load_integration(const std::string& games_dir, const std::string& na
 // Parses manifest text (`file` names it in errors; `folder` resolves relative paths).
 Integration parse_integration(const std::string& text, const std::string& file, const std::string& folder,
                               const std::string& build_games_dir);
+
+// What the user must supply and has not, one line each ("your PlayStation BIOS image: pass --bios
+// FILE"), so that one message names every missing file: the BIOS and disc the boot needs, the
+// level states a state start needs when `needs_states`, and the maps when `needs_maps` (a
+// simple/local observation).
+std::vector<std::string> missing_user_files(const Integration& g, const UserFiles& files, bool needs_states,
+                                            bool needs_maps);
+// One message naming them all, with where to read about them (help_page()).
+std::string missing_files_message(const Integration& g, const std::vector<std::string>& missing);
+// The integration's README.md when it has one, else the integration guide's section on user files.
+std::string help_page(const Integration& g);
 
 // Expands {level}, {level:02}, {states}, {maps} and {folder} in a path pattern; a pattern not
 // starting with a placeholder is relative to the integration's folder.

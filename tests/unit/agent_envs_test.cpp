@@ -63,9 +63,10 @@ std::vector<std::string> reference(TrainConfig c) {
   std::vector<std::string> out;
   for (std::uint64_t k = 1; k <= c.episodes; ++k) {
     bool test = k % static_cast<std::uint64_t>(c.test_every) == 0;
-    std::vector<float> s = features(env.reset(c.level, rl::episode_seed(c.seed, 0, k - 1)));
+    rl::StepInfo start;
+    std::vector<float> s = features(env.reset(c.level, rl::episode_seed(c.seed, 0, k - 1), &start));
     rl::StepResult r;
-    std::uint64_t frames = 0;
+    std::uint64_t frames = start.game_frames;  // an episode's frames include its level's start
     do {
       int a = agent->act(s, test);
       r = env.step(a);

@@ -155,3 +155,38 @@ TEST(Integration, PathPatternsExpand) {
   EXPECT_EQ(psxrl::rl::expand("levels/level{level:02}.txt", 10, g, files), "/games/kula/levels/level10.txt");
   EXPECT_EQ(psxrl::rl::expand("{level}", 3, g, files), "3");
 }
+
+// bios = { path = ... } names a file beside the manifest (or an absolute one); the user then need
+// not pass --bios, which still overrides it (Env::boot). Anything else is refused by name.
+TEST(Integration, BiosPathIsBesideTheManifest) {
+  Integration g = parse_integration(replace_line(3, "exe = \"mini.exe\"\nbios = { path = \"openbios.bin\" }"),
+                                    "mini/game.toml", "mini", kBuildGames);
+  EXPECT_TRUE(g.needs_bios);
+  EXPECT_EQ(g.bios, (fs::path("mini") / "openbios.bin").string());
+  EXPECT_TRUE(psxrl::rl::missing_user_files(g, {}, true, true).empty());
+  Integration a = parse_integration(replace_line(3, "exe = \"mini.exe\"\nbios = { path = \"/roms/bios.bin\" }"),
+                                    "mini/game.toml", "mini", kBuildGames);
+  EXPECT_EQ(a.bios, "/roms/bios.bin");
+  Integration user = parse_integration(replace_line(3, "exe = \"mini.exe\"\nbios = \"user\""), "mini/game.toml", "mini",
+                                       kBuildGames);
+  ASSERT_EQ(psxrl::rl::missing_user_files(user, {}, true, true).size(), 1u);
+  EXPECT_NE(psxrl::rl::missing_user_files(user, {}, true, true)[0].find("--bios FILE"), std::string::npos);
+  EXPECT_NE(error_of(replace_line(3, "exe = \"mini.exe\"\nbios = \"mine.bin\"")).find(
+                "mini/game.toml:4: [boot] bios: expected \"none\", \"user\" or { path = \"FILE\" }"),
+            std::string::npos);
+  EXPECT_NE(error_of(replace_line(3, "exe = \"mini.exe\"\nbios = { file = \"x.bin\" }"))
+                .find("mini/game.toml:4: [boot.bios] file: unknown field"),
+            std::string::npos);
+}
+
+// An unknown game's message says which folder was searched and how to search another.
+TEST(Integration, UnknownGameSaysWhereGamesAreLookedFor) {
+  try {
+    psxrl::rl::load_integration(kGames, "pong", kBuildGames);
+    FAIL() << "loaded a game that does not exist";
+  } catch (const psx::InputError& e) {
+    std::string m = e.what();
+    EXPECT_NE(m.find("games are looked for in " + kGames), std::string::npos) << m;
+    EXPECT_NE(m.find("PSXRL_GAMES"), std::string::npos) << m;
+  }
+}

@@ -2,7 +2,8 @@
 
 ``psxrl.Console`` is the emulator (the seed's PSXPY surface, synchronous); ``psxrl.Env`` and
 ``psxrl.VecEnv`` (batched) and ``psxrl.AsyncVecEnv`` (EnvPool's send/recv) are the C++ environments; importing the package registers the Gymnasium ids
-``psxrl/Tumble-v0`` and ``psxrl/Kula-v0`` (when Gymnasium is installed). See docs/python.md.
+``psxrl/Tumble-v0``, ``psxrl/Kula-v0`` and ``psxrl/Game-v0`` (any integration: ``make_env``) when
+Gymnasium is installed. See docs/python.md.
 """
 import os as _os
 from pathlib import Path as _Path
@@ -13,7 +14,7 @@ from ._psxrl import (BUTTONS, Console, InputError, QueryError, Recorder, Search,
 
 __all__ = [
     "AsyncVecEnv", "BUTTONS", "Console", "Env", "InputError", "QueryError", "Recorder", "Search", "Session", "StateError", "VecEnv",
-    "WatchEvent", "Window", "display_problem", "episode_seed", "make_vec",
+    "WatchEvent", "Window", "display_problem", "episode_seed", "make_env", "make_vec",
 ]
 
 # `pip install .` puts the integrations and Tumble's program in psxrl/games; a module imported from
@@ -53,9 +54,22 @@ class AsyncVecEnv(_psxrl.AsyncVecEnv):
         super().__init__(num_envs, batch_size, threads, **_with_games(kwargs))
 
 
-def make_vec(id, num_envs, **kwargs):
+def make_env(game, **kwargs):
+    """Any integration as a Gymnasium environment, your own included:
+    ``make_env(game="mygame", games_dir="mygames", bios="bios.bin", obs="visual")`` loads
+    ``mygames/mygame/game.toml`` (``games_dir`` defaults to ``$PSXRL_GAMES``, else the built-in
+    games). Other keywords: ``level``, ``render_mode`` and psxrl.Env's (``disc``, ``states``,
+    ``maps``, ``reward``, ``gamma``, delimiter overrides...). Same as
+    ``gymnasium.make("psxrl/Game-v0", game=..., ...)``."""
+    import gymnasium
+
+    return gymnasium.make("psxrl/Game-v0", game=game, **kwargs)
+
+
+def make_vec(id="psxrl/Game-v0", num_envs=1, **kwargs):
     """A Gymnasium vector environment backed by the C++ VecEnv (one console per environment,
-    stepped on a thread pool, same-step autoreset): ``make_vec("psxrl/Tumble-v0", num_envs=8)``."""
+    stepped on a thread pool, same-step autoreset): ``make_vec("psxrl/Tumble-v0", num_envs=8)``,
+    or for any integration ``make_vec(num_envs=8, game="mygame", games_dir="mygames")``."""
     import gymnasium
 
     return gymnasium.make_vec(id, num_envs=num_envs, vectorization_mode="vector_entry_point", **kwargs)

@@ -1,4 +1,5 @@
-"""Gymnasium environments over psxrl.Env: ``psxrl/Tumble-v0`` and ``psxrl/Kula-v0``.
+"""Gymnasium environments over psxrl.Env: ``psxrl/Tumble-v0``, ``psxrl/Kula-v0`` and
+``psxrl/Game-v0`` (any integration named by ``game=`` and ``games_dir=``).
 
 Each ``step`` is one move of the game, delimited the seed's way in C++ (docs/environments.md);
 observations, rewards, flags and ``info`` are the C++ environment's, unchanged.
@@ -11,6 +12,7 @@ from gymnasium import spaces
 
 TUMBLE_ID = "psxrl/Tumble-v0"
 KULA_ID = "psxrl/Kula-v0"
+GAME_ID = "psxrl/Game-v0"  # any integration, by game= and games_dir= (psxrl.make_env)
 
 
 def observation_space(spaces_list):
@@ -145,6 +147,7 @@ def register_envs():
     for env_id, entry, vector_entry in (
         (TUMBLE_ID, "psxrl.gym_envs:TumbleEnv", "psxrl.vector:TumbleVectorEnv"),
         (KULA_ID, "psxrl.gym_envs:KulaEnv", "psxrl.vector:KulaVectorEnv"),
+        (GAME_ID, "psxrl.gym_envs:PsxrlEnv", "psxrl.vector:PsxrlVectorEnv"),
     ):
         if env_id not in gym.registry:
             gym.register(id=env_id, entry_point=entry, vector_entry_point=vector_entry)

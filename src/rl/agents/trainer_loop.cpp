@@ -37,9 +37,11 @@ void Trainer::begin_episode(size_t i) {
   Slot& s = slots_[i];
   std::uint64_t seed = rl::episode_seed(config_.seed, static_cast<int>(i), s.episodes++);
   s.start = std::chrono::steady_clock::now();
-  if (s.from >= 0) s.state = features(s.env->reset_to(saved_[static_cast<size_t>(s.from)], seed));
-  else s.state = features(s.env->reset(config_.level, seed));
-  s.frames = 0;
+  // An episode's frames are all the console ran for it, its level's start included.
+  rl::StepInfo info;
+  if (s.from >= 0) s.state = features(s.env->reset_to(saved_[static_cast<size_t>(s.from)], seed, &info));
+  else s.state = features(s.env->reset(config_.level, seed, &info));
+  s.frames = info.game_frames;
 }
 
 // Reservoir sampling: the n-th state offered replaces a random kept one with probability

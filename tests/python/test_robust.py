@@ -111,6 +111,14 @@ def test_close_releases_env_and_console():
     assert screen.shape[2] == 3 and int(np.asarray(ram).sum()) >= 0
 
 
+def test_a_folder_where_a_state_file_is_expected_is_named(tmp_path):
+    # It was libstdc++'s "basic_filebuf::underflow error reading the file: Is a directory".
+    c = boot_tumble()
+    with pytest.raises(psxrl.InputError, match="is a folder, expected a file"):
+        c.load_state_file(str(tmp_path))
+    c.run_frame()  # the console is unchanged and runs on
+
+
 def test_gymnasium_refuses_to_step_after_close():
     env = gym.make("psxrl/Tumble-v0")
     env.reset(seed=0)

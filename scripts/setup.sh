@@ -43,11 +43,15 @@ fi
 # Stable-Baselines3 (examples/sb3_train.py, the python_sb3_smoke test) needs PyTorch. Debian's
 # CPU-only python3-torch (the same 1.13 as libtorch-dev) belongs to Debian's /usr/bin/python3, so
 # SB3 lives in .venv-sb3, a virtual environment of that interpreter seeing its Debian packages;
-# SB3 2.4 is the last release that accepts torch 1.13 (2.5 needs torch 2.3).
-if [ ! -x .venv-sb3/bin/python ] || ! .venv-sb3/bin/python -c "import stable_baselines3, torch" 2>/dev/null; then
+# SB3 2.4 is the last release that accepts torch 1.13 (2.5 needs torch 2.3). psxrl.make_vec needs
+# Gymnasium 1.1 (gymnasium.vector.AutoresetMode); SB3 2.4.1 declares gymnasium<1.1 but runs on
+# 1.1.1 (python_sb3_smoke checks it, make_vec included), hence --no-deps. An older .venv-sb3 with
+# Gymnasium 1.0 is upgraded in place.
+if [ ! -x .venv-sb3/bin/python ] ||
+   ! .venv-sb3/bin/python -c "import stable_baselines3, torch; from gymnasium.vector import AutoresetMode" 2>/dev/null; then
   echo "setup: making .venv-sb3 (Stable-Baselines3 over Debian's python3-torch)"
   /usr/bin/python3 -m venv --system-site-packages .venv-sb3
-  .venv-sb3/bin/python -m pip install -q --no-deps "stable-baselines3==2.4.1" "gymnasium==1.0.0" farama-notifications
+  .venv-sb3/bin/python -m pip install -q --no-deps "stable-baselines3==2.4.1" "gymnasium==1.1.1" farama-notifications
 fi
 
 # Ray and RLlib (psxrl.ray, docs/scaling.md; ctest python_ray_tests) also need PyTorch, so they

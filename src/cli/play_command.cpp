@@ -218,6 +218,9 @@ int play_command(const std::vector<std::string>& args) {
   } catch (const psx::InputError& e) {
     std::fprintf(stderr, "psxrl play: %s\n", e.what());
     return kBadInput;
+  } catch (const psx::StateError& e) {  // a corrupt level save state is a bad input file
+    std::fprintf(stderr, "psxrl play: %s\n", e.what());
+    return kBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "psxrl play: %s\n", e.what());
     return kProgramFailed;

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "cli/cli.h"
 #include "cli/game_options.h"
 #include "cli/options.h"
+#include "core/console.h"
 #include "core/input_error.h"
 #include "rl/agents/trainer.h"
 
@@ -148,14 +150,16 @@ int train_command(const std::vector<std::string>& args) {
   auto start = std::chrono::steady_clock::now();
   try {
     trainer->run([&](const agents::TrainStatus& s) { progress(s); });
-  } catch (const psx::InputError& e) {
-    progress.finish();
-    std::fprintf(stderr, "psxrl train: %s\n", e.what());
-    return kBadInput;
   } catch (const std::exception& e) {
     progress.finish();
-    std::fprintf(stderr, "psxrl train: %s (the last checkpoint in %s is intact)\n", e.what(), c.out.c_str());
-    return kProgramFailed;
+    // A bad game file (a corrupt level save state included) is bad input; anything else is the
+    // emulated program's failure. The checkpoint is mentioned only when one was written.
+    const bool bad_input = dynamic_cast<const psx::InputError*>(&e) || dynamic_cast<const psx::StateError*>(&e);
+    const std::string checkpoint = c.out + "/" + agents::kCheckpointFile;
+    std::string kept = std::filesystem::exists(checkpoint) ? " (the last checkpoint, " + checkpoint + ", is intact)"
+                                                           : " (no checkpoint was written yet)";
+    std::fprintf(stderr, "psxrl train: %s%s\n", e.what(), kept.c_str());
+    return bad_input ? kBadInput : kProgramFailed;
   }
   progress.finish();
   print_summary(*trainer, c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),

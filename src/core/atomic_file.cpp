@@ -2,6 +2,7 @@
 #include "core/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -52,9 +53,39 @@ void sync_directory(const std::string& path) {
   ::close(fd);
 }
 
+// The process id in a temporary file's name "<target>.tmp.PID.N", or 0 when the name is not one.
+pid_t temporary_owner(const std::string& name) {
+  const size_t at = name.rfind(".tmp.");
+  if (at == std::string::npos || at == 0) return 0;
+  const size_t dot = name.find('.', at + 5);
+  if (dot == std::string::npos || dot == at + 5 || dot + 1 == name.size()) return 0;
+  const std::string pid = name.substr(at + 5, dot - at - 5), n = name.substr(dot + 1);
+  if (pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos ||
+      n.find_first_not_of("0123456789") != std::string::npos)
+    return 0;
+  return static_cast<pid_t>(std::stol(pid));
+}
+
+// A process killed while writing leaves its temporary file behind, and nothing else would ever
+// remove it: the next writer into that folder removes those of processes that no longer exist
+// (kill(pid, 0) fails with ESRCH). A live process's files, this one's included, are left alone.
+void remove_stale_temporaries(const std::string& path) {
+  std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const pid_t owner = temporary_owner(it->path().filename().string());
+    if (owner <= 0 || owner == ::getpid()) continue;
+    if (::kill(owner, 0) == 0 || errno != ESRCH) continue;
+    std::error_code ignored;  // another writer may remove it first
+    std::filesystem::remove(it->path(), ignored);
+  }
+}
+
 }  // namespace
 
 void write_file_atomically(const std::string& path, const u8* data, size_t size) {
+  remove_stale_temporaries(path);
   std::string tmp;
   const int fd = create_temporary(path, tmp);
   bool ok = write_all(fd, data, size) && ::fsync(fd) == 0;

@@ -15,7 +15,9 @@ namespace psx {
 // two writers, in two threads or two processes, never share one), written, fsync'ed, renamed over
 // `path`, then the directory fsync'ed so the rename itself survives a crash. On failure the
 // temporary file is removed, `path` is untouched, and std::runtime_error names the file and the
-// reason. Two writers racing for one path leave one of the two contents, whole.
+// reason. Two writers racing for one path leave one of the two contents, whole. Temporary files
+// that killed processes left in the folder ("*.tmp.PID.N" whose PID no longer runs) are removed
+// first, so an interrupted run leaves no litter behind for good.
 void write_file_atomically(const std::string& path, const std::vector<u8>& data);
 void write_file_atomically(const std::string& path, const u8* data, size_t size);
 

@@ -76,6 +76,7 @@ Console::Console()
 Console::~Console() = default;
 
 void Console::set_cpu_mode(CpuMode mode) {
+  ThreadOwner::Use use(owner_);
   const bool recompile = mode == CpuMode::Recompiler;
   // The code pages saw no RAM write while the interpreter ran, and native code trusts a cached
   // line whose tag matches unless a write marked it stale (ICache::kStale).
@@ -87,6 +88,7 @@ void Console::set_cpu_mode(CpuMode mode) {
 void Console::load_bios(const std::string& path) { load_bios_image(read_file(path), path); }
 
 void Console::load_bios_image(const std::vector<u8>& image, const std::string& name) {
+  ThreadOwner::Use use(owner_);
   if (image.size() != Bus::kBiosSize)
     throw InputError::whole(name, "a BIOS image must be exactly 524288 bytes (512 KiB), this file has " +
                                       std::to_string(image.size()));
@@ -97,6 +99,7 @@ void Console::load_bios_image(const std::vector<u8>& image, const std::string& n
 }
 
 void Console::boot_bios() {
+  ThreadOwner::Use use(owner_);
   hle_mode_ = false;
   // An EXE from an earlier boot_exe() must not be side-loaded into this boot (e.g. a disc's).
   pending_exe_.reset();
@@ -107,6 +110,7 @@ void Console::boot_bios() {
 void Console::boot_exe(const std::string& path) { boot_exe_image(read_file(path), path); }
 
 void Console::boot_exe_image(const std::vector<u8>& file, const std::string& name) {
+  ThreadOwner::Use use(owner_);
   PsxExe exe = PsxExe::parse(file, name);
   program_hash_ = fnv1a(file.data(), file.size());
   if (bus_.has_bios()) {
@@ -138,11 +142,13 @@ u64 disc_identity(disc::Disc& d) {
 }  // namespace
 
 void Console::insert_disc(const std::string& path) {
+  ThreadOwner::Use use(owner_);
   cdrom_.insert_disc(disc::Disc::open(path));
   program_hash_ = disc_identity(*cdrom_.disc());
 }
 
 void Console::boot_disc() {
+  ThreadOwner::Use use(owner_);
   if (!cdrom_.disc()) throw InputError("no disc inserted to boot from");
   if (bus_.has_bios()) {
     boot_bios();
@@ -189,6 +195,7 @@ void Console::on_reach(u32 pc) {
 }
 
 void Console::run_frame() {
+  ThreadOwner::Use use(owner_);
   frame_done_ = false;
   while (!frame_done_ && !stopped()) {
     cpu_.run();
@@ -197,10 +204,12 @@ void Console::run_frame() {
 }
 
 void Console::run_frames(u64 n) {
+  ThreadOwner::Use use(owner_);
   for (u64 i = 0; i < n && !stopped(); ++i) run_frame();
 }
 
 void Console::run_cycles(Cycles n) {
+  ThreadOwner::Use use(owner_);
   limit_reached_ = false;
   sched_.schedule(limit_event_, n);
   while (!limit_reached_ && !stopped()) {
@@ -211,6 +220,7 @@ void Console::run_cycles(Cycles n) {
 }
 
 bool Console::run_until(const std::function<bool()>& done, u64 max_frames) {
+  ThreadOwner::Use use(owner_);
   for (u64 i = 0; i < max_frames && !stopped(); ++i) {
     if (done()) return true;
     run_frame();

@@ -30,10 +30,12 @@ u16 Console::read16(u32 addr) const {
 }
 u32 Console::read32(u32 addr) const { return load_le32(host_pointer(addr, 4)); }
 void Console::write16(u32 addr, u16 v) {
+  ThreadOwner::Use use(owner_);
   store_le16(host_pointer(addr, 2), v);
   host_wrote(addr, 2);
 }
 void Console::write32(u32 addr, u32 v) {
+  ThreadOwner::Use use(owner_);
   store_le32(host_pointer(addr, 4), v);
   host_wrote(addr, 4);
 }
@@ -80,6 +82,7 @@ void Console::unwatch(const std::string& key) {
 }
 
 std::vector<u8> Console::save_state(bool compress) {
+  ThreadOwner::Use use(owner_);
   StateIO w;
   do_state(w);
   w.finish();
@@ -91,6 +94,7 @@ std::vector<u8> Console::save_state(bool compress) {
 }
 
 void Console::load_state(const std::vector<u8>& blob) {
+  ThreadOwner::Use use(owner_);
   u32 format = 0;
   std::vector<u8> payload = unpack_save_state(blob.data(), blob.size(), bios_hash_, program_hash_, &format);
   // A payload can still fail part-way (a block's section or range check): keep the current
@@ -117,6 +121,7 @@ void Console::drop_stale_audio() {
 }
 
 void Console::snapshot(Snapshot& out) {
+  ThreadOwner::Use use(owner_);
   StateIO w;
   do_state(w);
   w.finish();
@@ -130,6 +135,7 @@ void Console::snapshot(Snapshot& out) {
 // The payload was written by do_state of a console with this BIOS and program, so it reads back
 // completely (the section checks still guard against a snapshot that is not one).
 void Console::restore(const Snapshot& snap) {
+  ThreadOwner::Use use(owner_);
   if (snap.empty()) throw StateError("snapshot: empty (nothing was taken into it)");
   if (snap.bios_hash_ != bios_hash_ || snap.program_hash_ != program_hash_)
     throw StateError("snapshot: taken with a different BIOS, disc or EXE than the one loaded");

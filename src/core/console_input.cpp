@@ -13,6 +13,7 @@ int Console::port_index(int port) {
 }
 
 void Console::plug_pad(int port, PadType type) {
+  ThreadOwner::Use use(owner_);
   int i = port_index(port);
   std::unique_ptr<Pad> pad;
   if (type == PadType::Digital) pad = std::make_unique<DigitalPad>();
@@ -22,6 +23,7 @@ void Console::plug_pad(int port, PadType type) {
 }
 
 void Console::insert_memory_card(int port, const std::string& path) {
+  ThreadOwner::Use use(owner_);
   int i = port_index(port);
   try {
     sio0_.attach_memory_card(i, std::make_unique<MemoryCard>(path));
@@ -31,6 +33,7 @@ void Console::insert_memory_card(int port, const std::string& path) {
 }
 
 void Console::set_buttons(int port, u16 pressed) {
+  ThreadOwner::Use use(owner_);
   int i = port_index(port);
   sio0_.set_buttons(i, pressed);
   for (u32 b = 0; b < 16; ++b)
@@ -38,11 +41,13 @@ void Console::set_buttons(int port, u16 pressed) {
 }
 
 void Console::press(int port, u16 buttons) {
+  ThreadOwner::Use use(owner_);
   int i = port_index(port);
   if (Pad* pad = sio0_.pad(i)) sio0_.set_buttons(i, pad->buttons() | buttons);
 }
 
 void Console::release(int port, u16 buttons) {
+  ThreadOwner::Use use(owner_);
   int i = port_index(port);
   if (Pad* pad = sio0_.pad(i)) sio0_.set_buttons(i, pad->buttons() & ~buttons);
   for (u32 b = 0; b < 16; ++b)
@@ -50,6 +55,7 @@ void Console::release(int port, u16 buttons) {
 }
 
 void Console::press_for(int port, u16 buttons, u32 frames) {
+  ThreadOwner::Use use(owner_);
   press(port, buttons);
   int i = port_index(port);
   for (u32 b = 0; b < 16; ++b)

@@ -2,6 +2,7 @@
 // offset or line) and what was expected, so front ends can print it and exit with code 2.
 #pragma once
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -23,8 +24,12 @@ class InputError : public std::runtime_error {
   static InputError whole(const std::string& file, const std::string& what) { return InputError(file + ": " + what); }
 };
 
-// Reads a whole file; a missing or unreadable file is an InputError.
+// Reads a whole file; a missing or unreadable file, or a folder, is an InputError.
 inline std::vector<uint8_t> read_file(const std::string& path) {
+  // A directory opens as a stream on Linux and fails only at the first read, with libstdc++'s
+  // "basic_filebuf::underflow" message: say what is wrong instead.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError::whole(path, "is a folder, expected a file");
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError::whole(path, "cannot open file");
   std::vector<uint8_t> data((std::istreambuf_iterator<char>(f)), {});

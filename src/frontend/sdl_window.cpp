@@ -47,6 +47,15 @@ void SdlWindow::open(const std::string& title, WindowSize size) {
   window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, size.width, size.height,
                              SDL_WINDOW_RESIZABLE);
   if (!window_) fail("cannot open a window");
+  // With DISPLAY naming a server that is not there (or refuses us), SDL falls back to a driver
+  // that shows nothing: ask which one it chose. A driver named in SDL_VIDEODRIVER is the user's.
+  const char* driver = SDL_GetCurrentVideoDriver();
+  const std::string name = driver ? driver : "";
+  if (!env_set("SDL_VIDEODRIVER") && (name == "offscreen" || name == "dummy" || name.empty())) {
+    const char* display = std::getenv("DISPLAY");
+    throw std::runtime_error("no display can show a window (DISPLAY=" + std::string(display ? display : "") +
+                             " is unreachable; SDL fell back to its invisible '" + name + "' video driver)");
+  }
   renderer_ = SDL_CreateRenderer(window_, -1, 0);
   if (!renderer_) fail("cannot create a renderer for the window");
   SDL_RenderSetLogicalSize(renderer_, size.width, size.height);

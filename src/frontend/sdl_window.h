@@ -34,7 +34,8 @@ struct WindowInput {
 
 class SdlWindow {
  public:
-  // Opens the window; throws std::runtime_error with SDL's reason when it cannot.
+  // Opens the window; throws std::runtime_error with SDL's reason when it cannot, or when SDL
+  // could open it only on an invisible driver ("offscreen", "dummy") it fell back to by itself.
   SdlWindow(const std::string& title, WindowSize size);
   ~SdlWindow();
   SdlWindow(const SdlWindow&) = delete;

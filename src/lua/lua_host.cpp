@@ -4,6 +4,7 @@
 
 #include <lua.hpp>
 
+#include <cstdlib>
 #include <stdexcept>
 
 #include "core/input_error.h"
@@ -22,7 +23,12 @@ void budget_hook(lua_State* L, lua_Debug*) {
   lua_pop(L, 1);
   lua_pushinteger(L, left);
   lua_setfield(L, LUA_REGISTRYINDEX, kBudgetKey);
-  if (left < 0) luaL_error(L, "the script ran too long (instruction budget exhausted; an endless loop?)");
+  if (left < 0) {
+    // luaL_error would name the caller's line (level 1); the loop is the function running here.
+    lua_pushfstring(L, "%s the script ran too long (instruction budget exhausted; an endless loop?)",
+                    Host::where(L).c_str());
+    lua_error(L);
+  }
 }
 
 int call_function(lua_State* L) {
@@ -44,7 +50,9 @@ int sandboxed_require(lua_State* L) {
     return luaL_error(L, "require('%s'): module names are letters, digits and '_' (files in the integration's folder)",
                       name.c_str());
   std::string path = std::string(lua_tostring(L, lua_upvalueindex(1))) + "/" + name + ".lua";
-  if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK) return lua_error(L);
+  int status = luaL_loadfilex(L, path.c_str(), "t");
+  if (status == LUA_ERRFILE) return luaL_error(L, "require('%s'): no module file %s", name.c_str(), path.c_str());
+  if (status != LUA_OK) return lua_error(L);
   lua_call(L, 0, 1);
   return 1;
 }
@@ -64,9 +72,49 @@ int sandboxed_load(lua_State* L) {
 
 }  // namespace
 
-Host::Host(std::string folder, long instruction_budget) : folder_(std::move(folder)), budget_(instruction_budget) {
-  L_ = luaL_newstate();
+// Lua's allocator contract (lua_Alloc, Lua 5.4 manual 4.6): ptr NULL means old_size is a type
+// tag, not a size; new_size 0 frees. Growth past the limit is refused (Lua then raises its memory
+// error); shrinking and freeing never fail.
+void* Host::allocate(void* ud, void* ptr, std::size_t old_size, std::size_t new_size) {
+  auto* m = static_cast<Memory*>(ud);
+  if (!ptr) old_size = 0;
+  if (new_size == 0) {
+    std::free(ptr);
+    m->used -= old_size;
+    return nullptr;
+  }
+  if (new_size > old_size && m->used - old_size + new_size > m->limit) {
+    // Lua's memory error carries no position, so it is taken now. lua_getinfo's "Sl" reads the
+    // call-info list, the running prototype and its saved pc only, which the VM keeps current
+    // around everything that allocates (Lua 5.4 lvm.c Protect/savepc, ldo.c growing the stack
+    // into a new block before switching to it).
+    if (m->L && m->refused_at.empty()) m->refused_at = where(m->L);
+    return nullptr;
+  }
+  void* grown = std::realloc(ptr, new_size);
+  if (!grown) return nullptr;
+  m->used = m->used - old_size + new_size;
+  // Growth after a refusal: Lua collected garbage, tried again and the script goes on.
+  if (new_size > old_size && !m->refused_at.empty()) m->refused_at.clear();
+  return grown;
+}
+
+std::string Host::where(lua_State* L) {
+  lua_Debug ar;
+  for (int level = 0; lua_getstack(L, level, &ar); ++level) {
+    if (!lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0) continue;  // C functions have no line
+    const char* file = ar.source[0] == '@' || ar.source[0] == '=' ? ar.source + 1 : ar.short_src;
+    return std::string(file) + ":" + std::to_string(ar.currentline) + ":";
+  }
+  return "";
+}
+
+Host::Host(std::string folder, long instruction_budget, std::size_t memory_limit)
+    : folder_(std::move(folder)), budget_(instruction_budget) {
+  memory_.limit = memory_limit;
+  L_ = lua_newstate(&Host::allocate, &memory_);
   if (!L_) throw std::runtime_error("cannot create a Lua state (out of memory)");
+  memory_.L = L_;
   const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},      {LUA_TABLIBNAME, luaopen_table},
                            {LUA_STRLIBNAME, luaopen_string}, {LUA_MATHLIBNAME, luaopen_math},
                            {LUA_UTF8LIBNAME, luaopen_utf8}};
@@ -94,11 +142,22 @@ void Host::check(int status, const std::string& what) {
   if (status == LUA_OK) return;
   std::string msg = lua_isstring(L_, -1) ? lua_tostring(L_, -1) : "error object is not a string";
   lua_pop(L_, 1);
+  // The allocator's refusal: Lua's own memory error, or lauxlib's buffers, which raise "not
+  // enough memory" as an ordinary error.
+  if (status == LUA_ERRMEM || (!memory_.refused_at.empty() && msg == "not enough memory")) {
+    msg = memory_.refused_at + (memory_.refused_at.empty() ? "" : " ") + "memory limit (" +
+          std::to_string(memory_.limit >> 20) + " MiB) exceeded";
+    // What the failed call built is garbage now; collect it so the next call starts with room
+    // (lauxlib's buffers allocate without Lua's emergency collection).
+    lua_gc(L_, LUA_GCCOLLECT);
+  }
+  memory_.refused_at.clear();
   // Lua's messages start with "file:line:" already; say which step failed after it.
   throw psx::InputError(msg + (what.empty() ? "" : " (in " + what + ")"));
 }
 
 void Host::call_prepared(int nargs, int nresults, const std::string& name) {
+  memory_.refused_at.clear();
   lua_pushinteger(L_, budget_);
   lua_setfield(L_, LUA_REGISTRYINDEX, kBudgetKey);
   check(lua_pcall(L_, nargs, nresults, 0), name);
@@ -149,8 +208,10 @@ std::vector<std::optional<double>> Host::call(const std::string& name, const std
     int index = -results + i;
     if (lua_isnil(L_, index)) continue;
     if (!lua_isnumber(L_, index)) {
+      std::string found = luaL_typename(L_, index);
       lua_pop(L_, results);
-      throw psx::InputError(name + "(): result " + std::to_string(i + 1) + " must be a number or nil");
+      throw psx::InputError(defined_at(name) + name + "(): result " + std::to_string(i + 1) +
+                            " must be a number or nil, found a " + found);
     }
     out[i] = lua_tonumber(L_, index);
   }
@@ -166,8 +227,20 @@ std::optional<std::string> Host::call_string(const std::string& name, const std:
   if (lua_type(L_, -1) == LUA_TSTRING) out = lua_tostring(L_, -1);
   bool bad = !lua_isnil(L_, -1) && !out;
   lua_pop(L_, 1);
-  if (bad) throw psx::InputError(name + "(): must return a string or nil");
+  if (bad) throw psx::InputError(defined_at(name) + name + "(): must return a string or nil");
   return out;
+}
+
+std::string Host::defined_at(const std::string& name) {
+  lua_Debug ar;
+  if (lua_getglobal(L_, name.c_str()) != LUA_TFUNCTION) {
+    lua_pop(L_, 1);
+    return "";
+  }
+  lua_getinfo(L_, ">S", &ar);  // pops the function
+  if (ar.linedefined <= 0) return "";
+  const char* file = ar.source[0] == '@' || ar.source[0] == '=' ? ar.source + 1 : ar.short_src;
+  return std::string(file) + ":" + std::to_string(ar.linedefined) + ": ";
 }
 
 double Host::number_arg(lua_State* L, int index) { return luaL_checknumber(L, index); }

@@ -2,9 +2,12 @@
 // shared across threads). Scripts get the base, string, table, math and utf8 libraries only: no
 // os, io, debug, bytecode loading or file access, and `require` reads only `<name>.lua` from the
 // integration's own folder. Every call has an instruction budget, so a script that loops forever
-// fails with a message instead of hanging the environment. Script errors become psx::InputError
+// fails with a message instead of hanging the environment, and every state has a memory limit
+// (an allocator that refuses past it), so a script that allocates without end fails the same way
+// instead of taking the host's memory. Script errors become psx::InputError
 // carrying Lua's own "file:line: message", so front ends report them like any bad input file.
 #pragma once
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -22,8 +25,13 @@ class Host {
   // into a Lua error at the calling line.
   using Function = std::function<int(lua_State*)>;
 
-  // `folder` is where `require` looks; the instruction budget is per call from C++.
-  explicit Host(std::string folder, long instruction_budget = 50'000'000);
+  static constexpr long kDefaultBudget = 50'000'000;                 // VM instructions per call
+  static constexpr std::size_t kDefaultMemoryLimit = 32u << 20;  // bytes; a manifest may change it
+
+  // `folder` is where `require` looks; the instruction budget is per call from C++; the memory
+  // limit is the most the state may hold at once, in bytes.
+  explicit Host(std::string folder, long instruction_budget = kDefaultBudget,
+                std::size_t memory_limit = kDefaultMemoryLimit);
   ~Host();
   Host(const Host&) = delete;
   Host& operator=(const Host&) = delete;
@@ -48,11 +56,25 @@ class Host {
   // Argument helpers for Functions: a clear Lua error names the argument when it is wrong.
   static double number_arg(lua_State* L, int index);
   static std::string string_arg(lua_State* L, int index);
+  // "file:line:" of the innermost Lua function running (the script's line, not a C caller's).
+  static std::string where(lua_State* L);
 
  private:
   void call_prepared(int nargs, int nresults, const std::string& name);
   void check(int status, const std::string& what);
+  // "file:line: " where global function `name` is defined ("" when it is not a Lua function).
+  std::string defined_at(const std::string& name);
 
+  // What the allocator counts (lua_host.cpp): bytes held, the limit, and where the script was
+  // when it refused (Lua's own out-of-memory error carries no position).
+  struct Memory {
+    std::size_t used = 0, limit = 0;
+    lua_State* L = nullptr;
+    std::string refused_at;
+  };
+  static void* allocate(void* ud, void* ptr, std::size_t old_size, std::size_t new_size);
+
+  Memory memory_;
   lua_State* L_ = nullptr;
   std::string folder_;
   long budget_;

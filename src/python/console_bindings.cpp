@@ -3,6 +3,8 @@
 // call", a screenshot is a view of the frame buffer, memory listeners are watches whose events are
 // taken after a run call. Every call that runs the emulator releases the GIL, so Python threads
 // run different consoles in parallel (one console must still be used by one thread at a time).
+#include <atomic>
+#include <memory>
 #include <string>
 
 #include <pybind11/stl.h>
@@ -17,12 +19,14 @@ namespace psxrl::python {
 namespace {
 
 // The console plus what the module collects for Python: text the program prints, gathered while
-// the GIL is released instead of calling back into Python from inside a run call.
+// the GIL is released instead of calling back into Python from inside a run call. close() drops
+// the console; arrays that view its buffers hold their own reference (keeper()), so they stay
+// valid until they go too.
 struct PyConsole {
-  psx::Console console;
+  std::shared_ptr<psx::Console> owned = std::make_shared<psx::Console>();
   std::string tty;
   PyConsole(const std::string& renderer, psx::u32 scale) {
-    console.on_tty = [this](char c) { tty.push_back(c); };
+    owned->on_tty = [this](char c) { tty.push_back(c); };
     if (renderer != "software" && renderer != "gl")
       throw py::value_error("renderer: 'software' or 'gl', not '" + renderer + "'");
     if (scale < 1 || scale > psx::Console::kMaxRenderScale)
@@ -32,9 +36,22 @@ struct PyConsole {
       return;
     }
     std::string error;
-    if (!console.use_gl_renderer(scale, error))
+    if (!owned->use_gl_renderer(scale, error))
       throw std::runtime_error("renderer 'gl': OpenGL is not available: " + error);
   }
+  // The console for one call: the reference keeps it alive through the call even if another
+  // thread closes it meanwhile (the pointer is read and reset atomically: run calls release the GIL).
+  std::shared_ptr<psx::Console> get() const {
+    std::shared_ptr<psx::Console> c = std::atomic_load(&owned);
+    if (!c) throw std::runtime_error("Console is closed");
+    return c;
+  }
+  // The base object of an array viewing the console's memory: keeps the console alive.
+  py::capsule keeper() const {
+    auto* ref = new std::shared_ptr<psx::Console>(get());
+    return py::capsule(ref, [](void* p) { delete static_cast<std::shared_ptr<psx::Console>*>(p); });
+  }
+  void close() { std::atomic_store(&owned, std::shared_ptr<psx::Console>()); }
 };
 
 // Buttons from Python: a bit mask (psxrl.BUTTONS values), a name ("cross"), names joined by "+"
@@ -129,28 +146,32 @@ void bind_console(py::module_& m) {
       .def(py::init<const std::string&, psx::u32>(), py::arg("renderer") = "software", py::arg("scale") = 1,
            "renderer='gl' draws with OpenGL on OSMesa at `scale` (1 to 8) times the resolution: get_screen() and "
            "screenshots are that much larger; vram() and states stay native (docs/renderer.md).")
+      .def("close", &PyConsole::close,
+           "Releases the console now (arrays viewing its memory keep their part alive); any later call raises "
+           "RuntimeError('Console is closed'). Closing twice is allowed.")
+      .def_property_readonly("closed", [](const PyConsole& c) { return !std::atomic_load(&c.owned); })
       // Booting (these run the BIOS or read files: the GIL is released).
-      .def("load_bios", [](PyConsole& c, const std::string& path) { c.console.load_bios(path); },
+      .def("load_bios", [](PyConsole& c, const std::string& path) { c.get()->load_bios(path); },
            py::arg("path"), py::call_guard<R>())
-      .def_property_readonly("has_bios", [](PyConsole& c) { return c.console.has_bios(); })
-      .def("boot_exe", [](PyConsole& c, const std::string& path) { c.console.boot_exe(path); }, py::arg("path"),
+      .def_property_readonly("has_bios", [](PyConsole& c) { return c.get()->has_bios(); })
+      .def("boot_exe", [](PyConsole& c, const std::string& path) { c.get()->boot_exe(path); }, py::arg("path"),
            py::call_guard<R>())
-      .def("boot_bios", [](PyConsole& c) { c.console.boot_bios(); }, py::call_guard<R>())
-      .def("insert_disc", [](PyConsole& c, const std::string& path) { c.console.insert_disc(path); },
+      .def("boot_bios", [](PyConsole& c) { c.get()->boot_bios(); }, py::call_guard<R>())
+      .def("insert_disc", [](PyConsole& c, const std::string& path) { c.get()->insert_disc(path); },
            py::arg("path"), py::call_guard<R>())
-      .def("boot_disc", [](PyConsole& c) { c.console.boot_disc(); }, py::call_guard<R>())
+      .def("boot_disc", [](PyConsole& c) { c.get()->boot_disc(); }, py::call_guard<R>())
       // Running.
-      .def("run_frame", [](PyConsole& c) { c.console.run_frame(); }, py::call_guard<R>())
-      .def("run_frames", [](PyConsole& c, psx::u64 n) { c.console.run_frames(n); }, py::arg("n"),
+      .def("run_frame", [](PyConsole& c) { c.get()->run_frame(); }, py::call_guard<R>())
+      .def("run_frames", [](PyConsole& c, psx::u64 n) { c.get()->run_frames(n); }, py::arg("n"),
            py::call_guard<R>())
-      .def("run_cycles", [](PyConsole& c, psx::u64 n) { c.console.run_cycles(n); }, py::arg("n"),
+      .def("run_cycles", [](PyConsole& c, psx::u64 n) { c.get()->run_cycles(n); }, py::arg("n"),
            py::call_guard<R>())
       .def(
           "run_until",
           [](PyConsole& c, const py::function& done, psx::u64 max_frames) {
             // The condition is Python: it takes the GIL back for each check, between frames.
             R release;
-            return c.console.run_until(
+            return c.get()->run_until(
                 [&] {
                   py::gil_scoped_acquire acquire;
                   return PyObject_IsTrue(done().ptr()) == 1;
@@ -162,36 +183,36 @@ void bind_console(py::module_& m) {
           "run_until_equal",
           [](PyConsole& c, psx::u32 address, psx::u32 value, psx::u64 max_frames, int width) {
             if (width != 1 && width != 2 && width != 4) throw py::value_error("width must be 1, 2 or 4");
-            c.console.read8(address);  // a bad address fails here, before running
+            c.get()->read8(address);  // a bad address fails here, before running
             R release;
-            return c.console.run_until(
+            return c.get()->run_until(
                 [&] {
-                  psx::u32 v = width == 1 ? c.console.read8(address)
-                               : width == 2 ? c.console.read16(address)
-                                            : c.console.read32(address);
+                  psx::u32 v = width == 1 ? c.get()->read8(address)
+                               : width == 2 ? c.get()->read16(address)
+                                            : c.get()->read32(address);
                   return v == value;
                 },
                 max_frames);
           },
           py::arg("address"), py::arg("value"), py::arg("max_frames"), py::arg("width") = 4)
-      .def_property_readonly("stopped", [](PyConsole& c) { return c.console.stopped(); })
-      .def_property_readonly("exit_code", [](PyConsole& c) { return c.console.exit_code(); })
-      .def_property_readonly("fatal_error", [](PyConsole& c) { return c.console.fatal_error(); })
-      .def_property_readonly("frames", [](PyConsole& c) { return c.console.frames(); })
-      .def_property_readonly("cycles", [](PyConsole& c) { return c.console.cycles(); })
-      .def_property_readonly("instructions", [](PyConsole& c) { return c.console.instructions(); })
+      .def_property_readonly("stopped", [](PyConsole& c) { return c.get()->stopped(); })
+      .def_property_readonly("exit_code", [](PyConsole& c) { return c.get()->exit_code(); })
+      .def_property_readonly("fatal_error", [](PyConsole& c) { return c.get()->fatal_error(); })
+      .def_property_readonly("frames", [](PyConsole& c) { return c.get()->frames(); })
+      .def_property_readonly("cycles", [](PyConsole& c) { return c.get()->cycles(); })
+      .def_property_readonly("instructions", [](PyConsole& c) { return c.get()->instructions(); })
       .def("take_tty", [](PyConsole& c) { return std::exchange(c.tty, {}); })
       // Input.
-      .def("set_buttons", [](PyConsole& c, py::handle b, int port) { c.console.set_buttons(port, button_mask(b)); },
+      .def("set_buttons", [](PyConsole& c, py::handle b, int port) { c.get()->set_buttons(port, button_mask(b)); },
            py::arg("buttons"), py::arg("port") = 1,
            "Sets exactly these buttons down (the rest up) until changed; runs no frames.")
-      .def("press", [](PyConsole& c, py::handle b, int port) { c.console.press(port, button_mask(b)); },
+      .def("press", [](PyConsole& c, py::handle b, int port) { c.get()->press(port, button_mask(b)); },
            py::arg("buttons"), py::arg("port") = 1, "Puts these buttons down until release(); runs no frames.")
-      .def("release", [](PyConsole& c, py::handle b, int port) { c.console.release(port, button_mask(b)); },
+      .def("release", [](PyConsole& c, py::handle b, int port) { c.get()->release(port, button_mask(b)); },
            py::arg("buttons"), py::arg("port") = 1, "Lets these buttons up; runs no frames.")
       .def(
           "press_for",
-          [](PyConsole& c, py::handle b, psx::u32 frames, int port) { c.console.press_for(port, button_mask(b), frames); },
+          [](PyConsole& c, py::handle b, psx::u32 frames, int port) { c.get()->press_for(port, button_mask(b), frames); },
           py::arg("buttons"), py::arg("frames"), py::arg("port") = 1,
           "Puts the buttons down now and lets them up after the next `frames` frames end. It runs no\n"
           "frames itself (run_frames does) and returns at once. A press_for of a button still down\n"
@@ -205,39 +226,39 @@ void bind_console(py::module_& m) {
             a.left_y = left_y;
             a.right_x = right_x;
             a.right_y = right_y;
-            c.console.set_axes(port, a);
+            c.get()->set_axes(port, a);
           },
           py::arg("left_x") = 0x80, py::arg("left_y") = 0x80, py::arg("right_x") = 0x80, py::arg("right_y") = 0x80,
           py::arg("port") = 1)
       .def(
           "rumble",
           [](PyConsole& c, int port) {
-            psx::Rumble r = c.console.rumble(port);
+            psx::Rumble r = c.get()->rumble(port);
             return py::make_tuple(r.small, r.large);
           },
           py::arg("port") = 1)
-      .def("plug_pad", [](PyConsole& c, int port, const std::string& type) { c.console.plug_pad(port, pad_type(type)); },
+      .def("plug_pad", [](PyConsole& c, int port, const std::string& type) { c.get()->plug_pad(port, pad_type(type)); },
            py::arg("port"), py::arg("type"))
       .def("insert_memory_card",
-           [](PyConsole& c, int port, const std::string& path) { c.console.insert_memory_card(port, path); },
+           [](PyConsole& c, int port, const std::string& path) { c.get()->insert_memory_card(port, path); },
            py::arg("port"), py::arg("path"))
       // Memory.
-      .def("read8", [](PyConsole& c, psx::u32 a) { return c.console.read8(a); }, py::arg("address"))
-      .def("read16", [](PyConsole& c, psx::u32 a) { return c.console.read16(a); }, py::arg("address"))
-      .def("read32", [](PyConsole& c, psx::u32 a) { return c.console.read32(a); }, py::arg("address"))
-      .def("write8", [](PyConsole& c, psx::u32 a, psx::u8 v) { c.console.write8(a, v); }, py::arg("address"),
+      .def("read8", [](PyConsole& c, psx::u32 a) { return c.get()->read8(a); }, py::arg("address"))
+      .def("read16", [](PyConsole& c, psx::u32 a) { return c.get()->read16(a); }, py::arg("address"))
+      .def("read32", [](PyConsole& c, psx::u32 a) { return c.get()->read32(a); }, py::arg("address"))
+      .def("write8", [](PyConsole& c, psx::u32 a, psx::u8 v) { c.get()->write8(a, v); }, py::arg("address"),
            py::arg("value"))
-      .def("write_byte", [](PyConsole& c, psx::u32 a, psx::u8 v) { c.console.write8(a, v); }, py::arg("address"),
+      .def("write_byte", [](PyConsole& c, psx::u32 a, psx::u8 v) { c.get()->write8(a, v); }, py::arg("address"),
            py::arg("value"))
-      .def("write16", [](PyConsole& c, psx::u32 a, psx::u16 v) { c.console.write16(a, v); }, py::arg("address"),
+      .def("write16", [](PyConsole& c, psx::u32 a, psx::u16 v) { c.get()->write16(a, v); }, py::arg("address"),
            py::arg("value"))
-      .def("write32", [](PyConsole& c, psx::u32 a, psx::u32 v) { c.console.write32(a, v); }, py::arg("address"),
+      .def("write32", [](PyConsole& c, psx::u32 a, psx::u32 v) { c.get()->write32(a, v); }, py::arg("address"),
            py::arg("value"))
       .def(
           "read_bytes",
           [](PyConsole& c, psx::u32 address, psx::u32 length) {
             std::string out(length, '\0');
-            for (psx::u32 i = 0; i < length; ++i) out[i] = static_cast<char>(c.console.read8(address + i));
+            for (psx::u32 i = 0; i < length; ++i) out[i] = static_cast<char>(c.get()->read8(address + i));
             return py::bytes(out);
           },
           py::arg("address"), py::arg("length"))
@@ -245,31 +266,31 @@ void bind_console(py::module_& m) {
           "write_bytes",
           [](PyConsole& c, psx::u32 address, const py::buffer& data) {
             std::vector<psx::u8> bytes = bytes_of(data);
-            for (size_t i = 0; i < bytes.size(); ++i) c.console.write8(address + static_cast<psx::u32>(i), bytes[i]);
+            for (size_t i = 0; i < bytes.size(); ++i) c.get()->write8(address + static_cast<psx::u32>(i), bytes[i]);
           },
           py::arg("address"), py::arg("data"))
       .def(
           "ram",
           [](py::object self) {
-            std::span<psx::u8> ram = self.cast<PyConsole&>().console.ram();
-            return array_of<psx::u8>({static_cast<py::ssize_t>(ram.size())}, ram.data(), self);
+            std::span<psx::u8> ram = self.cast<PyConsole&>().get()->ram();
+            return array_of<psx::u8>({static_cast<py::ssize_t>(ram.size())}, ram.data(), self.cast<PyConsole&>().keeper());
           },
           "The 2 MiB of main RAM as a writable uint8 view (no copy); writes are not reported to watches "
           "or to the recompiler, whose compiled blocks go on running the code they were compiled from "
           "(write code with write_bytes). Nor are they seen by snapshots, so once this view is taken every "
           "restore copies RAM back whole instead of only the pages written.")
-      .def("dump_ram", [](PyConsole& c, const std::string& path) { c.console.dump_ram(path); }, py::arg("path"),
+      .def("dump_ram", [](PyConsole& c, const std::string& path) { c.get()->dump_ram(path); }, py::arg("path"),
            py::call_guard<R>())
       // Memory watches (the seed's listeners).
       .def("watch",
            [](PyConsole& c, const std::string& key, psx::u32 address, psx::u32 length, bool fresh_only,
-              psx::u32 flow_limit_frames) { c.console.watch(key, address, length, fresh_only, flow_limit_frames); },
+              psx::u32 flow_limit_frames) { c.get()->watch(key, address, length, fresh_only, flow_limit_frames); },
            py::arg("key"), py::arg("address"), py::arg("length"), py::arg("fresh_only") = false,
            py::arg("flow_limit_frames") = 0)
-      .def("unwatch", [](PyConsole& c, const std::string& key) { c.console.unwatch(key); }, py::arg("key"))
-      .def("sleep_watch", [](PyConsole& c, const std::string& key) { c.console.sleep_watch(key); }, py::arg("key"))
-      .def("wake_watch", [](PyConsole& c, const std::string& key) { c.console.wake_watch(key); }, py::arg("key"))
-      .def("take_watch_events", [](PyConsole& c) { return c.console.take_watch_events(); })
+      .def("unwatch", [](PyConsole& c, const std::string& key) { c.get()->unwatch(key); }, py::arg("key"))
+      .def("sleep_watch", [](PyConsole& c, const std::string& key) { c.get()->sleep_watch(key); }, py::arg("key"))
+      .def("wake_watch", [](PyConsole& c, const std::string& key) { c.get()->wake_watch(key); }, py::arg("key"))
+      .def("take_watch_events", [](PyConsole& c) { return c.get()->take_watch_events(); })
       // Save states.
       .def(
           "save_state",
@@ -277,7 +298,7 @@ void bind_console(py::module_& m) {
             std::vector<psx::u8> blob;
             {
               R release;
-              blob = c.console.save_state(compress);
+              blob = c.get()->save_state(compress);
             }
             return py::bytes(reinterpret_cast<const char*>(blob.data()), blob.size());
           },
@@ -287,44 +308,45 @@ void bind_console(py::module_& m) {
           [](PyConsole& c, const py::buffer& data) {
             std::vector<psx::u8> blob = bytes_of(data);
             R release;
-            c.console.load_state(blob);
+            c.get()->load_state(blob);
           },
           py::arg("state"))
       .def("save_state_file",
-           [](PyConsole& c, const std::string& path, bool compress) { c.console.save_state_file(path, compress); },
+           [](PyConsole& c, const std::string& path, bool compress) { c.get()->save_state_file(path, compress); },
            py::arg("path"), py::arg("compress") = true, py::call_guard<R>())
-      .def("load_state_file", [](PyConsole& c, const std::string& path) { c.console.load_state_file(path); },
+      .def("load_state_file", [](PyConsole& c, const std::string& path) { c.get()->load_state_file(path); },
            py::arg("path"), py::call_guard<R>())
       // Video: views of buffers the console owns (fixed allocations, alive as long as the console,
       // which each array keeps alive as its base).
       .def(
           "get_screen",
           [](py::object self) {
-            psx::Console::Frame f = self.cast<PyConsole&>().console.frame();
+            psx::Console::Frame f = self.cast<PyConsole&>().get()->frame();
             py::ssize_t w = f.width, h = f.height;
-            return read_only(array_of<psx::u8>({h, w, 3}, f.rgb, self));
+            return read_only(array_of<psx::u8>({h, w, 3}, f.rgb, self.cast<PyConsole&>().keeper()));
           },
           "The displayed picture as a read-only [height, width, 3] uint8 view of the console's frame buffer (no "
           "copy). Its pixels change at the next run call; call again after each run call (the size may change).")
       .def(
           "vram",
           [](py::object self) {
-            const psx::u16* v = self.cast<PyConsole&>().console.vram();
-            return read_only(array_of<psx::u16>({psx::Console::kVramHeight, psx::Console::kVramWidth}, v, self));
+            const psx::u16* v = self.cast<PyConsole&>().get()->vram();
+            return read_only(
+                array_of<psx::u16>({psx::Console::kVramHeight, psx::Console::kVramWidth}, v, self.cast<PyConsole&>().keeper()));
           },
           "The GPU's 1024x512 16-bit VRAM as a read-only [512, 1024] uint16 view (no copy).")
-      .def("save_screenshot", [](PyConsole& c, const std::string& path) { c.console.save_screenshot(path); },
+      .def("save_screenshot", [](PyConsole& c, const std::string& path) { c.get()->save_screenshot(path); },
            py::arg("path"), py::call_guard<R>())
-      .def("save_vram_png", [](PyConsole& c, const std::string& path) { c.console.save_vram_png(path); },
+      .def("save_vram_png", [](PyConsole& c, const std::string& path) { c.get()->save_vram_png(path); },
            py::arg("path"), py::call_guard<R>())
       // Audio.
       .def("take_audio",
            [](PyConsole& c) {
              std::vector<psx::StereoSample> samples;
-             c.console.take_audio(samples);
+             c.get()->take_audio(samples);
              return samples_array(std::move(samples));
            })
-      .def("keep_all_audio", [](PyConsole& c) { c.console.keep_all_audio(); })
+      .def("keep_all_audio", [](PyConsole& c) { c.get()->keep_all_audio(); })
       .def(
           "start_audio_capture",
           [](PyConsole& c, psx::s32 threshold, psx::u32 silence_samples, psx::u32 tail_samples) {
@@ -332,12 +354,12 @@ void bind_console(py::module_& m) {
             o.threshold = threshold;
             o.silence_samples = silence_samples;
             o.tail_samples = tail_samples;
-            c.console.spu().start_capture(o);
+            c.get()->spu().start_capture(o);
           },
           py::arg("threshold") = 1, py::arg("silence_samples") = 0, py::arg("tail_samples") = 0)
-      .def("stop_audio_capture", [](PyConsole& c) { return samples_array(c.console.spu().stop_capture()); })
+      .def("stop_audio_capture", [](PyConsole& c) { return samples_array(c.get()->spu().stop_capture()); })
       .def_property_readonly("audio_capture_state",
-                             [](PyConsole& c) { return capture_state_name(c.console.spu().capture().state()); })
+                             [](PyConsole& c) { return capture_state_name(c.get()->spu().capture().state()); })
       .def_static(
           "save_wav",
           [](const std::string& path, const py::array_t<std::int16_t, py::array::c_style | py::array::forcecast>& s) {

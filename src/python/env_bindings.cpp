@@ -4,11 +4,13 @@
 // every call; VecEnv returns read-only views of its batch buffers (no copy), which the next
 // reset/step overwrites. Booting, resetting and stepping release the GIL.
 #include <algorithm>
+#include <climits>
 #include <thread>
 
 #include <pybind11/stl.h>
 
 #include "core/console.h"
+#include "python/arguments.h"
 #include "python/bindings.h"
 #include "rl/env.h"
 #include "rl/async_vec_env.h"
@@ -27,31 +29,37 @@ std::string path_of(py::handle v) { return py::str(py::module_::import("os").att
 // EnvConfig from keyword arguments; None keeps a field's default (the integration's value for the
 // optional overrides). An unknown keyword is a TypeError, as for any Python function.
 rl::EnvConfig config_from(const py::kwargs& kw) {
+  constexpr long long kU32 = 0xFFFFFFFFll;
+  auto u32 = [](const char* name, py::handle v, long long lo) {
+    return static_cast<std::uint32_t>(int_arg(name, v, lo, kU32));
+  };
   rl::EnvConfig c;
   for (auto [k, v] : kw) {
     std::string key = py::str(k);
+    const char* n = key.c_str();
     if (v.is_none()) continue;
-    if (key == "game") c.game = v.cast<std::string>();
+    if (key == "game") c.game = string_arg(n, v);
     else if (key == "games_dir") c.games_dir = path_of(v);
     else if (key == "build_games_dir") c.build_games_dir = path_of(v);
     else if (key == "disc") c.files.disc = path_of(v);
     else if (key == "bios") c.files.bios = path_of(v);
     else if (key == "states") c.files.states_dir = path_of(v);
     else if (key == "maps") c.files.maps_dir = path_of(v);
-    else if (key == "obs") c.obs = v.cast<std::string>();
-    else if (key == "visual_gray") c.visual_gray = v.cast<bool>();
-    else if (key == "reward") c.reward = v.cast<std::string>();
-    else if (key == "gamma") c.gamma = v.cast<double>();
-    else if (key == "initial_delay") c.initial_delay = v.cast<std::uint32_t>();
-    else if (key == "delay") c.delay = v.cast<std::uint32_t>();
-    else if (key == "max_move_frames") c.max_move_frames = v.cast<std::uint32_t>();
-    else if (key == "max_moves") c.max_moves = v.cast<std::uint32_t>();
-    else if (key == "sticky") c.sticky = v.cast<double>();
-    else if (key == "renderer") c.renderer = v.cast<std::string>();
-    else if (key == "scale") c.scale = v.cast<std::uint32_t>();
-    else if (key == "cpu") c.cpu = v.cast<std::string>();
+    else if (key == "obs") c.obs = string_arg(n, v);
+    else if (key == "visual_gray") c.visual_gray = bool_arg(n, v);
+    else if (key == "reward") c.reward = string_arg(n, v);
+    else if (key == "gamma") c.gamma = number_arg(n, v);
+    else if (key == "initial_delay") c.initial_delay = u32(n, v, 0);
+    else if (key == "delay") c.delay = u32(n, v, 1);
+    else if (key == "max_move_frames") c.max_move_frames = u32(n, v, 1);
+    else if (key == "max_moves") c.max_moves = u32(n, v, 1);
+    else if (key == "sticky") c.sticky = number_arg(n, v);
+    else if (key == "renderer") c.renderer = string_arg(n, v);
+    else if (key == "scale") c.scale = u32(n, v, 1);
+    else if (key == "cpu") c.cpu = string_arg(n, v);
     else throw py::type_error("unexpected keyword argument '" + key + "'");
   }
+  if (c.sticky && !(*c.sticky >= 0 && *c.sticky <= 1)) throw py::value_error("sticky: expected 0 to 1");
   return c;
 }
 
@@ -154,7 +162,9 @@ void bind_env(py::module_& m) {
       }))
       .def(
           "reset",
-          [](rl::Env& e, int level, std::uint64_t seed) {
+          [](rl::Env& e, py::handle level_arg, py::handle seed_arg) {
+            int level = static_cast<int>(int_arg("level", level_arg, INT_MIN, INT_MAX));
+            std::uint64_t seed = u64_arg("seed", seed_arg);
             rl::StepInfo info;
             {
               R release;
@@ -165,7 +175,8 @@ void bind_env(py::module_& m) {
           py::arg("level") = 1, py::arg("seed") = 0)
       .def(
           "step",
-          [](rl::Env& e, int action) {
+          [](rl::Env& e, py::handle action_arg) {
+            int action = static_cast<int>(int_arg("action", action_arg, INT_MIN, INT_MAX));
             rl::StepResult r;
             {
               R release;
@@ -174,6 +185,10 @@ void bind_env(py::module_& m) {
             return py::make_tuple(env_observation(e), r.reward, r.terminated, r.truncated, info_dict(r.info));
           },
           py::arg("action"))
+      .def("close", &rl::Env::close, py::call_guard<R>(),
+           "Releases the console and the Lua state now; any later reset, step or console call raises "
+           "RuntimeError('Env is closed'). Closing twice is allowed.")
+      .def_property_readonly("closed", &rl::Env::closed)
       .def("observation", &env_observation, "The current observation (a copy).")
       .def_property_readonly("observation_spaces", [](const rl::Env& e) { return spaces_list(e.observation_spaces()); })
       .def_property_readonly("obs", [](const rl::Env& e) { return rl::obs_kind_name(e.obs_kind()); })

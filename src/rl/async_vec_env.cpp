@@ -103,6 +103,7 @@ void AsyncVecEnv::wait_idle(std::unique_lock<std::mutex>& lock) {
 }
 
 void AsyncVecEnv::reset(int level, std::uint64_t seed) {
+  psx::ThreadOwner::Use use(owner_);
   std::unique_lock lock(mutex_);
   wait_idle(lock);
   level_ = level;
@@ -116,6 +117,7 @@ void AsyncVecEnv::reset(int level, std::uint64_t seed) {
 }
 
 void AsyncVecEnv::send(const std::vector<int>& actions, const std::vector<int>& env_ids) {
+  psx::ThreadOwner::Use use(owner_);
   if (actions.size() != env_ids.size())
     throw std::invalid_argument("send: " + std::to_string(actions.size()) + " actions for " +
                                 std::to_string(env_ids.size()) + " environment ids");
@@ -143,6 +145,7 @@ void AsyncVecEnv::send(const std::vector<int>& actions, const std::vector<int>& 
 }
 
 const AsyncBatch& AsyncVecEnv::recv() {
+  psx::ThreadOwner::Use use(owner_);
   std::unique_lock lock(mutex_);
   int in_flight = 0;
   for (Slot s : slots_) in_flight += s != Slot::kHeld;

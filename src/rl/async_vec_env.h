@@ -5,7 +5,8 @@
 // episode starts with reset(level, episode_seed(seed, i, k)) exactly as in VecEnv, so the same
 // actions sent to environment i give the same bits. Which environments share a batch depends on
 // host timing, though, so an agent that mixes their experience is not reproducible run to run;
-// the trainer uses the synchronous VecEnv for that reason.
+// the trainer uses the synchronous VecEnv for that reason. One calling thread at a time: reset(),
+// send() or recv() from a second thread while one is inside throws std::runtime_error.
 #pragma once
 #include <condition_variable>
 #include <cstdint>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/thread_owner.h"
 #include "rl/env.h"
 
 namespace psxrl::rl {
@@ -42,6 +44,8 @@ class AsyncVecEnv {
   unsigned threads() const { return static_cast<unsigned>(workers_.size()); }
   const std::vector<Space>& observation_spaces() const { return envs_[0]->observation_spaces(); }
   int action_count() const { return envs_[0]->action_count(); }
+  // Environment i, for tools and tests (its on_frame, say): only while recv() has handed it back.
+  Env& env(int i) { return *envs_[static_cast<size_t>(i)]; }
 
   // Waits for every move in flight, then starts every environment on `level` in the background
   // (environment i with episode_seed(seed, i, 0)); recv() returns them as they are ready.
@@ -88,6 +92,7 @@ class AsyncVecEnv {
   std::vector<std::thread> workers_;
 
   AsyncBatch batch_;
+  psx::ThreadOwner owner_{"AsyncVecEnv"};
 };
 
 }  // namespace psxrl::rl

@@ -55,7 +55,7 @@ Env::Env(const EnvConfig& config) : config_(config) {
   sticky_ = config_.sticky.value_or(game_.sticky);
   game_.watch_audio = config_.watch_audio.value_or(game_.watch_audio);
   maps_.resize(static_cast<size_t>(game_.level_count) + 1);
-  lua_ = std::make_unique<lua::Host>(game_.folder);
+  lua_ = std::make_unique<lua::Host>(game_.folder, lua::Host::kDefaultBudget, std::size_t{game_.script_memory_mib} << 20);
   bind_script();
   if (!game_.script.empty()) lua_->run_file(game_.script);
   // Looked up once: the move loop reads these every emulated frame.
@@ -117,6 +117,17 @@ Env::Env(const EnvConfig& config) : config_(config) {
 
 Env::~Env() = default;
 
+void Env::check_open() const {
+  if (!console_) throw std::runtime_error("Env is closed");
+}
+
+void Env::close() {
+  psx::ThreadOwner::Use use(owner_);
+  lua_.reset();
+  console_.reset();
+  done_ = true;
+}
+
 // The configured renderer; an unknown name or scale is std::invalid_argument, OpenGL missing a
 // std::runtime_error.
 void Env::use_renderer() {
@@ -132,6 +143,7 @@ void Env::use_renderer() {
 }
 
 void Env::boot() {
+  if (!game_.missing_program.empty()) throw psx::InputError(game_.missing_program);
   if (game_.needs_bios) console_->load_bios(config_.files.bios.empty() ? game_.bios : config_.files.bios);
   if (!game_.exe.empty()) {
     console_->boot_exe(game_.exe);
@@ -188,6 +200,8 @@ std::int64_t Env::raw(const Variable& v) const {
 }
 
 void Env::write_raw(const Variable& v, std::int64_t value) {
+  psx::ThreadOwner::Use use(owner_);
+  check_open();
   switch (v.width()) {
     case 1: console_->write8(v.address, static_cast<std::uint8_t>(value)); break;
     case 2: console_->write16(v.address, static_cast<std::uint16_t>(value)); break;
@@ -196,11 +210,15 @@ void Env::write_raw(const Variable& v, std::int64_t value) {
 }
 
 double Env::value(const std::string& name) const {
+  psx::ThreadOwner::Use use(owner_);
+  check_open();
   const Variable& v = game_.variable(name);
   return static_cast<double>(raw(v)) * v.scale;
 }
 
 void Env::set_delays(std::uint32_t initial_delay, std::uint32_t delay) {
+  psx::ThreadOwner::Use use(owner_);
+  check_open();
   if (delay == 0) throw std::invalid_argument("the delay must be at least one frame");
   delim_.initial_delay = initial_delay;
   delim_.delay = delay;
@@ -245,6 +263,8 @@ std::uint64_t Env::start_level(int level) {
 }
 
 const Observation& Env::reset(int level, std::uint64_t seed, StepInfo* info) {
+  psx::ThreadOwner::Use use(owner_);
+  check_open();
   auto t0 = std::chrono::steady_clock::now();
   if (level < 1 || level > game_.level_count)
     throw std::out_of_range("level " + std::to_string(level) + ": game '" + game_.name + "' has levels 1 to " +
@@ -274,6 +294,8 @@ const Observation& Env::begin_episode(int level, std::uint64_t seed, double time
 }
 
 Env::Snapshot Env::snapshot() {
+  psx::ThreadOwner::Use use(owner_);
+  check_open();
   if (level_ == 0) throw std::logic_error("snapshot() before reset(): no episode to save");
   Snapshot s{level_, time_at_start_, {}};
   console_->snapshot(s.console);
@@ -281,6 +303,8 @@ Env::Snapshot Env::snapshot() {
 }
 
 const Observation& Env::reset_to(const Snapshot& s, std::uint64_t seed, StepInfo* info) {
+  psx::ThreadOwner::Use use(owner_);
+  check_open();
   auto t0 = std::chrono::steady_clock::now();
   if (s.level < 1 || s.level > game_.level_count)
     throw std::out_of_range("snapshot of level " + std::to_string(s.level) + ": game '" + game_.name +

@@ -1,7 +1,9 @@
 // The environment: one Console + one Lua state + one integration, stepped synchronously (seed
 // §3.2, DESIGN.md "The environment layer"). reset() and step() return only when the level has
 // started or the move is over; the only clock is the emulated frame counter, so the same seed and
-// actions always give the same observations, rewards and flags. One thread at a time.
+// actions always give the same observations, rewards and flags. One thread at a time: a call from
+// a second thread while one is inside throws std::runtime_error("Env is in use by another
+// thread") and leaves the environment as it was (core/thread_owner.h).
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "core/console.h"
+#include "core/thread_owner.h"
 #include "rl/integration.h"
 #include "rl/move_delimiter.h"
 #include "rl/observation.h"
@@ -129,7 +132,14 @@ class Env {
   void write_raw(const Variable& v, std::int64_t value);
 
   // The console, for tools that show or record a game (play, record); agents never use it.
-  psx::Console& console() { return *console_; }
+  psx::Console& console() {
+    check_open();
+    return *console_;
+  }
+  // Releases the console and the Lua state now; every later call that needs them throws
+  // std::runtime_error("Env is closed"). Closing twice is allowed.
+  void close();
+  bool closed() const { return !console_; }
   // Called after every emulated frame of a step, with that frame's sound, for front ends that
   // show or record the game (psxrl play); it must not use the environment.
   std::function<void(std::span<const psx::StereoSample>)> on_frame;
@@ -138,6 +148,7 @@ class Env {
   std::string outcome() const;
 
  private:
+  void check_open() const;
   void use_renderer();
   // Whether anything takes the console's sound (Console::set_sound_observed).
   bool samples_taken() const;
@@ -190,6 +201,7 @@ class Env {
   double episode_reward_ = 0;
   double time_at_start_ = 0;
   int last_action_ = 0;
+  mutable psx::ThreadOwner owner_{"Env"};
 };
 
 }  // namespace psxrl::rl

@@ -81,6 +81,8 @@ void Env::run_frames(int action) {
 }
 
 StepResult Env::step(int action) {
+  psx::ThreadOwner::Use use(owner_);
+  check_open();
   auto t0 = std::chrono::steady_clock::now();
   if (done_) throw std::logic_error("step() after the episode ended: call reset() first");
   if (action < 0 || action >= action_count())

@@ -23,9 +23,13 @@ class Reader {
   Reader(const std::string& file, const toml::table& t, std::string path) : file_(file), t_(t), path_(std::move(path)) {}
 
   [[noreturn]] void fail(const toml::node* at, const std::string& key, const std::string& what) const {
+    throw psx::InputError(message(at, key, what));
+  }
+  // "file:line: [table] key: what", the line of `at` (else of the table).
+  std::string message(const toml::node* at, const std::string& key, const std::string& what) const {
     auto line = at ? at->source().begin.line : t_.source().begin.line;
     std::string where = path_.empty() ? key : "[" + path_ + "] " + key;
-    throw psx::InputError::at_line(file_, line, where + ": " + what);
+    return psx::InputError::at_line(file_, line, where + ": " + what).what();
   }
   const toml::node* get(const std::string& key) const { return t_.get(key); }
   bool has(const std::string& key) const { return t_.contains(key); }
@@ -169,11 +173,16 @@ Condition read_condition(const Reader& r, const std::string& key) {
   return out;
 }
 
-std::string resolve_program(const std::string& name, const std::string& folder, const std::string& build_games_dir,
-                            const std::string& game) {
-  for (const fs::path& p : {fs::path(folder) / name, fs::path(build_games_dir) / game / name})
-    if (fs::exists(p)) return p.string();
-  return (fs::path(build_games_dir) / game / name).string();
+// The integration's folder first, then the build's games/<name>/; when neither has the file,
+// g.missing_program says where it was looked for (reported when the game boots).
+std::string resolve_program(const Reader& boot, const std::string& key, const std::string& name, Integration& g,
+                            const std::string& build_games_dir) {
+  const fs::path places[] = {fs::path(g.folder), fs::path(build_games_dir) / g.name};
+  for (const fs::path& dir : places)
+    if (fs::is_regular_file(dir / name)) return (dir / name).string();
+  g.missing_program = boot.message(boot.get(key), key, "'" + name + "' is in neither " + places[0].string() +
+                                                           "/ nor " + places[1].string() + "/ (is the game built?)");
+  return (places[1] / name).string();
 }
 
 // bios = "none" (the built-in kernel), "user" (--bios FILE) or { path = "FILE" }: a file relative
@@ -199,9 +208,9 @@ void read_boot(const Reader& root, Integration& g, const std::string& build_game
   b.only({"exe", "disc", "bios", "disc_sha1", "ready", "max_frames"});
   std::string exe = b.str("exe", ""), disc = b.str("disc", "");
   if (exe.empty() == disc.empty()) b.fail(nullptr, "exe", "expected exactly one of exe = \"file\" or disc = \"file\" | \"user\"");
-  if (!exe.empty()) g.exe = resolve_program(exe, g.folder, build_games_dir, g.name);
+  if (!exe.empty()) g.exe = resolve_program(b, "exe", exe, g, build_games_dir);
   if (disc == "user") g.user_disc = true;
-  else if (!disc.empty()) g.disc = resolve_program(disc, g.folder, build_games_dir, g.name);
+  else if (!disc.empty()) g.disc = resolve_program(b, "disc", disc, g, build_games_dir);
   read_bios(b, g);
   g.disc_sha1 = b.strings("disc_sha1");
   for (const auto& h : g.disc_sha1)
@@ -353,7 +362,7 @@ const Variable& Integration::variable(const std::string& n) const {
 }
 
 Integration parse_integration(const std::string& text, const std::string& file, const std::string& folder,
-                              const std::string& build_games_dir) {
+                              const std::string& build_games_dir, const std::string& folder_name) {
   toml::table root_table;
   try {
     root_table = toml::parse(text, file);
@@ -364,8 +373,12 @@ Integration parse_integration(const std::string& text, const std::string& file, 
   g.manifest = file;
   g.folder = folder;
   Reader root(g.manifest, root_table, "");
-  root.only({"name", "title", "script", "boot", "variables", "actions", "levels", "moves", "episode", "reward", "observations"});
+  root.only({"name", "title", "script", "script_memory_mib", "boot", "variables", "actions", "levels", "moves",
+             "episode", "reward", "observations"});
   g.name = root.str("name", "", true);
+  if (!folder_name.empty() && g.name != folder_name)
+    root.fail(root.get("name"), "name", "'" + g.name + "' differs from the folder's name '" + folder_name +
+                                            "' (a game is chosen by its folder: rename one of them)");
   g.title = root.str("title", g.name);
   std::string script = root.str("script", "");
   if (!script.empty()) {
@@ -373,6 +386,7 @@ Integration parse_integration(const std::string& text, const std::string& file, 
       root.fail(root.get("script"), "script", "expected a file name inside the integration's folder");
     g.script = (fs::path(folder) / script).string();
   }
+  g.script_memory_mib = static_cast<std::uint32_t>(root.integer("script_memory_mib", 32, 1, 4096));
   read_boot(root, g, build_games_dir);
   read_variables(root, g);
   read_actions(root, g);
@@ -401,7 +415,8 @@ Integration load_integration(const std::string& games_dir, const std::string& na
                           games_dir + ", which holds " + (known.empty() ? "no games" : known) + "; " + source + ")");
   }
   auto bytes = psx::read_file(manifest.string());
-  return parse_integration(std::string(bytes.begin(), bytes.end()), manifest.string(), folder.string(), build_games_dir);
+  return parse_integration(std::string(bytes.begin(), bytes.end()), manifest.string(), folder.string(), build_games_dir,
+                           name);
 }
 
 std::vector<std::string> missing_user_files(const Integration& g, const UserFiles& files, bool needs_states,

@@ -52,11 +52,15 @@ struct Integration {
   std::string folder;    // the integration's folder
   std::string manifest;  // its game.toml
   std::string script;    // Lua file, empty when none
+  std::uint32_t script_memory_mib = 32;  // the most the Lua state may hold (lua/lua_host.h)
 
   // Boot: a built-in EXE or disc (paths resolved), or a user's disc (+ BIOS).
   std::string exe, disc;
   bool user_disc = false, needs_bios = false;
   std::string bios;  // a BIOS file the manifest names (resolved); --bios overrides it
+  // Set when the built-in exe/disc is in none of the folders searched: "game.toml:N: [boot] exe:
+  // ..." naming them. Booting reports it; parsing alone (tools, fuzzing) does not need the file.
+  std::string missing_program;
   std::vector<std::string> disc_sha1;  // accepted SHA-1s of the data track; empty accepts any
   Condition boot_ready;
   psx::u32 boot_max_frames = 600;
@@ -118,9 +122,10 @@ struct UserFiles {
 // when they are not in the integration's folder.
 Integration load_integration(const std::string& games_dir, const std::string& name,
                              const std::string& build_games_dir);
-// Parses manifest text (`file` names it in errors; `folder` resolves relative paths).
+// Parses manifest text (`file` names it in errors; `folder` resolves relative paths). A non-empty
+// `folder_name` must equal the manifest's `name` (a game is chosen by its folder's name).
 Integration parse_integration(const std::string& text, const std::string& file, const std::string& folder,
-                              const std::string& build_games_dir);
+                              const std::string& build_games_dir, const std::string& folder_name = "");
 
 // What the user must supply and has not, one line each ("your PlayStation BIOS image: pass --bios
 // FILE"), so that one message names every missing file: the BIOS and disc the boot needs, the

@@ -40,6 +40,7 @@ void VecEnv::gather(size_t i, std::vector<std::vector<std::uint8_t>>& into) {
 }
 
 void VecEnv::reset(int level, std::uint64_t seed) {
+  psx::ThreadOwner::Use use(owner_);
   level_ = level;
   seed_ = seed;
   episodes_.assign(envs_.size(), 0);
@@ -50,6 +51,7 @@ void VecEnv::reset(int level, std::uint64_t seed) {
 }
 
 const VecStep& VecEnv::step(const std::vector<int>& actions) {
+  psx::ThreadOwner::Use use(owner_);
   if (actions.size() != envs_.size())
     throw std::invalid_argument("step: expected " + std::to_string(envs_.size()) + " actions, got " +
                                 std::to_string(actions.size()));

@@ -3,12 +3,14 @@
 // ([num_envs, ...shape]). Each environment has its own console and Lua state and is stepped by
 // one thread at a time, so the results equal N single environments driven the same way, bit for
 // bit, whatever the thread count: environment i's k-th episode starts with
-// reset(level, episode_seed(seed, i, k)).
+// reset(level, episode_seed(seed, i, k)). One calling thread at a time: reset() or step() from a
+// second thread while one runs throws std::runtime_error (core/thread_owner.h).
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "core/thread_owner.h"
 #include "rl/env.h"
 #include "rl/thread_pool.h"
 
@@ -52,6 +54,7 @@ class VecEnv {
   std::vector<std::uint64_t> episodes_;
   std::vector<std::vector<std::uint8_t>> batch_, final_;
   VecStep result_;
+  psx::ThreadOwner owner_{"VecEnv"};
 };
 
 }  // namespace psxrl::rl

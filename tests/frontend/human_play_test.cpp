@@ -132,4 +132,19 @@ TEST(PlayWindow, F5SavesTheLevelStartStateThatTheNextPlayStartsFrom) {
   EXPECT_NE(again.output.find("episode 1: score 0, stopped, 30 frames"), std::string::npos) << again.output;
 }
 
+// A corrupt level save state is a bad input file: exit 2 (#61; it was 3, "the emulated program
+// failed"), naming the file. Nothing is typed, so this test does not depend on host time.
+TEST(PlayWindow, ACorruptLevelStateIsBadInput) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run (CTest does)";
+  fs::path dir = fs::path(PSXRL_TEST_OUT_DIR) / "corrupt_state";
+  fs::remove_all(dir);
+  state_started_tumble(dir / "games");
+  fs::create_directories(dir / "states");
+  std::ofstream(dir / "states" / "level01.state") << "not a save state";
+  auto r = run("PSXRL_GAMES=" + (dir / "games").string() + " SDL_AUDIODRIVER=dummy " + kPsxrl +
+               " play --game tumble_states --level 1 --frames 30 --states " + (dir / "states").string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find((dir / "states" / "level01.state").string() + ": "), std::string::npos) << r.output;
+}
+
 }  // namespace

@@ -204,6 +204,25 @@ TEST(PlayHeadless, HumanPlayWithoutADisplayIsRefused) {
   EXPECT_NE(r.output.find("human play needs a window: no display"), std::string::npos) << r.output;
 }
 
+// DISPLAY naming an X server that is not there (#61): SDL falls back to its invisible offscreen
+// driver rather than failing, so play must ask which driver it got. No server listens on :4242
+// (xvfb-run -a numbers its displays from :99).
+const std::string kUnreachableDisplay = "env -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER DISPLAY=:4242 ";
+
+TEST(PlayHeadless, HumanPlayWithAnUnreachableDisplayIsRefused) {
+  auto r = run(kUnreachableDisplay + kPsxrl + " play --game tumble --frames 30");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("human play needs a window: "), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("episode 1"), std::string::npos) << r.output;
+}
+
+TEST(PlayHeadless, PolicyPlayWithAnUnreachableDisplayFallsBackToHeadless) {
+  auto r = run(kUnreachableDisplay + kPsxrl + " play --policy " + tiny_policy().string() + " --frames 30");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find(": playing headless"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("episode 1: score"), std::string::npos) << r.output;
+}
+
 TEST(PlayHeadless, PngFoldersHoldEveryNthFrameAndTheSound) {
   fs::path d = fresh_dir("png");
   auto r = run(kPsxrl + " play --headless --policy " + tiny_policy().string() +

@@ -3,8 +3,8 @@
 Run by the interpreter of .venv-sb3 (scripts/setup.sh: Debian's CPU-only python3-torch with
 stable-baselines3), not by pytest: the interpreter the module is built for has no PyTorch. Checks
 that SB3's own environment checker accepts the environment, that DQN and PPO train for a few
-hundred moves, that every move SB3 counts is a move the psxrl environment made, and that a saved
-model predicts the same greedy actions after loading.
+hundred moves, that every move SB3 counts is a move the psxrl environment made, that a saved
+model predicts the same greedy actions after loading, and that psxrl.make_vec works there.
 """
 import os
 import sys
@@ -47,7 +47,21 @@ def greedy_actions(model, observations):
     return [int(model.predict(o, deterministic=True)[0]) for o in observations]
 
 
+def check_make_vec():
+    """psxrl.make_vec needs Gymnasium 1.1's AutoresetMode (#61): setup.sh installs 1.1.1 here,
+    with SB3 2.4.1, whose declared gymnasium<1.1 is overridden (everything below runs on it)."""
+    try:
+        vec = psxrl.make_vec("psxrl/Tumble-v0", num_envs=2, max_moves=5)
+        obs, _ = vec.reset(seed=1)
+        obs, rewards, terminated, truncated, _ = vec.step(np.array([1, 2]))
+        check(obs.shape == (2, 1) and rewards.shape == (2,),
+              f"psxrl.make_vec steps 2 environments on Gymnasium {gym.__version__}")
+    except Exception as e:  # ImportError on Gymnasium 1.0
+        check(False, f"psxrl.make_vec on Gymnasium {gym.__version__}: {type(e).__name__}: {e}")
+
+
 def main():
+    check_make_vec()
     for obs in ("local", "simple"):
         try:
             check_env(make(obs).unwrapped, warn=True)

@@ -58,8 +58,11 @@ def test_human_mode_shows_each_step_in_real_time(display):
 
 
 def test_human_mode_without_a_display_says_so(monkeypatch):
+    # A warning, not an error (#61): Gymnasium's check_env makes a "human" environment on every
+    # server; the episode goes on without a picture (tests/python/test_robust.py checks "once").
     for name in ("DISPLAY", "WAYLAND_DISPLAY", "SDL_VIDEODRIVER"):
         monkeypatch.delenv(name, raising=False)
     env = gym.make("psxrl/Tumble-v0", render_mode="human")
-    with pytest.raises(RuntimeError, match="needs a display: no display"):
+    with pytest.warns(RuntimeWarning, match="render_mode='human' shows nothing: no display"):
         env.reset(seed=0)
+    assert env.unwrapped.window is None

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -116,6 +117,26 @@ TEST_F(AtomicFile, MissingDirectoryIsRefusedNamingTheFile) {
     EXPECT_NE(std::string(e.what()).find("x.bin: cannot create the temporary file"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
   }
+}
+
+// #61: a process killed while writing leaves "<target>.tmp.PID.N" behind; the next writer into
+// the folder removes those of processes that no longer run. PID 4194305 is past Linux's largest
+// possible PID (PID_MAX_LIMIT, 4194304), so no such process can exist; this process's own and a
+// live process's (its parent's) temporaries are left alone, as another writer may be using them.
+TEST_F(AtomicFile, StaleTemporariesOfDeadProcessesAreRemoved) {
+  const std::string dead = ".tmp.4194305.", own = ".tmp." + std::to_string(::getpid()) + ".",
+                    live = ".tmp." + std::to_string(::getppid()) + ".";
+  for (const std::string& name : std::vector<std::string>{"curve.png" + dead + "0", "other.bin" + dead + "7", "curve.png" + own + "3",
+                                  "curve.png" + live + "1", "notes.tmp.txt", "x.tmp.12ab.0"})
+    std::ofstream(dir_ / name) << "left behind";
+  write_file_atomically((dir_ / "curve.png").string(), std::vector<u8>{1, 2, 3});
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir_)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  std::vector<std::string> expected = {"curve.png", "curve.png" + live + "1", "curve.png" + own + "3", "notes.tmp.txt",
+                                       "x.tmp.12ab.0"};
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(left, expected);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/disc/cue.h"
+#include "core/input_error.h"
 
 namespace psx::disc {
 namespace {
@@ -208,6 +209,30 @@ TEST_F(DiscCue, ImageFileProblemsNameTheSheetLine) {
   EXPECT_NE(err.find("not a multiple of 2048"), std::string::npos) << err;
   err = error_of([&] { Disc::open((dir_ / "absent.cue").string()); });
   EXPECT_NE(err.find("absent.cue: cannot open cue sheet"), std::string::npos) << err;
+}
+
+// #61: a folder where a file is expected is named as such (seeking to a folder's end used to
+// report its size as 9223372036854775807).
+TEST_F(DiscCue, AFolderWhereAnImageFileIsExpectedIsNamed) {
+  fs::create_directories(dir_ / "track.bin");
+  std::string sheet = write_cue("d.cue", "FILE \"track.bin\" BINARY\n  TRACK 01 MODE2/2352\n    INDEX 01 00:00:00\n");
+  std::string err = error_of([&] { Disc::open(sheet); });
+  EXPECT_NE(err.find("d.cue:1: "), std::string::npos) << err;
+  EXPECT_NE(err.find("track.bin: is a folder, expected an image file"), std::string::npos) << err;
+  EXPECT_EQ(err.find("9223372036854775807"), std::string::npos) << err;
+  err = error_of([&] { Disc::open((dir_ / "sub dir").string()); });
+  EXPECT_NE(err.find("sub dir: is a folder, expected a disc image"), std::string::npos) << err;
+}
+
+// #61: read_file (EXEs, BIOS images, states, manifests) names a folder instead of passing on
+// libstdc++'s "basic_filebuf::underflow error reading the file: Is a directory".
+TEST_F(DiscCue, ReadFileRefusesAFolderByName) {
+  try {
+    psx::read_file((dir_ / "sub dir").string());
+    FAIL();
+  } catch (const psx::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (dir_ / "sub dir").string() + ": is a folder, expected a file");
+  }
 }
 
 }  // namespace

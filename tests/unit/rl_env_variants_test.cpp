@@ -116,6 +116,29 @@ TEST(EnvScriptErrors, BadHookResultsAreRefused) {
   EXPECT_THROW(env.step(1), psx::InputError);
 }
 
+// #61: the manifest's script_memory_mib limits the script's state: a script that allocates
+// without end fails at its line, and the environment is left consistent (the next reset fails the
+// same way, not with a follow-on error).
+TEST(EnvScriptErrors, TheManifestsMemoryLimitStopsARunawayScript) {
+  std::string hog = "function on_reset(level, seed)\n  local t = {}\n"
+                    "  for i = 1, 1e5 do t[i] = string.rep('y', 1e5) .. i end\nend\n";
+  std::string manifest = replace(tumble_manifest(), "script = \"game.lua\"", "script = \"game.lua\"\nscript_memory_mib = 3");
+  std::string dir = write_integration("memhog", manifest, hog);
+  Env env(config_for(dir));
+  try {
+    env.reset(1, 1, nullptr);
+    FAIL() << "the script allocated without limit";
+  } catch (const psx::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), dir + "/tumble/game.lua:3: memory limit (3 MiB) exceeded (in on_reset())");
+  }
+  try {
+    env.reset(1, 1, nullptr);
+    FAIL() << "the script allocated without limit";
+  } catch (const psx::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("game.lua:3: memory limit (3 MiB) exceeded"), std::string::npos) << e.what();
+  }
+}
+
 // The CPU core is speed only: 30 moves over several episodes under the recompiler (the default)
 // give the same observations, rewards and frame counts, and end in the same console state, as
 // under the interpreter, the reference.

@@ -126,6 +126,8 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenCase{16, "[episodes]", "mini/game.toml:16: episodes: unknown field"},
         BrokenCase{12, "request_variable = 12", "mini/game.toml:12: [levels] request_variable: expected a string"},
         BrokenCase{3, "# nothing to boot", "mini/game.toml:2: [boot] exe: expected exactly one of"},
+        BrokenCase{1, "name = \"mini\"\nscript_memory_mib = 0",
+                   "mini/game.toml:2: script_memory_mib: expected 1 to 4096, found 0"},
         BrokenCase{3, "disc = \"user\"\ndisc_sha1 = [\"ABC\"]",
                    "mini/game.toml:4: [boot] disc_sha1: expected SHA-1s as 40 lower-case hex digits, found 'ABC'"}),
     [](const testing::TestParamInfo<BrokenCase>& info) {
@@ -144,6 +146,33 @@ TEST(Integration, ScriptOutsideTheFolderIsRefused) {
   EXPECT_NE(message.find("mini/game.toml:1: script: expected a file name inside the integration's folder"),
             std::string::npos)
       << message;
+}
+
+// #61: a built-in program that is nowhere is reported, when the game boots, at the manifest's
+// line with both folders searched (not only the last fallback path).
+TEST(Integration, AMissingProgramNamesTheLineAndTheFoldersSearched) {
+  Integration g = parse_integration(kManifest, "mini/game.toml", "mini", kBuildGames);
+  EXPECT_EQ(g.missing_program, "mini/game.toml:3: [boot] exe: 'mini.exe' is in neither mini/ nor " + kBuildGames +
+                                   "/mini/ (is the game built?)");
+  Integration t = psxrl::rl::load_integration(kGames, "tumble", kBuildGames);
+  EXPECT_EQ(t.missing_program, "");
+}
+
+// #61: a game is chosen by its folder, so a manifest naming another game is refused.
+TEST(Integration, ANameThatDiffersFromTheFolderIsRefused) {
+  fs::path games = fs::temp_directory_path() / "psxrl_misnamed_games";
+  fs::remove_all(games);
+  fs::create_directories(games / "maxi");
+  std::ofstream(games / "maxi" / "game.toml") << kManifest;
+  try {
+    psxrl::rl::load_integration(games.string(), "maxi", kBuildGames);
+    FAIL() << "loaded a manifest named 'mini' from folder 'maxi'";
+  } catch (const psx::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), (games / "maxi" / "game.toml").string() +
+                                         ":1: name: 'mini' differs from the folder's name 'maxi' (a game is chosen "
+                                         "by its folder: rename one of them)");
+  }
+  fs::remove_all(games);
 }
 
 TEST(Integration, PathPatternsExpand) {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <cstring>
+#include <filesystem>
 
 namespace psx::disc {
 namespace {
@@ -29,6 +29,9 @@ Disc::~Disc() {
 }
 
 int Disc::add_file_source(const std::string& file_path, u64& size_out) {
+  // fopen opens a folder and seeking to its end gives LLONG_MAX: refuse it by name.
+  if (std::error_code ec; std::filesystem::is_directory(file_path, ec))
+    throw DiscError(file_path + ": is a folder, expected an image file");
   std::FILE* f = std::fopen(file_path.c_str(), "rb");
   if (!f) throw DiscError(file_path + ": cannot open image file (" + std::strerror(errno) + ")");
   if (fseeko(f, 0, SEEK_END) != 0) {
@@ -44,6 +47,8 @@ int Disc::add_file_source(const std::string& file_path, u64& size_out) {
 }
 
 std::unique_ptr<Disc> Disc::open(const std::string& path) {
+  if (std::error_code ec; std::filesystem::is_directory(path, ec))
+    throw DiscError(path + ": is a folder, expected a disc image (.cue, .bin or .iso)");
   std::string ext = lower_extension(path);
   if (ext == "cue") return open_cue(path);
   if (ext == "iso") return open_iso(path);

@@ -33,25 +33,53 @@ def _with_games(kwargs):
     return kwargs
 
 
-class Env(_psxrl.Env):
+def _rebuild(cls, args, kwargs):
+    return cls(*args, **kwargs)
+
+
+class _ByConfiguration:
+    """Pickling by configuration: an environment pickles as the arguments that made it and unpickles
+    as a new one booted from them (so SubprocVecEnv, AsyncVectorEnv with the spawn method and Ray
+    can ship it); its episode is not carried over. A copy is refused: a console's state is copied
+    with save states (``Console.save_state``, ``Env.snapshot`` in C++), not by deepcopy."""
+
+    def _remember(self, args, kwargs):
+        self._config = (tuple(args), dict(kwargs))
+
+    def __reduce__(self):
+        args, kwargs = self._config
+        return (_rebuild, (type(self), args, kwargs))
+
+    def __copy__(self):
+        raise TypeError(f"a {type(self).__name__} cannot be copied: make another from the same arguments, or copy "
+                        "the console's state with save states (Console.save_state / load_state)")
+
+    def __deepcopy__(self, memo):
+        self.__copy__()
+
+
+class Env(_ByConfiguration, _psxrl.Env):
     __doc__ = _psxrl.Env.__doc__
 
     def __init__(self, **kwargs):
         super().__init__(**_with_games(kwargs))
+        self._remember((), kwargs)
 
 
-class VecEnv(_psxrl.VecEnv):
+class VecEnv(_ByConfiguration, _psxrl.VecEnv):
     __doc__ = _psxrl.VecEnv.__doc__
 
     def __init__(self, num_envs, threads=0, **kwargs):
         super().__init__(num_envs, threads, **_with_games(kwargs))
+        self._remember((num_envs, threads), kwargs)
 
 
-class AsyncVecEnv(_psxrl.AsyncVecEnv):
+class AsyncVecEnv(_ByConfiguration, _psxrl.AsyncVecEnv):
     __doc__ = _psxrl.AsyncVecEnv.__doc__
 
     def __init__(self, num_envs, batch_size=0, threads=0, **kwargs):
         super().__init__(num_envs, batch_size, threads, **_with_games(kwargs))
+        self._remember((num_envs, batch_size, threads), kwargs)
 
 
 def make_env(game, **kwargs):

@@ -5,6 +5,7 @@ Each ``step`` is one move of the game, delimited the seed's way in C++ (docs/env
 observations, rewards, flags and ``info`` are the C++ environment's, unchanged.
 """
 import time
+import warnings
 
 import gymnasium as gym
 import numpy as np
@@ -100,22 +101,33 @@ class PsxrlEnv(gym.Env):
             return
         picture = self.env.get_screen()
         if self.window is None:
+            # Gymnasium's check_env makes an environment for every render mode the metadata lists,
+            # also on headless servers: without a display, say so once and go on showing nothing.
             problem = display_problem()
+            if not problem:
+                title = f"psxrl: {self.spec.id if self.spec else type(self).__name__}"
+                try:
+                    self.window = Window(title, picture.shape[1], picture.shape[0])
+                except RuntimeError as e:  # DISPLAY names a server that is not there
+                    problem = str(e)
             if problem:
-                raise RuntimeError(f"render_mode='human' needs a display: {problem}")
-            title = f"psxrl: {self.spec.id if self.spec else type(self).__name__}"
-            self.window = Window(title, picture.shape[1], picture.shape[0])
+                warnings.warn(f"render_mode='human' shows nothing: {problem}", RuntimeWarning, stacklevel=3)
+                self._window_closed = True
+                return
             self._due = time.monotonic()
         self._due += frames / self._CONSOLE_FPS
         time.sleep(max(0.0, self._due - time.monotonic()))
         self.window.show(picture, read_back=True)  # window.picture() shows what the user saw
         self._due = max(self._due, time.monotonic())  # a slow host does not bank time to rush later
         if self.window.poll():
-            self.close()
+            self.window = None  # the window closes; the environment goes on
             self._window_closed = True
 
     def close(self):
+        """Closes the window and releases the console at once; a later reset or step raises
+        RuntimeError("Env is closed")."""
         self.window = None  # the window closes when its last reference goes
+        self.env.close()
         super().close()
 
 

@@ -175,6 +175,8 @@ void Console::side_load(const PsxExe& exe) {
   cpu_.set_reg(28, exe.gp);
   cpu_.set_reg(29, sp);
   cpu_.set_reg(30, sp);
+  // The HLE kernel's Exec() caller: a return from the entry point stops with a message.
+  if (hle_mode_) cpu_.set_reg(31, HleBios::kExitStub);
   cpu_.set_pc(exe.pc);
 }
 

@@ -2,4 +2,6 @@
 # CHECKS: one per CHECK_EQ call site, each run once.
 psx_add_rom_test(bios_string SOURCES bios_string.c bios_calls.S CHECKS 52)
 psx_add_rom_test(bios_heap SOURCES bios_heap.c bios_calls.S CHECKS 20)
-psx_add_rom_test(bios_interrupts SOURCES bios_interrupts.c bios_calls.S CHECKS 30)
+psx_add_rom_test(bios_interrupts SOURCES bios_interrupts.c bios_calls.S CHECKS 31)
+psx_add_rom_test(bios_kernel SOURCES bios_kernel.c bios_calls.S CHECKS 43)
+psx_add_rom_test(bios_entry SOURCES bios_entry.c CHECKS 9)

@@ -91,3 +91,15 @@ exit_critical_section:
         BIOS    sys_enq_int_rp, 0xC0, 0x02
         BIOS    sys_deq_int_rp, 0xC0, 0x03
         BIOS    change_clear_rcnt, 0xC0, 0x0A
+
+# Kernel tables, threads and the C0h handler set-up (bios_kernel).
+        BIOS    open_th, 0xB0, 0x0E
+        BIOS    close_th, 0xB0, 0x0F
+        BIOS    change_th, 0xB0, 0x10
+        BIOS    krom2_raw_add, 0xB0, 0x51
+        BIOS    get_c0_table, 0xB0, 0x56
+        BIOS    get_b0_table, 0xB0, 0x57
+        BIOS    enqueue_rcnt_irqs, 0xC0, 0x00
+        BIOS    enqueue_syscall_handler, 0xC0, 0x01
+        BIOS    init_def_int, 0xC0, 0x0C
+        BIOS    set_irq_auto_ack, 0xC0, 0x0D

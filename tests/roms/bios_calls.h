@@ -64,6 +64,16 @@ void change_clear_pad(int flag);
 int sys_enq_int_rp(int priority, uint32_t *element);
 int sys_deq_int_rp(int priority, uint32_t *element);
 int change_clear_rcnt(int counter, int flag);
+uint32_t open_th(void (*pc)(void), void *sp, void *gp);
+int close_th(uint32_t thread);
+int change_th(uint32_t thread);
+int32_t krom2_raw_add(uint32_t sjis);
+uint32_t *get_c0_table(void);
+uint32_t *get_b0_table(void);
+int enqueue_rcnt_irqs(int priority);
+int enqueue_syscall_handler(int priority);
+int init_def_int(int priority);
+void set_irq_auto_ack(uint32_t irq, int flag);
 uint32_t enter_critical_section(void);
 void exit_critical_section(void);
 

@@ -61,7 +61,10 @@ int main(void) {
   __asm__ volatile("sw $gp, %0" : "=m"(hook_buf[11]));
 
   /* 2. HookEntryInt: after the chains the kernel longjmps into the hook, which acknowledges
-        and calls ReturnFromException; the removed element no longer counts. */
+        and calls ReturnFromException; the removed element no longer counts. Root counter 3's
+        handler (chain 1) takes VBlank and leaves the exception at once while its auto-
+        acknowledge is on, so the SDKs turn it off first (PSn00bSDK's ResetGraph does). */
+  CHECK_EQ("ChangeClearRCnt(3) was on at boot", change_clear_rcnt(3, 0), 1);
   enter_critical_section();
   hook_entry_int(hook_buf);
   exit_critical_section();

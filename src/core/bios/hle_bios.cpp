@@ -23,49 +23,53 @@ void HleBios::install() {
     poke32(v + 4, kJrRa);
     poke32(v + 8, 0);
   }
-  const u32 stubs[] = {kSyscall, 0, j(kA0), 0, j(kB0), 0, j(kB0), li_t1(0x17)};
-  for (u32 i = 0; i < 8; ++i) poke32(kReturnStub + 4 * i, stubs[i]);
+  const u32 stubs[] = {kSyscall, 0, j(kA0), 0, j(kB0), 0, j(kB0), li_t1(0x17), kSyscall, 0};
+  for (u32 i = 0; i < 10; ++i) poke32(kReturnStub + 4 * i, stubs[i]);
   // ResetEntryInt's exit buffer: ra = ReturnFromException, sp = the exception stack, rest zero.
   for (u32 i = 0; i < 12; ++i) poke32(kDefaultExit + 4 * i, 0);
   poke32(kDefaultExit, kRfeStub);
   poke32(kDefaultExit + 4, kExceptionStack);
   const char version[] = "psxrl HLE kernel";
   for (u32 i = 0; i < sizeof version; ++i) poke8(kVersionString + i, static_cast<u8>(version[i]));
+  poke32(kRamSizeWord, 2);  // RAM size in MiB, as the BIOS writes it at 60h
+
+  kernel_heap_ = {kKernelHeap, kKernelHeapEnd};
+  poke32(kKernelHeap, kKernelHeapEnd - kKernelHeap - 4);
+  install_tables();
   bus_.flush_icache();  // the code just written must not meet stale cache lines, as at BIOS boot
 
-  // The chains as the BIOS sets them up at boot: the root counter handlers in chain 1 (VBlank
-  // first), DefInt in chain 3; the pad handler waits for StartPad.
-  chains_ = {};
+  // The chains as the BIOS's kernel setup leaves them: the syscall handler in chain 0, DefInt in
+  // chain 3, the root counter handlers in chain 1 (C0h:01h, 0Ch, 00h); the pad handler waits
+  // for StartPad.
   for (u32 id = 0; id < kNativeCount; ++id) {
     u32 e = kKernelElems + 16 * id;
     poke32(e, 0), poke32(e + 4, 0), poke32(e + 8, kNativeFuncs + 4 * id), poke32(e + 12, 0);
   }
-  for (u32 id : {kRcnt0, kRcnt1, kRcnt2, kRcntVblank}) enqueue(1, kKernelElems + 16 * id);
+  enqueue(0, kKernelElems + 16 * kSyscallHandler);
   enqueue(3, kKernelElems + 16 * kDefInt);
+  for (u32 id : {kRcnt0, kRcnt1, kRcnt2, kRcntVblank}) enqueue(1, kKernelElems + 16 * id);
 
   // Post-boot state: kernel mode, COP2 enabled, hardware interrupts unmasked in SR, I_MASK 0.
   cpu_.cop0().sr = Cop0::kCU2 | Cop0::kIP2 | Cop0::kIEc;
   exit_buf_ = kDefaultExit;
-  dispatching_ = return_now_ = false;
+  dispatching_ = return_now_ = unresolved_ = false;
   resume_.clear();
   callbacks_.clear();
-  events_ = {};
   clear_rcnt_ = {1, 1, 1, 1};
+  irq_auto_ack_ = 0;
   clear_pad_ = 1;
   pad_buf_ = {};
   pad_started_ = false;
   heap_ = {};
-  kernel_heap_ = {kKernelHeap, kKernelHeap};
-  poke32(kKernelHeap, (kKernelHeapEnd - kKernelHeap - 4));
-  kernel_heap_.end = kKernelHeapEnd;
   rand_seed_ = 0x24040001;
   strtok_next_ = 0;
-  conf_ = {kMaxEvents, 4, 0x801FFF00};
+  conf_ = {kMaxEvents, kMaxThreads, 0x801FFF00};
 }
 
 bool HleBios::handle(u32 pc) {
   u32 p = Bus::physical(pc) & (Bus::kRamSize - 1);
   if (peek32(p) != kMarker) return false;
+  if (p != kExceptionVector && via_table(p, pc)) return true;
   switch (p) {
     case kA0: call_a0(cpu_.reg(kT1) & 0xFF); break;
     case kB0: call_b0(cpu_.reg(kT1) & 0xFF); break;
@@ -82,10 +86,11 @@ void HleBios::return_to_caller(u32 v0) {
 }
 
 void HleBios::unsupported(const char* table, u32 fn) {
-  char msg[160];
+  char msg[192];
   std::snprintf(msg, sizeof msg,
-                "HLE kernel: BIOS call %s:%02Xh is outside the supported table (see hle_bios.h); run with --bios",
-                table, fn);
+                "HLE kernel: BIOS call %s:%02Xh (called from 0x%08X) is outside the supported table (see hle_bios.h); "
+                "run with --bios",
+                table, fn, cpu_.reg(kRa) - 8);
   if (on_fatal) on_fatal(msg);
   cpu_.stop();
 }
@@ -98,7 +103,7 @@ void HleBios::call_a0(u32 fn) {
 }
 
 void HleBios::call_b0(u32 fn) {
-  if (event_call(fn) || interrupt_call(kB0, fn) || memory_call(kB0, fn) || tty_call(kB0, fn) ||
+  if (event_call(fn) || interrupt_call(kB0, fn) || thread_call(fn) || table_call(kB0, fn) || memory_call(kB0, fn) || tty_call(kB0, fn) ||
       system_call(kB0, fn))
     return;
   unsupported("B0h", fn);
@@ -150,6 +155,10 @@ bool HleBios::tty_call(u32 table, u32 fn) {
 // Cache, GPU helpers, configuration and the calls that have nothing to do without a BIOS CD
 // driver (psx-spx "BIOS GPU Functions", "BIOS Misc Functions").
 bool HleBios::system_call(u32 table, u32 fn) {
+  if (table == kB0 && fn == 0x51) {  // Krom2RawAdd: the kanji font is in the BIOS ROM; none here
+    return_to_caller(0xFFFFFFFF);      // -1, the result for a code with no glyph
+    return true;
+  }
   if (table != kA0) return false;
   const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1), a2 = cpu_.reg(kA2);
   constexpr u32 kGp0 = 0xBF801810, kGp1 = 0xBF801814;
@@ -235,20 +244,60 @@ void HleBios::print(const std::string& s) {
 }
 
 void HleBios::do_state(StateIO& s) {
-  s.section("HLEK", 2);
-  s.pod(saved_regs_);
-  s.pod(saved_hi_), s.pod(saved_lo_), s.pod(saved_sr_), s.pod(saved_epc_);
-  s.pod(exit_buf_), s.pod(chains_);
+  const u32 version = s.section("HLEK", 3, 2);
+  if (version == 2) {
+    load_v2_state(s);
+  } else {
+    s.pod(exit_buf_);
+    s.boolean(dispatching_), s.boolean(return_now_), s.boolean(unresolved_);
+    s.pod(chain_prio_), s.pod(chain_elem_);
+    s.vec(resume_, 256);
+    s.vec(callbacks_, 256);
+    s.pod(clear_rcnt_), s.pod(irq_auto_ack_), s.pod(clear_pad_), s.pod(pad_buf_);
+    s.boolean(pad_started_);
+    s.pod(heap_), s.pod(kernel_heap_);
+    s.pod(rand_seed_), s.pod(strtok_next_), s.pod(conf_);
+  }
+  s.end_section("HLEK");
+}
+
+// Version 2 kept the register save area, the chain heads and the events on the host. An HLE
+// run's state (its chains are never all empty) gets the kernel tables written into its RAM,
+// which was loaded before this section, and those three copied into them.
+void HleBios::load_v2_state(StateIO& s) {
+  struct OldEvent {
+    u32 cls, spec, mode, func, status;
+  };
+  std::array<u32, 32> regs{};
+  u32 hi = 0, lo = 0, sr = 0, epc = 0;
+  std::array<u32, 4> chains{};
+  std::array<OldEvent, kMaxEvents> events{};
+  s.pod(regs), s.pod(hi), s.pod(lo), s.pod(sr), s.pod(epc);
+  s.pod(exit_buf_), s.pod(chains);
   s.boolean(dispatching_), s.boolean(return_now_);
   s.pod(chain_prio_), s.pod(chain_elem_);
   s.vec(resume_, 256);
   s.vec(callbacks_, 256);
-  s.pod(events_);
+  s.pod(events);
   s.pod(clear_rcnt_), s.pod(clear_pad_), s.pod(pad_buf_);
   s.boolean(pad_started_);
   s.pod(heap_), s.pod(kernel_heap_);
   s.pod(rand_seed_), s.pod(strtok_next_), s.pod(conf_);
-  s.end_section("HLEK");
+  unresolved_ = false;
+  irq_auto_ack_ = 0;
+  if (chains == std::array<u32, 4>{}) return;
+  install_tables();
+  u32 tcb = current_tcb();
+  for (u32 r = 0; r < 32; ++r) poke32(tcb + 8 + 4 * r, regs[r]);
+  const u32 tail[5] = {epc, hi, lo, sr, 0};
+  for (u32 i = 0; i < 5; ++i) poke32(tcb + 0x88 + 4 * i, tail[i]);
+  for (u32 p = 0; p < 4; ++p) set_chain_head(p, chains[p]);
+  u32 evcb = peek32(kTables + 0x20);
+  for (u32 i = 0; i < kMaxEvents; ++i) {
+    const OldEvent& e = events[i];
+    const u32 fields[5] = {e.cls, e.status, e.spec, e.mode, e.func};
+    for (u32 k = 0; k < 5; ++k) poke32(evcb + i * kEvcbSize + 4 * k, fields[k]);
+  }
 }
 
 }  // namespace psx

@@ -1,7 +1,7 @@
 // HLE kernel: runs PlayStation programs without a Sony BIOS. It puts the hardware in its post-boot
-// state, owns the exception vector, and services the BIOS calls programs make through the
-// A0h/B0h/C0h vectors and SYSCALL (psx-spx "Kernel (BIOS)"). Every call not listed here stops the
-// console with a message naming it. Supported calls:
+// state, lays out the kernel's RAM as a BIOS leaves it, owns the exception vector, and services
+// the BIOS calls programs make through the A0h/B0h/C0h vectors and SYSCALL (psx-spx "Kernel
+// (BIOS)"). Every call not listed here stops the console with a message naming it. Supported:
 //   A0h:03h write (fd 0/1 = TTY)  09h putc (fd 0/1)  0Ch strtol  0Dh strtoul  0Eh abs  0Fh labs
 //       10h atoi  11h atol  13h setjmp  14h longjmp  15h strcat  16h strncat  17h strcmp
 //       18h strncmp  19h strcpy  1Ah strncpy  1Bh strlen  1Ch index  1Dh rindex  1Eh strchr
@@ -14,27 +14,43 @@
 //       B4h GetSystemInfo
 //   B0h:00h alloc_kernel_memory  01h free_kernel_memory  02h SetRCnt  03h GetRCnt  04h StartRCnt
 //       05h StopRCnt  06h ResetRCnt  07h DeliverEvent  08h OpenEvent  09h CloseEvent
-//       0Ah WaitEvent  0Bh TestEvent  0Ch EnableEvent  0Dh DisableEvent  12h InitPad
-//       13h StartPad  14h StopPad  17h ReturnFromException  18h ResetEntryInt (SetDefaultExit-
-//       FromException)  19h HookEntryInt (SetCustomExitFromException)  20h UnDeliverEvent
-//       35h write  3Bh putc  3Dh putchar  3Fh puts  5Bh ChangeClearPad
-//   C0h:02h SysEnqIntRP  03h SysDeqIntRP  0Ah ChangeClearRCnt
-//   SYSCALL a0=0 NoFunction, 1 EnterCriticalSection, 2 ExitCriticalSection
+//       0Ah WaitEvent  0Bh TestEvent  0Ch EnableEvent  0Dh DisableEvent  0Eh OpenTh  0Fh CloseTh
+//       10h ChangeTh  12h InitPad  13h StartPad  14h StopPad  17h ReturnFromException
+//       18h ResetEntryInt (SetDefaultExitFromException)  19h HookEntryInt (SetCustomExitFrom-
+//       Exception)  20h UnDeliverEvent  35h write  3Bh putc  3Dh putchar  3Fh puts
+//       51h Krom2RawAdd (always -1: no ROM font)  56h GetC0Table  57h GetB0Table
+//       5Bh ChangeClearPad
+//   C0h:00h EnqueueTimerAndVblankIrqs  01h EnqueueSyscallHandler  02h SysEnqIntRP
+//       03h SysDeqIntRP  0Ah ChangeClearRCnt  0Ch InitDefInt  0Dh SetIrqAutoAck
+//   SYSCALL a0=0 NoFunction, 1 EnterCriticalSection, 2 ExitCriticalSection, 3 ChangeThread-
+//       SubFunction; other values deliver event F0000010h/4000h
 // Not supported (they stop the console): the BIOS CD-ROM and memory-card file system (open/read
-// on "cdrom:"/"bu00:", _96_init, _bu_init, _card_*), threads (OpenTh/ChangeTh, SYSCALL 3),
-// Exec/LoadExec/_boot, GetB0Table/GetC0Table (programs that patch kernel code), getchar/gets
-// (no TTY input), qsort/bsearch/lsearch (callbacks into comparison functions), and atof.
+// on "cdrom:"/"bu00:", _96_init, _bu_init, _card_*), Exec/LoadExec/_boot, getchar/gets (no TTY
+// input), qsort/bsearch/lsearch (callbacks into comparison functions), and atof.
+//
+// Kernel RAM (psx-spx "BIOS Memory Map"), laid out at install(): the vectors at 80h (exception)
+// and A0h/B0h/C0h, the table of tables at 100h (ExCB, PCB, TCB, EvCB pointers and sizes), the
+// A/C/B function tables at 200h/674h/874h. The vectors hold a marker the hook recognises; a call
+// through a vector looks its function up in the RAM table, so a program that patches a table
+// entry gets its own function called. Each table entry initially points at a small stub
+// ("j tail; li t1,fn", the tail jumps to the vector's KSEG1 mirror), and a call reaching a
+// vector through KSEG1 is run natively without the table lookup, so programs that keep the old
+// entry and chain to it work. The exception chains, events and threads live in the ExCB, EvCB
+// and TCB blocks in RAM, so programs that clear or walk them (psyqo does) see what they expect.
 //
 // Interrupts are handled as the BIOS does (psx-spx "BIOS Interrupt/Exception Handling"): the
-// registers go to the current thread's save area, then the four priority chains are walked
+// registers go to the current thread's TCB, then the four priority chains are walked
 // (elements {next, func2, func1, pad}; func2(v0) runs when func1 returns non-zero), then the
 // exit buffer set by HookEntryInt is longjmp'd to (by default it calls ReturnFromException).
-// The kernel's own chain elements run natively: the root counter handlers (chain 1: VBlank,
-// timer 2, 1, 0: deliver F200000xh/0002h, and when ChangeClearRCnt is on acknowledge and return),
-// the pad handler (chain 2, after StartPad: reads both pads into the InitPad buffers at VBlank)
-// and DefInt (chain 3: delivers F000000xh/1000h for each pending IRQ). Program functions are
-// called with ra pointing at a kernel stub that executes SYSCALL, which hands control back.
-// With a real BIOS the console keeps only the putchar hooks (to print) and the shell-entry hook.
+// The kernel's own chain elements run natively: the root counter handlers (C0h:00h, chain 1:
+// VBlank for root counter 3, timers 2, 1, 0: deliver F200000xh/0002h, and when ChangeClearRCnt
+// is on acknowledge and return), the pad handler (chain 2, after StartPad: reads both pads into
+// the InitPad buffers at VBlank) and DefInt (C0h:0Ch, chain 3: delivers F000000xh/1000h for each
+// pending IRQ and acknowledges those SetIrqAutoAck turned on). Other exceptions (break, address
+// errors...) deliver F0000010h/1000h; unless a handler returns from the exception, the console
+// stops with a message. Program functions are called with ra pointing at a kernel stub that
+// executes SYSCALL, which hands control back. A program that returns from its entry point stops
+// the console. With a real BIOS the console keeps only the putchar hooks and the shell hook.
 #pragma once
 #include <array>
 #include <functional>
@@ -55,8 +71,11 @@ class HleBios {
  public:
   HleBios(Cpu& cpu, Bus& bus) : cpu_(cpu), bus_(bus) {}
 
-  // Writes the kernel's vectors and stubs into RAM and sets SR/I_MASK as the BIOS leaves them.
+  // Writes the kernel's vectors, tables and stubs into RAM and sets SR/I_MASK as the BIOS leaves
+  // them.
   void install();
+  // Where a program's entry point returns to (the BIOS's Exec() caller): stops the console.
+  static constexpr u32 kExitStub = 0x80000520;
   // Handles the CPU reaching a hooked vector. Returns false when the vector holds program code
   // (the program replaced the kernel's handler), so the CPU should just run it.
   bool handle(u32 pc);
@@ -74,6 +93,9 @@ class HleBios {
 
  private:
   // Kernel RAM layout (the first 64 KiB belong to the kernel, psx-spx "BIOS Memory Map").
+  static constexpr u32 kTables = 0x80000100;       // pointers and sizes of ExCB, PCB, TCB, EvCB
+  static constexpr u32 kTableA = 0x80000200, kTableC = 0x80000674, kTableB = 0x80000874;
+  static constexpr u32 kSizeA = 0xC0, kSizeB = 0x80, kSizeC = 0x20;  // entries
   static constexpr u32 kReturnStub = 0x80000500;   // SYSCALL: a called program function returned
   static constexpr u32 kRetryA0 = 0x80000508;      // re-enters A0h with the same t1 (busy waits)
   static constexpr u32 kRetryB0 = 0x80000510;
@@ -82,16 +104,16 @@ class HleBios {
   static constexpr u32 kKernelElems = 0x80000580;  // the kernel's chain elements, 16 bytes each
   static constexpr u32 kDefaultExit = 0x80000600;  // ResetEntryInt's jmp_buf
   static constexpr u32 kVersionString = 0x80000640;
+  static constexpr u32 kRamSizeWord = 0x80000060;
+  static constexpr u32 kStubs = 0x80001000;        // one "j tail; li t1,fn" per table entry
+  static constexpr u32 kStubTails = 0x80001B00;    // per table: jump to the KSEG1 vector
   static constexpr u32 kKernelHeap = 0x8000A000, kKernelHeapEnd = 0x8000E000;
   static constexpr u32 kExceptionStack = 0x8000EFF0;
   static constexpr u32 kMaxEvents = 16;  // SYSTEM.CNF default "EVENT = 10" (hex)
-  enum Native : u32 { kRcntVblank, kRcnt2, kRcnt1, kRcnt0, kPad, kDefInt, kNativeCount };
+  static constexpr u32 kMaxThreads = 4;  // SYSTEM.CNF default "TCB = 4"
+  static constexpr u32 kEvcbSize = 0x1C, kTcbSize = 0xC0;
+  enum Native : u32 { kRcntVblank, kRcnt2, kRcnt1, kRcnt0, kPad, kDefInt, kSyscallHandler, kNativeCount };
 
-  // A BIOS event control block (psx-spx "BIOS Event Functions").
-  struct Event {
-    u32 cls = 0, spec = 0, mode = 0, func = 0;
-    u32 status = 0;  // 0 free, 1000h disabled, 2000h enabled/busy, 4000h enabled/ready
-  };
   // What to do when a program function called by the kernel returns.
   struct Resume {
     enum Kind : u32 { kChainFunc1, kDispatch, kCaller } kind;
@@ -111,26 +133,41 @@ class HleBios {
   bool tty_call(u32 table, u32 fn);
   bool system_call(u32 table, u32 fn);
 
+  void load_v2_state(StateIO& s);
+
+  // Kernel tables, table dispatch and threads (hle_kernel_tables.cpp).
+  void install_tables();
+  bool via_table(u32 vector, u32 pc);
+  u32 chain_head(u32 prio) const;
+  void set_chain_head(u32 prio, u32 elem);
+  u32 current_tcb() const;
+  bool table_call(u32 table, u32 fn);
+  bool thread_call(u32 fn);
+
   // Exceptions and interrupts (hle_interrupts.cpp).
   void exception();
   void syscall();
+  void kernel_stub_syscall();
+  void fail_exception(u32 code);
   void save_thread_registers();
   void return_from_exception();
   void dispatch_next();
   bool run_native(u32 id);
   bool rcnt_handler(u32 counter);
   bool pad_handler();
+  bool def_int();
   void read_pad(int port, u32 buf);
   void call_guest(u32 func, u32 a0, Resume r);
   void guest_returned();
   void enqueue(u32 prio, u32 elem);
   void dequeue(u32 prio, u32 elem);
   bool interrupt_call(u32 table, u32 fn);
+  bool timer_call(u32 fn);
 
-  // Events (hle_events.cpp).
+  // Events (hle_events.cpp): control blocks in the EvCB array (psx-spx "BIOS Event Functions").
   bool event_call(u32 fn);
   void deliver_event(u32 cls, u32 spec);
-  Event* event_at(u32 handle);
+  u32 event_at(u32 handle) const;
 
   // Memory allocation (hle_memory.cpp).
   bool memory_call(u32 table, u32 fn);
@@ -159,18 +196,15 @@ class HleBios {
 
   Cpu& cpu_;
   Bus& bus_;
-  // The current thread's register save area (the BIOS keeps it in the TCB).
-  std::array<u32, 32> saved_regs_{};
-  u32 saved_hi_ = 0, saved_lo_ = 0, saved_sr_ = 0, saved_epc_ = 0;
   u32 exit_buf_ = kDefaultExit;
-  std::array<u32, 4> chains_{};
   bool dispatching_ = false;
   bool return_now_ = false;
+  bool unresolved_ = false;  // dispatching an exception no handler may resolve
   u32 chain_prio_ = 0, chain_elem_ = 0;
   std::vector<Resume> resume_;
   std::vector<u32> callbacks_;
-  std::array<Event, kMaxEvents> events_{};
   std::array<u32, 4> clear_rcnt_{1, 1, 1, 1};
+  u32 irq_auto_ack_ = 0;  // SetIrqAutoAck: bit n set = DefInt acknowledges IRQ n
   u32 clear_pad_ = 1;
   std::array<u32, 2> pad_buf_{};
   bool pad_started_ = false;

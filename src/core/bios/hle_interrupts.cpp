@@ -12,6 +12,8 @@ namespace psx {
 
 namespace {
 constexpr u32 kV0 = 2, kA0r = 4, kA1 = 5, kSp = 29, kFp = 30, kRa = 31, kGp = 28;
+// TCB offsets (psx-spx "BIOS Thread Functions"): r0-r31 from 08h, then EPC, HI, LO, SR, Cause.
+constexpr u32 kTcbRegs = 0x08, kTcbEpc = 0x88, kTcbHi = 0x8C, kTcbLo = 0x90, kTcbSr = 0x94, kTcbCause = 0x98;
 constexpr u32 kIStat = 0xBF801070, kIMask = 0xBF801074;
 constexpr u32 kB0 = 0xB0, kC0 = 0xC0;
 // RFE: pop the KU/IE stack (previous -> current, old -> previous).
@@ -21,76 +23,108 @@ inline u32 rfe(u32 sr) { return (sr & ~0xFu) | ((sr >> 2) & 0xF); }
 void HleBios::exception() {
   Cop0& c = cpu_.cop0();
   u32 code = (c.cause >> 2) & 0x1F;
+  if (code == static_cast<u32>(Exception::Syscall) && (c.epc == kReturnStub || c.epc == kExitStub)) {
+    kernel_stub_syscall();
+    return;
+  }
+  save_thread_registers();
   if (code == static_cast<u32>(Exception::Syscall)) {
     syscall();
     return;
   }
-  if (code == static_cast<u32>(Exception::Interrupt)) {
-    save_thread_registers();
+  dispatching_ = true;
+  return_now_ = false;
+  unresolved_ = code != static_cast<u32>(Exception::Interrupt);
+  chain_prio_ = 0;
+  chain_elem_ = chain_head(0);
+  if (unresolved_) {
+    // Not an interrupt: the syscall handler delivers "unknown exception" to whoever opened it
+    // (psyqo resolves its BREAK codes so); the chains are not walked.
+    chain_prio_ = 4;
+    chain_elem_ = 0;
+    deliver_event(0xF0000010, 0x1000);
+  } else {
     // The hardware executes a GTE command at the interrupted address before taking the
     // interrupt, so the BIOS resumes after it (psx-spx "COP0 - Interrupt Handling").
-    u32 instr = peek32(saved_epc_);
-    if (!(c.cause & Cop0::kBD) && (instr >> 25) == 0x25) saved_epc_ += 4;
-    dispatching_ = true;
-    return_now_ = false;
-    chain_prio_ = 0;
-    chain_elem_ = chains_[0];
-    dispatch_next();
-    return;
+    u32 tcb = current_tcb(), epc = peek32(tcb + kTcbEpc);
+    if (!(c.cause & Cop0::kBD) && (peek32(epc) >> 25) == 0x25) poke32(tcb + kTcbEpc, epc + 4);
   }
+  dispatch_next();
+}
+
+void HleBios::fail_exception(u32 code) {
+  Cop0& c = cpu_.cop0();
   char msg[128];
   std::snprintf(msg, sizeof msg, "unhandled CPU exception %u (Cause 0x%08X) at EPC 0x%08X, BadVaddr 0x%08X", code,
                 c.cause, c.epc, c.badvaddr);
+  dispatching_ = false;
   if (on_fatal) on_fatal(msg);
+  cpu_.stop();
+}
+
+// SYSCALL: the registers are in the TCB; the function edits them there, as the BIOS's syscall
+// handler does, and ReturnFromException resumes after the SYSCALL instruction.
+// The SYSCALLs of the kernel's own stubs: a program function it called returned, or the
+// program returned from its entry point.
+void HleBios::kernel_stub_syscall() {
+  Cop0& c = cpu_.cop0();
+  if (c.epc == kReturnStub) {
+    c.sr = rfe(c.sr);
+    guest_returned();
+    return;
+  }
+  if (on_fatal) on_fatal("the program returned from its entry point to the kernel (HLE kernel: nothing to return to)");
   cpu_.stop();
 }
 
 void HleBios::syscall() {
   Cop0& c = cpu_.cop0();
-  if (c.epc == kReturnStub) {  // a program function called by the kernel returned
-    c.sr = rfe(c.sr);
-    guest_returned();
-    return;
+  u32 tcb = current_tcb();
+  auto reg = [&](u32 r) { return tcb + kTcbRegs + 4 * r; };
+  poke32(tcb + kTcbEpc, c.epc + 4);
+  // The saved IEp and IM2 (SR bits 2 and 10) are what RFE restores, so the critical section
+  // calls edit them (psx-spx "SYS(01h) EnterCriticalSection").
+  u32 sr = peek32(tcb + kTcbSr);
+  switch (peek32(reg(kA0r))) {
+    case 0: break;
+    case 1:
+      poke32(reg(kV0), (sr & 0x404) == 0x404 ? 1 : 0);
+      poke32(tcb + kTcbSr, sr & ~0x404u);
+      break;
+    case 2: poke32(tcb + kTcbSr, sr | 0x404); break;
+    case 3:  // ChangeThreadSubFunction(tcb): the return goes to that thread
+      poke32(reg(kV0), 1);
+      poke32(peek32(kTables + 8), peek32(reg(kA1)));
+      break;
+    default: deliver_event(0xF0000010, 0x4000); break;
   }
-  // The saved IEp/IMp (SR bits 2 and 10) are what RFE restores, so the critical section calls
-  // edit them (psx-spx "SYS(01h) EnterCriticalSection").
-  u32 fn = cpu_.reg(kA0r);
-  if (fn == 1) {
-    cpu_.set_reg(kV0, (c.sr & 0x404) == 0x404 ? 1 : 0);
-    c.sr &= ~0x404u;
-  } else if (fn == 2) {
-    c.sr |= 0x404;
-  } else if (fn != 0) {
-    char msg[96];
-    std::snprintf(msg, sizeof msg, "HLE kernel: SYSCALL a0=%02Xh (threads and custom syscalls) is not supported", fn);
-    if (on_fatal) on_fatal(msg);
-    cpu_.stop();
-    return;
-  }
-  c.sr = rfe(c.sr);
-  cpu_.set_pc(c.epc + 4);
+  return_from_exception();
 }
 
 void HleBios::save_thread_registers() {
-  for (u32 r = 0; r < 32; ++r) saved_regs_[r] = cpu_.reg(r);
-  saved_hi_ = cpu_.hi();
-  saved_lo_ = cpu_.lo();
-  saved_sr_ = cpu_.cop0().sr;
-  saved_epc_ = cpu_.cop0().epc;
+  u32 tcb = current_tcb();
+  for (u32 r = 0; r < 32; ++r) poke32(tcb + kTcbRegs + 4 * r, cpu_.reg(r));
+  poke32(tcb + kTcbEpc, cpu_.cop0().epc);
+  poke32(tcb + kTcbHi, cpu_.hi());
+  poke32(tcb + kTcbLo, cpu_.lo());
+  poke32(tcb + kTcbSr, cpu_.cop0().sr);
+  poke32(tcb + kTcbCause, cpu_.cop0().cause);
 }
 
-// B0h:17h: restores R1-R31 (except k0), HI, LO and SR from the save area, then RFE + jump.
+// B0h:17h: restores R1-R31 (except k0), HI, LO and SR from the current thread's TCB, then
+// RFE + jump to its EPC.
 void HleBios::return_from_exception() {
+  u32 tcb = current_tcb();
   for (u32 r = 1; r < 32; ++r)
-    if (r != 26) cpu_.set_reg(r, saved_regs_[r]);
-  cpu_.set_hi(saved_hi_);
-  cpu_.set_lo(saved_lo_);
-  cpu_.cop0().sr = rfe(saved_sr_);
+    if (r != 26) cpu_.set_reg(r, peek32(tcb + kTcbRegs + 4 * r));
+  cpu_.set_hi(peek32(tcb + kTcbHi));
+  cpu_.set_lo(peek32(tcb + kTcbLo));
+  cpu_.cop0().sr = rfe(peek32(tcb + kTcbSr));
   // Kernel calls still pending for this exception are abandoned with it.
   while (!resume_.empty() && resume_.back().in_dispatch) resume_.pop_back();
   if (dispatching_) callbacks_.clear();
-  dispatching_ = false;
-  cpu_.set_pc(saved_epc_);
+  dispatching_ = unresolved_ = false;
+  cpu_.set_pc(peek32(tcb + kTcbEpc));
   cpu_.note_exception_return();
 }
 
@@ -107,9 +141,13 @@ void HleBios::dispatch_next() {
       return_from_exception();
       return;
     }
+    if (unresolved_) {
+      fail_exception((cpu_.cop0().cause >> 2) & 0x1F);
+      return;
+    }
     if (!chain_elem_) {
-      if (++chain_prio_ == 4) break;
-      chain_elem_ = chains_[chain_prio_];
+      if (++chain_prio_ >= 4) break;
+      chain_elem_ = chain_head(chain_prio_);
       continue;
     }
     u32 elem = chain_elem_;
@@ -182,22 +220,28 @@ bool HleBios::run_native(u32 id) {
     case kRcnt1: return rcnt_handler(1);
     case kRcnt0: return rcnt_handler(0);
     case kPad: return pad_handler();
-    default: {  // DefInt: an event per pending IRQ; IRQ6 uses timer 1's class (psx-spx)
-      static constexpr u32 kClass[11] = {1, 2, 3, 4, 5, 6, 6, 8, 0xB, 9, 0xA};
-      u32 pending = io_read(kIStat, 4) & io_read(kIMask, 4);
-      for (u32 i = 0; i < 11; ++i)
-        if (pending & (1u << i)) deliver_event(0xF0000000 | kClass[i], 0x1000);
-      return false;
-    }
+    case kDefInt: return def_int();
+    default: return false;  // the syscall handler: SYSCALL never reaches the chains here
   }
 }
 
+// DefInt: an event per pending IRQ (IRQ6, timer 2, uses timer 1's class, as the BIOS does:
+// psx-spx "BIOS Event Summary"), acknowledging those SetIrqAutoAck turned on.
+bool HleBios::def_int() {
+  static constexpr u32 kClass[11] = {1, 2, 3, 4, 5, 6, 6, 8, 0xB, 9, 0xA};
+  for (u32 i = 0; i < 11; ++i) {
+    if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & (1u << i))) continue;
+    deliver_event(0xF0000000 | kClass[i], 0x1000);
+    if (irq_auto_ack_ & (1u << i)) io_write(kIStat, ~(1u << i) & 0xFFFF, 4);
+  }
+  return false;
+}
+
 // Root counter t: deliver F200000th/0002h; with ChangeClearRCnt on, acknowledge the IRQ and
-// leave the exception at once. The BIOS computes the IRQ bit as 1 << (4 + t) for all four, so
-// "root counter 3" tests IRQ7 rather than VBlank (this is what lets the pad handler in chain 2
-// see VBlank; the open-source OpenBIOS reimplementation does the same).
+// leave the exception at once. Root counter 3 is the VBlank IRQ (psx-spx "BIOS Timer Functions";
+// OpenBIOS's handlers test IRQ0 for it too).
 bool HleBios::rcnt_handler(u32 t) {
-  u32 bit = 1u << (4 + t);
+  u32 bit = t == 3 ? 1u : 1u << (4 + t);
   if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & bit)) return false;
   deliver_event(0xF2000000 | t, 0x0002);
   if (!clear_rcnt_[t]) return false;
@@ -242,19 +286,20 @@ void HleBios::read_pad(int port, u32 buf) {
   dev->deselect();
 }
 
+// An element already in the chain is moved to its head rather than linked twice (which would
+// loop the chain forever).
 void HleBios::enqueue(u32 prio, u32 elem) {
-  prio &= 3;
-  poke32(elem, chains_[prio]);
-  chains_[prio] = elem;
+  dequeue(prio, elem);
+  poke32(elem, chain_head(prio));
+  set_chain_head(prio, elem);
 }
 
 void HleBios::dequeue(u32 prio, u32 elem) {
-  prio &= 3;
-  if (chains_[prio] == elem) {
-    chains_[prio] = peek32(elem);
+  if (chain_head(prio) == elem) {
+    set_chain_head(prio, peek32(elem));
     return;
   }
-  for (u32 e = chains_[prio], n = 0; e && n < 256; e = peek32(e), ++n)
+  for (u32 e = chain_head(prio), n = 0; e && n < 256; e = peek32(e), ++n)
     if (peek32(e) == elem) {
       poke32(e, peek32(elem));
       return;
@@ -267,6 +312,25 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
     switch (fn) {
       case 0x02: enqueue(a0, a1); return_to_caller(0); return true;  // SysEnqIntRP
       case 0x03: dequeue(a0, a1); return_to_caller(0); return true;  // SysDeqIntRP
+      case 0x00: {  // EnqueueTimerAndVblankIrqs: the four root counter handlers, counters stopped
+        io_write(kIMask, io_read(kIMask, 4) & ~0x71u, 4);
+        clear_rcnt_ = {1, 1, 1, 1};
+        for (u32 id : {kRcnt0, kRcnt1, kRcnt2, kRcntVblank}) enqueue(a0, kKernelElems + 16 * id);
+        for (u32 t = 0; t < 3; ++t)
+          for (u32 r : {4u, 8u, 0u}) io_write(0xBF801100 + 16 * t + r, 0, 2);
+        return_to_caller(1);
+        return true;
+      }
+      case 0x01: enqueue(a0, kKernelElems + 16 * kSyscallHandler); return_to_caller(1); return true;
+      case 0x0C:  // InitDefInt: DefInt with every auto-acknowledge off
+        irq_auto_ack_ = 0;
+        enqueue(a0, kKernelElems + 16 * kDefInt);
+        return_to_caller(1);
+        return true;
+      case 0x0D:  // SetIrqAutoAck(irq, flag)
+        if (a0 < 11) irq_auto_ack_ = a1 ? irq_auto_ack_ | (1u << a0) : irq_auto_ack_ & ~(1u << a0);
+        return_to_caller(0);
+        return true;
       case 0x0A: {                                                   // ChangeClearRCnt
         u32 old = clear_rcnt_[a0 & 3];
         clear_rcnt_[a0 & 3] = a1 ? 1 : 0;

@@ -16,7 +16,8 @@ namespace psxrl::cli {
 namespace fs = std::filesystem;
 
 bool CompatEntry::agree() const {
-  return bios && hle.has_picture && bios->has_picture && hle.frame_hash == bios->frame_hash;
+  return bios && !hle.failed && !bios->failed && hle.has_picture && bios->has_picture &&
+         hle.frame_hash == bios->frame_hash;
 }
 
 std::string compat_slug(const std::string& name) {

@@ -17,7 +17,8 @@ struct CompatEntry {
   std::string slug;  // its screenshots' file name stem, unique in the report
   CompatRun hle;
   std::optional<CompatRun> bios;
-  // The two runs ended on the same picture (the same frame hash); only with a BIOS run.
+  // Both runs went without an error and ended on the same picture (the same frame hash); only
+  // with a BIOS run. Two runs stopped by errors on the same blank screen do not agree.
   bool agree() const;
 };
 

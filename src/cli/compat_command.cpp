@@ -128,10 +128,8 @@ void assign_slugs(std::vector<CompatEntry>& entries) {
 }
 
 std::string run_line(const CompatRun& r) {
-  std::string line = std::to_string(r.frames) + " frames";
-  if (r.booted == CompatRun::Booted::No) line = "did not boot";
-  if (!r.stop.empty()) line += ", " + r.stop;
-  return line;
+  if (r.booted == CompatRun::Booted::No) return "did not boot: " + r.stop;
+  return std::to_string(r.frames) + " frames" + (r.stop.empty() ? "" : ", " + r.stop);
 }
 
 struct CompatArgs {
@@ -223,8 +221,8 @@ int compat_command(const std::vector<std::string>& args) {
     std::fputs(compat_markdown_table(entries, !a.bios.empty()).c_str(), stdout);
     size_t shots = 0;
     for (const CompatEntry& e : entries) shots += e.hle.has_picture + (e.bios && e.bios->has_picture);
-    std::fprintf(stderr, "psxrl compat: wrote %s/report.md, %s/index.html and %zu screenshots\n", a.out.c_str(),
-                 a.out.c_str(), shots);
+    std::fprintf(stderr, "psxrl compat: wrote %s/report.md, %s/index.html and %zu screenshot%s\n", a.out.c_str(),
+                 a.out.c_str(), shots, shots == 1 ? "" : "s");
   }
   if (bad) return kBadInput;
   return failed ? kProgramFailed : kSuccess;

@@ -64,7 +64,7 @@ CompatRun run_compat(const CompatProgram& program, const CompatSettings& setting
     run.booted = boot(console, program, settings);
   } catch (const std::exception& e) {
     run.booted = CompatRun::Booted::No;
-    run.stop = std::string("cannot boot: ") + e.what();
+    run.stop = e.what();
     run.failed = true;
     return run;
   }

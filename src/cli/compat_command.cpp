@@ -3,7 +3,7 @@
 // what booted, what stopped each program, and the final pictures (compat_report.h).
 #include <algorithm>
 #include <cstdio>
-#include <exception>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>

@@ -2,8 +2,8 @@
 // headless under the HLE kernel and, with --bios, under that BIOS too, and writes a report of
 // what booted, what stopped each program, and the final pictures (compat_report.h).
 #include <algorithm>
-#include <cstdio>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>

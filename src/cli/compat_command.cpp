@@ -2,14 +2,18 @@
 // headless under the HLE kernel and, with --bios, under that BIOS too, and writes a report of
 // what booted, what stopped each program, and the final pictures (compat_report.h).
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <set>
 #include <string>
 #include <system_error>
+#include <thread>
 #include <vector>
 
 #include "cli/cli.h"
@@ -38,7 +42,8 @@ const char* kCompatFooter =
     "     exception, a bus error) under some kernel\n";
 
 const std::map<std::string, std::string> kCompatNeeds = {
-    {"--frames", "a positive whole number"}, {"--bios", "a file"}, {"--out", "a folder"}, {"--cpu", "a core"}};
+    {"--frames", "a positive whole number"}, {"--bios", "a file"}, {"--out", "a folder"}, {"--cpu", "a core"},
+    {"--jobs", "a whole number from 1 to 256"}};
 
 bool has_exe_magic(const fs::path& path) {
   std::ifstream f(path, std::ios::binary);
@@ -134,7 +139,7 @@ std::string run_line(const CompatRun& r) {
 
 struct CompatArgs {
   std::vector<std::string> programs;
-  std::string frames_text = "600", bios, out = "compat-report", cpu = "recompiler";
+  std::string frames_text = "600", bios, out = "compat-report", cpu = "recompiler", jobs_text = "1";
   bool quiet = false;
 
   void add_to(CLI::App& app) {
@@ -151,25 +156,64 @@ struct CompatArgs {
     app.add_option("--cpu", cpu, "CPU core: recompiler (default, faster) or interpreter (the reference);\n"
                    "the same results")
         ->type_name("CORE");
+    app.add_option("--jobs", jobs_text, "run N programs at once, each on a console of its own (default 1);\n"
+                                        "the report is the same")
+        ->type_name("N");
     app.add_flag("--quiet", quiet, "print no progress or table, only errors");
   }
 };
 
-// Runs every program under every kernel into `folder`; returns whether any failed.
-bool run_all(std::vector<CompatEntry>& entries, const CompatSettings& hle, const CompatSettings* bios,
-             const CompatReportFolder& folder, bool quiet) {
+// How run_all runs the programs.
+struct RunPlan {
+  const CompatSettings& hle;
+  const CompatSettings* bios;  // null: HLE only
+  const CompatReportFolder& folder;
+  bool quiet;
+  unsigned jobs;
+};
+
+void run_entry(CompatEntry& e, const RunPlan& plan) {
+  e.hle = run_compat(e.program, plan.hle, plan.folder.screenshot_path(e.slug, "hle"));
+  if (plan.bios) e.bios = run_compat(e.program, *plan.bios, plan.folder.screenshot_path(e.slug, "bios"));
+}
+
+void print_entry(size_t done, size_t total, const CompatEntry& e) {
+  std::fprintf(stderr, "psxrl compat: [%zu/%zu] %s: HLE %s", done, total, e.program.name.c_str(),
+               run_line(e.hle).c_str());
+  if (e.bios) std::fprintf(stderr, "; BIOS %s; %s picture", run_line(*e.bios).c_str(), e.agree() ? "same" : "different");
+  std::fputc('\n', stderr);
+}
+
+// Runs every program under every kernel into the report folder, plan.jobs programs at a time
+// (each run on a console of its own, so the results do not depend on it), printing each as it
+// ends. Returns whether any failed; rethrows the first error writing a screenshot.
+bool run_all(std::vector<CompatEntry>& entries, const RunPlan& plan) {
+  std::atomic<size_t> next{0};
+  std::mutex mutex;  // guards done, error and the progress lines
+  size_t done = 0;
+  std::exception_ptr error;
+  auto work = [&] {
+    for (size_t i; (i = next++) < entries.size();) {
+      try {
+        run_entry(entries[i], plan);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        next = entries.size();
+        return;
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      if (!plan.quiet) print_entry(done, entries.size(), entries[i]);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (size_t t = 1; t < std::min<size_t>(plan.jobs, entries.size()); ++t) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
   bool failed = false;
-  for (size_t i = 0; i < entries.size(); ++i) {
-    CompatEntry& e = entries[i];
-    e.hle = run_compat(e.program, hle, folder.screenshot_path(e.slug, "hle"));
-    if (bios) e.bios = run_compat(e.program, *bios, folder.screenshot_path(e.slug, "bios"));
-    failed = failed || e.hle.failed || (e.bios && e.bios->failed);
-    if (quiet) continue;
-    std::fprintf(stderr, "psxrl compat: [%zu/%zu] %s: HLE %s", i + 1, entries.size(), e.program.name.c_str(),
-                 run_line(e.hle).c_str());
-    if (e.bios) std::fprintf(stderr, "; BIOS %s; %s picture", run_line(*e.bios).c_str(), e.agree() ? "same" : "different");
-    std::fputc('\n', stderr);
-  }
+  for (const CompatEntry& e : entries) failed = failed || e.hle.failed || (e.bios && e.bios->failed);
   return failed;
 }
 
@@ -192,6 +236,10 @@ int compat_command(const std::vector<std::string>& args) {
     return usage_error(app, "--cpu must be interpreter or recompiler, not '" + a.cpu + "'");
   hle.recompiler = a.cpu == "recompiler";
   if (a.programs.empty()) return usage_error(app, "give at least one program, disc image or folder");
+  if (a.jobs_text.empty() || a.jobs_text.find_first_not_of("0123456789") != std::string::npos ||
+      a.jobs_text.size() > 3 || std::stoul(a.jobs_text) < 1 || std::stoul(a.jobs_text) > 256)
+    return usage_error(app, "--jobs needs a whole number from 1 to 256");
+  const unsigned jobs = static_cast<unsigned>(std::stoul(a.jobs_text));
 
   CompatSettings bios = hle;
   try {
@@ -211,7 +259,7 @@ int compat_command(const std::vector<std::string>& args) {
   bool failed = false;
   try {
     CompatReportFolder folder(a.out);
-    failed = run_all(entries, hle, a.bios.empty() ? nullptr : &bios, folder, a.quiet);
+    failed = run_all(entries, {hle, a.bios.empty() ? nullptr : &bios, folder, a.quiet, jobs});
     folder.commit({hle.frames, a.bios, a.cpu}, entries);
   } catch (const psx::InputError& e) {
     std::fprintf(stderr, "psxrl compat: %s\n", e.what());

@@ -180,22 +180,25 @@ TEST_F(CompatCommand, ReportsEveryProgramOfAFolderWithScreenshotsAndAnHtmlPage) 
   EXPECT_EQ(files, 5u);
 }
 
-// Runs are deterministic: a second report (replacing the first) has the same frame hashes.
+// Runs are deterministic: a second report (replacing the first), its programs run two at a time,
+// has the same frame hashes, and is the same report.
 TEST_F(CompatCommand, TwoRunsGiveTheSameFrameHashes) {
   const fs::path out = dir_ / "report";
-  const std::string args = (progs_ / "compat_picture.exe").string() + " " + (progs_ / "tumble.exe").string() +
-                           " --frames 40 --quiet --out " + out.string();
+  const std::string args = (progs_ / "compat_picture.exe").string() + " " + (progs_ / "tumble.exe").string() + " " +
+                           (progs_ / "hello.exe").string() + " --frames 40 --quiet --out " + out.string();
   ASSERT_EQ(run(args).code, 0);
-  const auto first = rows(slurp(out / "report.md"));
-  ASSERT_EQ(run(args).code, 0);
-  const auto second = rows(slurp(out / "report.md"));
-  ASSERT_EQ(first.size(), 2u);
-  ASSERT_EQ(second.size(), 2u);
-  for (size_t i = 0; i < 2; ++i) {
+  const std::string first_report = slurp(out / "report.md");
+  ASSERT_EQ(run(args + " --jobs 2").code, 0);
+  const std::string second_report = slurp(out / "report.md");
+  const auto first = rows(first_report), second = rows(second_report);
+  ASSERT_EQ(first.size(), 3u);
+  ASSERT_EQ(second.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(first[i][6], second[i][6]) << first[i][0];
     EXPECT_EQ(first[i][6].size(), 18u) << first[i][6];  // `16 hex digits`
   }
   EXPECT_NE(first[0][6], first[1][6]);
+  EXPECT_EQ(first_report, second_report);
   EXPECT_FALSE(fs::exists(out.string() + ".partial-" + std::to_string(::getpid())));
 }
 

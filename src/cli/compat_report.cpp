@@ -160,7 +160,7 @@ CompatReportFolder::CompatReportFolder(const std::string& out) : out_(out) {
   staging_ = out + ".partial-" + std::to_string(::getpid());
   fs::remove_all(staging_, ec);
   if (!fs::create_directories(fs::path(staging_) / "screenshots", ec) || ec)
-    throw psx::InputError::whole(staging_, "cannot create the report folder: " + ec.message());
+    throw psx::InputError::whole(out, "cannot create the report folder (first as " + staging_ + "): " + ec.message());
 }
 
 CompatReportFolder::~CompatReportFolder() {

@@ -83,7 +83,9 @@ CompatRun run_compat(const CompatProgram& program, const CompatSettings& setting
   if (console.exe_pending()) {
     run.booted = CompatRun::Booted::No;
     run.failed = true;
-    if (run.stop.empty()) run.stop = "the BIOS did not reach its shell entry (0x80030000) to load the EXE";
+    if (run.stop.empty())
+      run.stop = "the BIOS did not reach its shell entry (0x80030000) to load the EXE in " +
+                 std::to_string(run.frames) + " frames";
   }
   const psx::Console::Frame frame = console.native_frame();
   run.has_picture = frame.width > 0 && frame.height > 0;

@@ -1,10 +1,11 @@
 // The Tumble environment's steady state for profilers: one environment on level 1, `warmup`
 // moves (the recompiler compiles the level's code then), then `moves` moves inside
-// measured_moves(), the function to give callgrind (`--toggle-collect=measured_moves`) or perf.
+// measured_moves(), the function to give callgrind or perf. It is in an anonymous namespace, so
+// callgrind needs `'--toggle-collect=*measured_moves*'` (the bare name matches nothing).
 // Prints emulated cycles and CPU instructions per move and a hash of RAM, which a change meant to
 // be bit-identical must leave as they were, what idle skipping skipped and what the recompiler
 // compiled. Actions and resets are bench_util.h's, as in env_bench.
-//   valgrind --tool=callgrind --toggle-collect=measured_moves build/bench/env_profile 200 100
+//   valgrind --tool=callgrind '--toggle-collect=*measured_moves*' build/bench/env_profile 200 100
 // With --perf-map as the last argument it also names the compiled blocks for perf, which then
 // reports the time of each (psx_block_<pc>) instead of bare addresses:
 //   perf record -e cpu-clock build/bench/env_profile 200 600 simple --perf-map; perf report

@@ -50,6 +50,19 @@ if [ ! -x .venv-sb3/bin/python ] || ! .venv-sb3/bin/python -c "import stable_bas
   .venv-sb3/bin/python -m pip install -q --no-deps "stable-baselines3==2.4.1" "gymnasium==1.0.0" farama-notifications
 fi
 
+# Ray and RLlib (psxrl.ray, docs/scaling.md; ctest python_ray_tests) also need PyTorch, so they
+# too live over Debian's python3-torch, in .venv-ray of their own: RLlib pins a newer Gymnasium
+# than SB3 2.4 accepts. NumPy stays Debian's 1.24, which torch 1.13 is built against, so pyarrow
+# (imported by Ray Tune, which RLlib uses) is held below 20: 19 works with NumPy 1.24, the newest
+# needs NumPy 2. psutil: the tests check which addresses the cluster listens on.
+RAY_VERSION=2.60.0
+if [ ! -x .venv-ray/bin/python ] || ! .venv-ray/bin/python -c \
+     "import ray, pyarrow, psutil, pytest, torch; assert ray.__version__ == '$RAY_VERSION'" 2>/dev/null; then
+  echo "setup: making .venv-ray (Ray $RAY_VERSION with RLlib over Debian's python3-torch)"
+  /usr/bin/python3 -m venv --system-site-packages .venv-ray
+  .venv-ray/bin/python -m pip install -q "ray[rllib]==$RAY_VERSION" "pyarrow<20" "numpy<2" psutil pytest
+fi
+
 # ccache lets `pip install .` below reuse what this build compiles: the module's build tree
 # compiles the same core and bindings with the same flags, which would otherwise take minutes.
 # CMake takes the launcher from these variables when it first configures a build tree, and

@@ -17,6 +17,7 @@ const char* kHelp =
     "             prints each episode's score, records video (see psxrl play --help)\n"
     "  record     record a play session (inputs, RAM snapshots, marks) for memsearch\n"
     "  memsearch  find a game's variables in a recorded session's RAM (see docs/memsearch.md)\n"
+    "  sweep      train a grid of configurations x seeds on Ray, in Python (see docs/scaling.md)\n"
     "  compat     run programs and discs under the HLE kernel (and a BIOS) and report what works,\n"
     "             with screenshots (see psxrl compat --help, docs/compat.md)\n"
     "\n"
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
   if (cmd == "play") return psxrl::cli::play_command(args);
   if (cmd == "record") return psxrl::cli::record_command(args);
   if (cmd == "memsearch") return psxrl::cli::memsearch_command(args);
+  if (cmd == "sweep") return psxrl::cli::sweep_command(args);
   if (cmd == "compat") return psxrl::cli::compat_command(args);
   std::fprintf(stderr, "psxrl: unknown command '%s'\n\n%s", cmd.c_str(), kHelp);
   return psxrl::cli::kUsage;

@@ -14,7 +14,6 @@
 #include "cli/play.h"
 #include "core/console.h"
 #include "core/input_error.h"
-#include "gpu/gl/gl_renderer.h"
 #include "frontend/keymap.h"
 #include "rl/agents/trainer.h"
 #include "rl/vec_env.h"
@@ -145,7 +144,7 @@ std::string check_options(const PlayOptions& p) {
   if (p.view.record_every < 1) return "--record-every must be at least 1";
   if (p.view.scale < 0) return "--scale must be at least 1";
   if (std::string why = p.render.check(); !why.empty()) return why;
-  if (p.render.renderer == "gl" && p.view.scale > static_cast<int>(psx::gpu::gl::kMaxScale))
+  if (p.render.renderer == "gl" && p.view.scale > static_cast<int>(psx::Console::kMaxRenderScale))
     return "--scale must be 1 to 8 with --renderer gl";
   if (p.policy.empty() && p.headless) return "human play (no --policy) needs the window: drop --headless";
   if (p.policy.empty() && !p.frames_dir.empty()) return "--frames-dir counts a policy's moves: use --record DIR";

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "gpu/png_writer.h"
+#include "util/png_writer.h"
 
 namespace psxrl::cli {
 
@@ -91,7 +91,7 @@ std::vector<std::string> PlayView::finish() {
   }
   std::string error;
   frontend::WindowSize s = window_->picture_size();
-  if (!psx::gpu::write_png_rgb(options_.window_screenshot, window_->picture().data(), static_cast<psx::u32>(s.width),
+  if (!psx::write_png_rgb(options_.window_screenshot, window_->picture().data(), static_cast<psx::u32>(s.width),
                                static_cast<psx::u32>(s.height), error))
     throw std::runtime_error(error);
   lines.push_back("saved the window's last picture (" + std::to_string(s.width) + "x" + std::to_string(s.height) +

@@ -4,8 +4,6 @@
 #include <cstdio>
 
 #include "frontend/sdl_gl_context.h"
-#include "gpu/gl/gl_renderer.h"
-#include "gpu/gl/osmesa_context.h"
 
 namespace psxrl::cli {
 
@@ -19,8 +17,8 @@ void RendererArgs::add_to(CLI::App& app, const char* scale_help) {
 
 std::string RendererArgs::check() const {
   if (renderer != "software" && renderer != "gl") return "--renderer must be software or gl, not '" + renderer + "'";
-  if (scale != 0 && (scale < 1 || scale > static_cast<int>(psx::gpu::gl::kMaxScale)))
-    return "--scale must be 1 to " + std::to_string(psx::gpu::gl::kMaxScale);
+  if (scale != 0 && (scale < 1 || scale > static_cast<int>(psx::Console::kMaxRenderScale)))
+    return "--scale must be 1 to " + std::to_string(psx::Console::kMaxRenderScale);
   return "";
 }
 
@@ -33,24 +31,14 @@ bool RendererArgs::apply(psx::Console& console, int default_scale, std::string& 
   if (renderer != "gl") return true;
   const auto scale = static_cast<psx::u32>(render_scale(default_scale));
   if (display) {
-    std::unique_ptr<psx::gpu::gl::GlRenderer> r;
-    if (auto context = frontend::SdlGlContext::create(error))
-      r = psx::gpu::gl::GlRenderer::create(std::move(context), scale, error);
-    if (r) {
-      console.set_renderer(std::move(r));
-      return true;
-    }
+    auto context = frontend::SdlGlContext::create(error);
+    if (context && console.use_gl_renderer(std::move(context), scale, error)) return true;
     std::fprintf(stderr, "psxrl: SDL2 OpenGL unusable (%s): drawing with OSMesa\n", error.c_str());
     error.clear();
   }
-  auto r = psx::gpu::gl::make_osmesa_renderer(scale, psx::gpu::gl::OsMesaContext::library_from_environment(), error);
-  if (!r) {
-    error = "--renderer gl: OpenGL is not available: " + error +
-            " (install libosmesa6, or use --renderer software)";
-    return false;
-  }
-  console.set_renderer(std::move(r));
-  return true;
+  if (console.use_gl_renderer(scale, error)) return true;
+  error = "--renderer gl: OpenGL is not available: " + error + " (install libosmesa6, or use --renderer software)";
+  return false;
 }
 
 }  // namespace psxrl::cli

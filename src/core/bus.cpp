@@ -258,7 +258,9 @@ u32 Bus::io_read(u32 p, u32 width) {
   if (p >= kExp2Base) {
     // DUART status register A: report the transmitter ready and empty so TTY loops proceed.
     if (p == 0x1F802021) return 0x0C;
-    return 0;
+    // No dev-kit board is fitted: the open bus reads all ones (ps1-tests cpu/io-access-bitwidth,
+    // hardware log: 0x1F802000 reads 0xFFFFFFFF whatever was written).
+    return width == 4 ? 0xFFFFFFFF : (1u << (width * 8)) - 1;
   }
   u32 slot = (p - kIoBase) / 16;
   if (IoDevice* dev = io_[slot]) return dev->io_read(p - io_base_[slot], width);
@@ -266,8 +268,30 @@ u32 Bus::io_read(u32 p, u32 width) {
   return 0;
 }
 
+// The width of the register a port at physical address p holds (psx-spx "I/O Map"): the SIO,
+// timer and SPU registers are 16 bits, the CD-ROM's and expansion 2's 8 bits, the rest 32.
+static u32 io_port_width(u32 p) {
+  if (p >= kExp2Base || (p >= kCdromBase && p < kCdromEnd)) return 1;
+  if ((p >= 0x1F801040 && p < 0x1F801060) || (p >= 0x1F801100 && p < 0x1F801130) || (p >= kSpuBase && p < kSpuEnd))
+    return 2;
+  return 4;
+}
+
+// A CPU store narrower than the register it reaches writes the whole register: the CPU drives its
+// full source register onto the data bus, moved to the addressed byte lane, and the port latches
+// all of its own bits (ps1-tests cpu/io-access-bitwidth, hardware log: SB and SH of 0x12345678 to
+// D0_MADR read back 0x345678, to DPCR 0x12345678, to T0_TARGET 0x5678). `v` is that register.
 void Bus::io_write(u32 p, u32 v, u32 width) {
   catch_up();
+  const u32 port = io_port_width(p);
+  if (width < port) {
+    const u32 lanes = v << ((p & 3) * 8);
+    v = port == 4 ? lanes : (lanes >> ((p & 2) * 8)) & 0xFFFF;
+    p &= ~(port - 1);
+    width = port;
+  } else if (width < 4) {
+    v &= (1u << (width * 8)) - 1;
+  }
   if (p < kIoBase + 0x24) {
     memctrl_[(p - kIoBase) / 4] = v;
     update_read_cycles();

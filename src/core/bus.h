@@ -122,10 +122,13 @@ class Bus {
   bool read_ram_untimed(u32 vaddr, u32& v, u32 width) { return read(vaddr, v, width, false); }
   // Whether code at vaddr runs through the i-cache (KUSEG/KSEG0 with BCC.IS1).
   bool cached_code(u32 vaddr) const { return vaddr < 0xA0000000 && (cache_control_ & kBccIs1); }
+  // For write16() and write8(), v may hold more than the stored bytes: memory takes the low ones,
+  // an I/O register wider than the store takes all it holds (io_write()).
   bool write32(u32 vaddr, u32 v) { return write(vaddr, v, 4); }
   bool write16(u32 vaddr, u32 v) { return write(vaddr, v, 2); }
   bool write8(u32 vaddr, u32 v) { return write(vaddr, v, 1); }
-  // A CPU store of `width` bytes (v holds only those) as write() makes it when vaddr lies in the
+  // A CPU store of `width` bytes (v is the CPU's whole source register: a narrow store to an I/O
+  // register writes all of it, io_write()) as write() makes it when vaddr lies in the
   // I/O region (physical 1F801000h-1F802FFFh); false, with nothing written, anywhere else. For
   // the recompiler's store calls, whose native code makes the RAM and scratchpad stores itself.
   bool write_io(u32 vaddr, u32 v, u32 width);

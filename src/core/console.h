@@ -31,6 +31,7 @@
 #include "core/sio/sio1.h"
 #include "core/state.h"
 #include "core/timers.h"
+#include "gpu/gl/gl_context.h"
 #include "gpu/gpu.h"
 #include "spu/spu.h"
 
@@ -183,6 +184,14 @@ class Console : private CpuHooks {
   // The GPU's drawing backend: the software renderer unless replaced (e.g. by the OpenGL one,
   // gpu/gl/gl_renderer.h, whose frames are `scale` times larger). VRAM carries over.
   void set_renderer(std::unique_ptr<gpu::Renderer> renderer) { gpu_.set_renderer(std::move(renderer)); }
+  // Choosing the renderer, for hosts that see only this face (environments, CLI, Python): the
+  // OpenGL renderer drawing at `scale` (1 to kMaxRenderScale) times the resolution, on OSMesa
+  // (headless; libOSMesa.so.8 loaded at run time unless PSXRL_OSMESA_LIBRARY names another) or on
+  // the host's own `context` (a window's). False with `error` set when OpenGL is unavailable; the
+  // renderer in use then stays.
+  static constexpr u32 kMaxRenderScale = 8;
+  bool use_gl_renderer(u32 scale, std::string& error);
+  bool use_gl_renderer(std::unique_ptr<gpu::gl::GlContext> context, u32 scale, std::string& error);
   Frame frame() const { return {gpu_.display_rgb(), gpu_.display_width(), gpu_.display_height()}; }
   // The same picture at its native size whatever the renderer (observations use this one, so
   // that they do not depend on the renderer or its scale).

@@ -57,25 +57,17 @@ u32 Dma::io_read(u32 offset, u32 width) {
   return v >> shift;
 }
 
-void Dma::io_write(u32 offset, u32 value, u32 width) {
-  u32 reg = offset & ~3u;
-  u32 shift = (offset & 3) * 8;
-  u32 lane = (width == 4 ? 0xFFFFFFFFu : (1u << (width * 8)) - 1) << shift;
-  u32 v = (value << shift) & lane;
+// Every register here is 32 bits wide and the bus hands each CPU store over whole (an SB or SH
+// drives the full register value, Bus::io_write()), so `value` is the register's new value.
+void Dma::io_write(u32 offset, u32 value, u32 /*width*/) {
+  const u32 reg = offset & ~3u;
   if (reg < 0x70) {
-    u32 ch = reg >> 4, r = reg & 0xC;
-    Channel& c = channels_[ch];
-    u32 old = r == 0 ? c.madr : r == 4 ? c.bcr : c.chcr;
-    write_channel(ch, r, (old & ~lane) | v);
-    return;
-  }
-  if (reg == 0x70) {
-    dpcr_ = (dpcr_ & ~lane) | v;
+    write_channel(reg >> 4, reg & 0xC, value);
+  } else if (reg == 0x70) {
+    dpcr_ = value;
     service();
   } else if (reg == 0x74) {
-    // A narrow write acknowledges only the flags inside the bytes it wrote.
-    u32 merged = (dicr_ & ~lane & 0x00FF803F) | v;
-    write_dicr((merged & ~0x7F000000u) | (v & 0x7F000000u));
+    write_dicr(value);
   }
 }
 
@@ -95,7 +87,8 @@ void Dma::write_channel(u32 ch, u32 reg, u32 value) {
   service();
 }
 
-// DICR (psx-spx "DMA Interrupt Register"): bits 0-5 read/write, 6-14 always zero, 15 force IRQ,
+// DICR (psx-spx "DMA Interrupt Register"): bits 0-5 read/write, 6-14 always zero, 15 bus error
+// (read/write: a linked list's unclean end sets it, the CPU may set or clear it; it forces IRQ),
 // 16-22 per-channel enables, 23 master enable; writing 1 to a flag (24-30) clears it.
 void Dma::write_dicr(u32 value) {
   u32 ack = value & 0x7F000000;
@@ -238,7 +231,10 @@ u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
     const u32 count = header >> 24;
     moved += count + 1;
     c.madr = header & 0x00FFFFFF;
-    const bool end = (c.madr & 0x00800000) != 0;  // end marker 0x00FFFFFF (hardware tests bit 23)
+    const bool end = (c.madr & 0x00800000) != 0;  // the hardware tests bit 23 alone
+    // An end marker other than 0x00FFFFFF still ends the list, with the bus error flag raised: on
+    // hardware 0x800000, 0x800001 and 0xFFFFF0 all leave DICR bit 15 set and MADR on the marker.
+    if (end && c.madr != kListEnd) dicr_ |= kDicrBusError;
     if (count) {
       if (uncharged) charge(ch, uncharged), uncharged = 0;
       to_device(ch, addr + 4, count, false);

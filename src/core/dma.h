@@ -46,8 +46,11 @@ class Dma : public IoDevice {
   static constexpr u32 kChcrChopping = 1u << 8;
   static constexpr u32 kChcrBusy = 1u << 24;
   static constexpr u32 kChcrTrigger = 1u << 28;
-  // Linked-list end: any node address with bit 23 set (the conventional marker is 0x00FFFFFF).
+  // Linked-list end: any node address with bit 23 set ends the list, but only 0x00FFFFFF ends it
+  // cleanly; any other sets DICR bit 15 (pcsx-redux src/mips/tests/dma, run on hardware).
   static constexpr u32 kListEnd = 0x00FFFFFF;
+  // DICR bit 15: the bus error flag, read/write, which forces bit 31 while set (psx-spx).
+  static constexpr u32 kDicrBusError = 1u << 15;
 
  private:
   struct Channel {

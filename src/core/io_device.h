@@ -6,8 +6,9 @@
 namespace psx {
 
 // A block with registers in the I/O region. `offset` is relative to the base the block was mapped
-// at; `width` is the access size in bytes (1, 2 or 4). Each block implements the documented
-// behaviour of narrow and wide accesses to its own registers.
+// at; `width` is the access size in bytes (1, 2 or 4). A CPU store narrower than the register it
+// reaches arrives as a write of the whole register (Bus::io_write()); each block implements the
+// documented behaviour of the other accesses to its own registers.
 class IoDevice {
  public:
   virtual ~IoDevice() = default;

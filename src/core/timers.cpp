@@ -257,8 +257,11 @@ void Timers::io_write(u32 offset, u32 value, u32 width) {
       const bool wanted = wants_hblank();
       if (video_ && !wanted) hblank_ = video_->hblank_now();
       c.mode = static_cast<u16>((v & 0x3FF) | kIntf | (c.mode & (kEquf | kOvff)));
+      // The very next source tick counts: with timer 1 on HBlanks and timer 0 on dots, reset
+      // together, a console reads 341 dots a line in 256-pixel NTSC mode (pcsx-redux
+      // src/mips/tests/timers, run on hardware), where a held first tick would give 348.
       c.value = 0;
-      c.hold = true;
+      c.hold = false;
       c.irq_done = false;
       c.released = false;
       // Timer 1 counts the HBlanks from here (catch_up() counted up to now for the old mode).

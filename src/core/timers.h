@@ -53,8 +53,8 @@ class Timers : public IoDevice, public VideoSignals {
     u16 value = 0;
     u16 mode = kIntf;
     u16 target = 0;
-    // The counter holds its value for one extra tick after a MODE or COUNT write and after a
-    // reset at COMP (psx-spx "Reset and Wrap").
+    // The counter holds its value for one extra tick after a COUNT write and after a reset at
+    // COMP (psx-spx "Reset and Wrap"); not after a MODE write, on hardware (timers.cpp).
     bool hold = false;
     bool irq_done = false;  // one-shot mode: the IRQ has fired since the last MODE write
     bool released = false;  // sync mode 3: the blank has occurred, counting freely now

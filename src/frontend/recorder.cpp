@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "core/console.h"
-#include "gpu/png_writer.h"
+#include "util/png_writer.h"
 
 namespace psxrl::frontend {
 
@@ -65,7 +65,7 @@ void Recorder::frame(const psx::u8* rgb, int width, int height, std::span<const 
   char name[32];
   std::snprintf(name, sizeof name, "frame%06llu.png", static_cast<unsigned long long>(frames_));
   std::string error;
-  if (!psx::gpu::write_png_rgb((std::filesystem::path(target_) / name).string(), rgb, static_cast<psx::u32>(width),
+  if (!psx::write_png_rgb((std::filesystem::path(target_) / name).string(), rgb, static_cast<psx::u32>(width),
                                static_cast<psx::u32>(height), error))
     throw std::runtime_error(error);
   width_ = width;

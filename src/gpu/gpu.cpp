@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <utility>
 
-#include "gpu/png_writer.h"
 #include "gpu/software_renderer.h"
 #include "gpu/vram.h"
+#include "util/png_writer.h"
 
 namespace psx {
 
@@ -257,11 +257,11 @@ bool Gpu::write_display_png(const std::string& path, std::string& error) const {
   draw_.flush();
   gpu::FrameOutput now;
   now.refresh(*renderer_, display_area());
-  return gpu::write_png_rgb(path, now.rgb(), now.width(), now.height(), error);
+  return write_png_rgb(path, now.rgb(), now.width(), now.height(), error);
 }
 
 bool Gpu::write_vram_png(const std::string& path, std::string& error) {
-  return gpu::write_png_rgb(path, vram_rgb(), gpu::kVramWidth, gpu::kVramHeight, error);
+  return write_png_rgb(path, vram_rgb(), gpu::kVramWidth, gpu::kVramHeight, error);
 }
 
 void Gpu::do_state(StateIO& s) {

@@ -9,8 +9,6 @@
 
 #include "core/console.h"
 #include "core/sio/pad_names.h"
-#include "gpu/gl/gl_renderer.h"
-#include "gpu/gl/osmesa_context.h"
 #include "python/bindings.h"
 
 namespace py = pybind11;
@@ -27,16 +25,15 @@ struct PyConsole {
     console.on_tty = [this](char c) { tty.push_back(c); };
     if (renderer != "software" && renderer != "gl")
       throw py::value_error("renderer: 'software' or 'gl', not '" + renderer + "'");
-    if (scale < 1 || scale > psx::gpu::gl::kMaxScale)
-      throw py::value_error("scale: 1 to " + std::to_string(psx::gpu::gl::kMaxScale) + ", not " + std::to_string(scale));
+    if (scale < 1 || scale > psx::Console::kMaxRenderScale)
+      throw py::value_error("scale: 1 to " + std::to_string(psx::Console::kMaxRenderScale) + ", not " + std::to_string(scale));
     if (renderer == "software") {
       if (scale != 1) throw py::value_error("scale: the software renderer draws at 1; use renderer='gl'");
       return;
     }
     std::string error;
-    auto r = psx::gpu::gl::make_osmesa_renderer(scale, psx::gpu::gl::OsMesaContext::library_from_environment(), error);
-    if (!r) throw std::runtime_error("renderer 'gl': OpenGL is not available: " + error);
-    console.set_renderer(std::move(r));
+    if (!console.use_gl_renderer(scale, error))
+      throw std::runtime_error("renderer 'gl': OpenGL is not available: " + error);
   }
 };
 

@@ -8,8 +8,6 @@
 
 #include "core/console.h"
 #include "core/sha1.h"
-#include "gpu/gl/gl_renderer.h"
-#include "gpu/gl/osmesa_context.h"
 #include "lua/lua_host.h"
 
 #ifndef PSXRL_GAMES_DIR
@@ -122,14 +120,12 @@ void Env::use_renderer() {
   if (config_.renderer == "software" && config_.scale == 1) return;
   if (config_.renderer != "software" && config_.renderer != "gl")
     throw std::invalid_argument("renderer: 'software' or 'gl', not '" + config_.renderer + "'");
-  if (config_.scale < 1 || config_.scale > psx::gpu::gl::kMaxScale)
+  if (config_.scale < 1 || config_.scale > psx::Console::kMaxRenderScale)
     throw std::invalid_argument("scale: 1 to 8, not " + std::to_string(config_.scale));
   if (config_.renderer == "software") throw std::invalid_argument("scale: the software renderer draws at 1; use 'gl'");
   std::string error;
-  auto r = psx::gpu::gl::make_osmesa_renderer(config_.scale, psx::gpu::gl::OsMesaContext::library_from_environment(),
-                                              error);
-  if (!r) throw std::runtime_error("renderer 'gl': OpenGL is not available: " + error);
-  console_->set_renderer(std::move(r));
+  if (!console_->use_gl_renderer(config_.scale, error))
+    throw std::runtime_error("renderer 'gl': OpenGL is not available: " + error);
 }
 
 void Env::boot() {

@@ -36,3 +36,9 @@ psx_add_rom_test(cpu_icache_code SOURCES cpu_icache_code.c cpu_icache.S bios_cal
 psx_add_exe(cpu_dcache_hang SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/cpu_dcache_hang.c)
 psx_add_run_test(rom.cpu_dcache_hang CODE 3 OUTPUT "scratchpad access at 0x1F800000 in data-cache mode hangs the bus"
   RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_dcache_hang.exe --frames 60 --expect-exit)
+# Narrow stores to I/O registers (issue 59 item 6): 3 word registers x 3 for RAM, scratchpad and
+# expansion 2, + 2 narrow reads of expansion 2, + 3 DMA registers x 3, + 4 halfword registers x 2
+# = 9 + 2 + 9 + 8 = 28. Run by both CPUs: the recompiler's I/O stores take their own path.
+psx_add_rom_test(cpu_io_width SOURCES cpu_io_width.c CHECKS 28)
+psx_add_run_test(rom.cpu_io_width_recompiler CODE 0 CHECKS 28
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_io_width.exe --frames 600 --expect-exit --cpu recompiler)

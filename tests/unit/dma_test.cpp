@@ -315,10 +315,14 @@ TEST_F(DmaTest, LinkedListEndsAtAnyNextAddressWithBit23) {
     gpu.received.clear();
     set_ram32(0x100, 0x01000000 | marker);  // one word, then the end
     set_ram32(0x104, 0xC0DE0000 | (marker & 0xFF));
+    w(kDicr, 0);
     w(reg(2, kBcr), 0x00123456);
     w(reg(2, kMadr), 0x100);
     w(reg(2, kChcr), 0x01000401);  // linked list, from RAM, start
     EXPECT_EQ(gpu.received, std::vector<u32>{0xC0DE0000 | (marker & 0xFF)}) << std::hex << marker;
+    // Only 0xFFFFFF ends it cleanly; any other marker raises the bus error flag, bit 15, which
+    // forces bit 31 (pcsx-redux src/mips/tests/dma, run on hardware).
+    EXPECT_EQ(r(kDicr), marker == 0xFFFFFF ? 0u : 0x80008000u) << std::hex << marker;
     EXPECT_EQ(r(reg(2, kMadr)), marker) << std::hex << marker;
     EXPECT_EQ(r(reg(2, kBcr)), 0x00123456u) << std::hex << marker;
     EXPECT_EQ(r(reg(2, kChcr)), 0x00000401u) << std::hex << marker;

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <vector>
 
-#include "gpu/png_writer.h"
+#include "util/png_writer.h"
 #include "gpu_test_util.h"
 #include "temp_files.h"
 

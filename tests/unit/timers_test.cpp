@@ -1,7 +1,9 @@
 // Root counter tests. Expected counts come from psx-spx "Timers" and "GPU Timings" and the clock
 // ratios: the dot clock is the video clock (NTSC 53.693175 MHz after reset) over the divider, 10
-// video clocks per dot in 256-pixel mode; a MODE or COUNT write holds the counter for one extra
-// clock, and a reset at COMP holds 0 for two clocks.
+// video clocks per dot in 256-pixel mode; a COUNT write holds the counter for one extra clock,
+// and a reset at COMP holds 0 for two clocks. After a MODE write the very first tick counts: on
+// hardware (pcsx-redux src/mips/tests/timers) timers 0 and 1 reset together measure 341 dots a
+// line in 256-pixel NTSC mode, which a held first HBlank would turn into 348.
 #include <gtest/gtest.h>
 
 #include "core/irq.h"
@@ -39,21 +41,22 @@ class TimersTest : public ::testing::Test {
 
 TEST_F(TimersTest, SysclockCountsFromModeWrite) {
   set_mode(2, 0);
-  // psx-spx: after a MODE write the counter stays 0 for 2 clocks, then counts one per clock.
+  // The first clock after a MODE write counts (see the header comment).
   EXPECT_EQ(count(2), 0u);
   at(1);
-  EXPECT_EQ(count(2), 0u);
-  at(2);
   EXPECT_EQ(count(2), 1u);
+  at(2);
+  EXPECT_EQ(count(2), 2u);
   at(1000);
-  EXPECT_EQ(count(2), 999u);
+  EXPECT_EQ(count(2), 1000u);
 }
 
-TEST_F(TimersTest, ZretSequenceMatchesPsxSpxExample) {
+TEST_F(TimersTest, ZretSequenceHoldsZeroAfterComp) {
   t.io_write(reg(0, kTarget), 1, 2);
   set_mode(0, Timers::kZret);
-  // psx-spx "Reset and Wrap", COMP = 1 with ZRET: 0, 0, 1, 0, 0, 1.
-  const u32 expect[] = {0, 0, 1, 0, 0, 1, 0, 0, 1};
+  // psx-spx "Reset and Wrap", COMP = 1 with ZRET: 0, 0, 1, 0, 0, 1 once counting, the reset to 0
+  // held a tick; from the MODE write the first tick counts.
+  const u32 expect[] = {0, 1, 0, 0, 1, 0, 0, 1, 0};
   for (u32 c = 0; c < 9; ++c) {
     at(c);
     EXPECT_EQ(count(0), expect[c]) << "cycle " << c;
@@ -63,10 +66,10 @@ TEST_F(TimersTest, ZretSequenceMatchesPsxSpxExample) {
 TEST_F(TimersTest, ZretLongIntervalWithoutIrq) {
   t.io_write(reg(1, kTarget), 9, 2);
   set_mode(1, Timers::kZret);
-  // Value(t) = t-1 up to COMP at t=10; after that a period of COMP+2 = 11 starting at t=11 with
-  // values 0,0,1..9. t=1000: (1000-11) mod 11 = 10 -> 9.
-  at(1000);
-  EXPECT_EQ(count(1), 9u);
+  // Value(t) = t up to COMP at t=9; after that a period of COMP+2 = 11 starting at t=10 with
+  // values 0,0,1..9. t=1004: (1004-10) mod 11 = 4 -> 3.
+  at(1004);
+  EXPECT_EQ(count(1), 3u);
   EXPECT_NE(mode(1) & Timers::kEquf, 0u);
   EXPECT_EQ(mode(1) & Timers::kOvff, 0u);  // never reached 0xFFFF
 }
@@ -74,16 +77,16 @@ TEST_F(TimersTest, ZretLongIntervalWithoutIrq) {
 TEST_F(TimersTest, TargetIrqRepeatPulseOnExactCycle) {
   t.io_write(reg(0, kTarget), 50, 2);
   set_mode(0, Timers::kZret | Timers::kCmp | Timers::kRept);
-  // COMP reached at t = 50 + 1 (hold) = 51, then every 52 clocks.
-  at(50);
+  // COMP reached at t = 50, then every 52 clocks (0 held for two).
+  at(49);
   EXPECT_FALSE(irq_line(0));
-  at(51);
+  at(50);
   EXPECT_TRUE(irq_line(0));
   EXPECT_NE(mode(0) & Timers::kIntf, 0u);  // pulse: INTF reads back 1
   ack();
-  at(102);
+  at(101);
   EXPECT_FALSE(irq_line(0));
-  at(103);
+  at(102);
   EXPECT_TRUE(irq_line(0));
 }
 
@@ -91,14 +94,14 @@ TEST_F(TimersTest, ToggleModeRaisesEverySecondEvent) {
   t.io_write(reg(1, kTarget), 50, 2);
   set_mode(1, Timers::kZret | Timers::kCmp | Timers::kRept | Timers::kLevl);
   EXPECT_NE(mode(1) & Timers::kIntf, 0u);  // set by the MODE write
-  at(51);
+  at(50);
   EXPECT_TRUE(irq_line(1));
   EXPECT_EQ(mode(1) & Timers::kIntf, 0u);
   ack();
-  at(103);
+  at(102);
   EXPECT_FALSE(irq_line(1));  // INTF went 0 -> 1: no IRQ
   EXPECT_NE(mode(1) & Timers::kIntf, 0u);
-  at(155);
+  at(154);
   EXPECT_TRUE(irq_line(1));
 }
 
@@ -151,24 +154,24 @@ TEST_F(TimersTest, CountAboveTargetRunsThroughWrapFirst) {
 
 TEST_F(TimersTest, Timer2DividesBy8) {
   set_mode(2, Timers::kPscl);
-  // Ticks at t = 8, 16, ...; the first is held.
+  // Ticks at t = 8, 16, ...
   at(807);
-  EXPECT_EQ(count(2), 99u);
-  at(808);
   EXPECT_EQ(count(2), 100u);
+  at(808);
+  EXPECT_EQ(count(2), 101u);
 }
 
 TEST_F(TimersTest, Timer0Dotclock) {
   set_mode(0, Timers::kExtc);
   // 256-pixel mode: a dot per 10 NTSC video clocks = 338688000/53693175 CPU clocks. 7000 clocks:
-  // floor(7000 * 53693175 / 338688000) = floor(1109.7) = 1109 dots, the first held.
+  // floor(7000 * 53693175 / 338688000) = floor(1109.7) = 1109 dots.
   at(7000);
-  EXPECT_EQ(count(0), 1108u);
+  EXPECT_EQ(count(0), 1109u);
   // Dot k falls on cycle ceil(k * 338688000 / 53693175): dot 1110 at 7002.
   at(7001);
-  EXPECT_EQ(count(0), 1108u);
-  at(7002);
   EXPECT_EQ(count(0), 1109u);
+  at(7002);
+  EXPECT_EQ(count(0), 1110u);
 }
 
 TEST_F(TimersTest, Timer0DotclockFollowsDivider) {
@@ -177,9 +180,9 @@ TEST_F(TimersTest, Timer0DotclockFollowsDivider) {
   // psx-spx: 320pix/NTSC has 3413/8 = 426.625 dots per 3413-cycle line, so 8 lines are 3413
   // dots; 8 lines are 8 * 3413 * 33868800 / 53693175 = 17222.93 CPU cycles.
   at(17222);
-  EXPECT_EQ(count(0), 3411u);  // 3412 dots, the first held
-  at(17223);
   EXPECT_EQ(count(0), 3412u);
+  at(17223);
+  EXPECT_EQ(count(0), 3413u);
 }
 
 TEST_F(TimersTest, Timer0DotclockPal) {
@@ -188,9 +191,9 @@ TEST_F(TimersTest, Timer0DotclockPal) {
   // psx-spx: 320pix/PAL has 3406/8 = 425.75 dots per 3406-cycle line: 4 lines are 1703 dots in
   // 4 * 3406 * 33868800 / 53203425 = 8672.91 CPU cycles.
   at(8672);
-  EXPECT_EQ(count(0), 1701u);
-  at(8673);
   EXPECT_EQ(count(0), 1702u);
+  at(8673);
+  EXPECT_EQ(count(0), 1703u);
 }
 
 // A video clock whose HBlanks start at cycles 100, 220, 340, ... (every 120 cycles; the real
@@ -209,38 +212,38 @@ TEST_F(TimersTest, Timer1CountsHblanks) {
   at(50);
   set_mode(1, Timers::kExtc);
   at(579);
-  EXPECT_EQ(count(1), 3u);  // HBlanks at 100, 220, 340, 460: the first held
+  EXPECT_EQ(count(1), 4u);  // HBlanks at 100, 220, 340, 460
   at(580);
-  EXPECT_EQ(count(1), 4u);
+  EXPECT_EQ(count(1), 5u);
   at(580 + 10 * 120);
-  EXPECT_EQ(count(1), 14u);
-  // From a MODE write on, only later HBlanks count (the held one first).
+  EXPECT_EQ(count(1), 15u);
+  // From a MODE write on (at 1780, an HBlank's cycle), only later HBlanks count: 1900 and 2020.
   set_mode(1, Timers::kExtc);
   at(580 + 12 * 120);
-  EXPECT_EQ(count(1), 1u);
+  EXPECT_EQ(count(1), 2u);
 }
 
 TEST_F(TimersTest, Timer1HblankIrqOnTheHblankThatReachesComp) {
-  // COMP 3 after the held tick: the 4th HBlank after the MODE write at 50 (at 460) reaches it,
-  // and the IRQ comes on that cycle, from the timers' own event (no event per HBlank).
+  // COMP 3: the 3rd HBlank after the MODE write at 50 (at 340) reaches it, and the IRQ comes on
+  // that cycle, from the timers' own event (no event per HBlank).
   EvenHblanks video;
   t.set_video_clock(&video);
   at(50);
   t.io_write(reg(1, kTarget), 3, 2);
   set_mode(1, Timers::kExtc | Timers::kCmp | Timers::kZret | Timers::kRept);
-  EXPECT_EQ(sched.when(sched.find("timers")), 460u);
-  at(459);
+  EXPECT_EQ(sched.when(sched.find("timers")), 340u);
+  at(339);
   EXPECT_FALSE(irq_line(1));
-  at(460);
+  at(340);
   EXPECT_TRUE(irq_line(1));
   ack();
-  // A reset at COMP holds 0 for two ticks (psx-spx "Reset and Wrap"): the HBlanks at 580 and 700
-  // leave it at 0, those at 820, 940 and 1060 count to 3.
-  EXPECT_EQ(sched.when(sched.find("timers")), 1060u);
-  at(1059);
+  // A reset at COMP holds 0 for two ticks (psx-spx "Reset and Wrap"): the HBlanks at 460 and 580
+  // leave it at 0, those at 700, 820 and 940 count to 3.
+  EXPECT_EQ(sched.when(sched.find("timers")), 940u);
+  at(939);
   EXPECT_FALSE(irq_line(1));
   EXPECT_EQ(count(1), 2u);
-  at(1060);
+  at(940);
   EXPECT_TRUE(irq_line(1));
 }
 
@@ -251,7 +254,7 @@ TEST_F(TimersTest, SyncMode0PausesDuringHblank) {
   at(150);
   t.hblank_changed(false);
   at(250);
-  EXPECT_EQ(count(0), 199u);  // 100 + 100 counted clocks, the first held
+  EXPECT_EQ(count(0), 200u);  // 100 + 100 counted clocks
 }
 
 TEST_F(TimersTest, SyncMode1ResetsAtHblank) {
@@ -281,7 +284,7 @@ TEST_F(TimersTest, SyncMode3WaitsForFirstBlank) {
   at(110);
   t.vblank_changed(false);
   at(200);
-  EXPECT_EQ(count(1), 99u);  // free from t=100, first clock held
+  EXPECT_EQ(count(1), 100u);  // free from t=100
 }
 
 TEST_F(TimersTest, Timer1SyncMode0PausesDuringVblank) {
@@ -291,7 +294,7 @@ TEST_F(TimersTest, Timer1SyncMode0PausesDuringVblank) {
   at(300);
   t.vblank_changed(false);
   at(400);
-  EXPECT_EQ(count(1), 199u);
+  EXPECT_EQ(count(1), 200u);
 }
 
 TEST_F(TimersTest, Timer2SyncModes) {
@@ -300,7 +303,7 @@ TEST_F(TimersTest, Timer2SyncModes) {
   EXPECT_EQ(count(2), 0u);
   set_mode(2, Timers::kGatf | (1 << 1));  // free run
   at(200);
-  EXPECT_EQ(count(2), 99u);
+  EXPECT_EQ(count(2), 100u);
 }
 
 TEST_F(TimersTest, SaveStateRoundTripMidCount) {

@@ -25,7 +25,11 @@ void gpu_init(Gpu *gpu) {
 }
 
 void gpu_upload(int x, int y, int w, int h, const uint16_t *data) {
-  gp1(0x04000001);                  /* GP1(04h) DMA direction FIFO: GPUSTAT.25 = FIFO not full */
+  /* The words go by CPU writes, not DMA: direction off, and each word waits for GPUSTAT.28 (ready
+     to receive a DMA block, whatever the direction; psx-spx "GPU Status Register"), as the SDKs'
+     uploads do. GPUSTAT.25 means "FIFO not full" only in direction 1, which some emulators never
+     set there, dropping every glyph. */
+  gp1(0x04000000);                  /* GP1(04h) DMA direction off */
   gp0_wait();
   GPU_GP0 = 0x01000000;             /* GP0(01h) clear texture cache */
   gp0_wait();
@@ -34,7 +38,7 @@ void gpu_upload(int x, int y, int w, int h, const uint16_t *data) {
   GPU_GP0 = gpu_xy(w, h);
   uint32_t words = ((uint32_t)w * (uint32_t)h + 1) / 2;
   for (uint32_t i = 0; i < words; ++i) {
-    if (!gpu_wait(1u << 25)) return;
+    if (!gpu_wait(GPUSTAT_READY_DMA)) return;
     uint32_t lo = data[2 * i];
     uint32_t hi = 2 * i + 1 < (uint32_t)w * (uint32_t)h ? data[2 * i + 1] : 0;
     GPU_GP0 = lo | hi << 16;

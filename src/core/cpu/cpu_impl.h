@@ -281,7 +281,8 @@ void CpuT<BusT>::store(u32 instr, u32 width) {
     bus_.isolated_store(addr, v);
     return;
   }
-  bool ok = width == 4 ? bus_.write32(addr, v) : width == 2 ? bus_.write16(addr, v & 0xFFFF) : bus_.write8(addr, v & 0xFF);
+  // The whole register goes to the bus: memory takes the low bytes, an I/O register all of it.
+  bool ok = width == 4 ? bus_.write32(addr, v) : width == 2 ? bus_.write16(addr, v) : bus_.write8(addr, v);
   if (!ok) exception(Exception::BusData);
 }
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "gpu/png_writer.h"
 #include "rl/agents/plot_font.h"
+#include "util/png_writer.h"
 
 namespace psxrl::agents {
 
@@ -172,7 +172,7 @@ RgbImage render_learning_curve(const std::vector<EpisodeRecord>& records) {
 void write_learning_curve(const std::string& path, const std::vector<EpisodeRecord>& records) {
   RgbImage image = render_learning_curve(records);
   std::string error;
-  if (!psx::gpu::write_png_rgb(path, image.rgb.data(), image.width, image.height, error)) throw std::runtime_error(error);
+  if (!psx::write_png_rgb(path, image.rgb.data(), image.width, image.height, error)) throw std::runtime_error(error);
 }
 
 }  // namespace psxrl::agents

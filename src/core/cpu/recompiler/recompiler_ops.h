@@ -152,13 +152,12 @@ u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address) {
   return v;
 }
 
-// What CpuT::store() does past its checks: the register's low bytes to the port (Bus::write());
-// false where the address is no I/O port.
+// What CpuT::store() does past its checks: the whole register to the port (Bus::write(), which
+// lets a narrow store write all of an I/O register); false where the address is no I/O port.
 template <class BusT>
 template <NativeOp K>
 bool RecompilerT<BusT>::port_write(Cpu& c, u32 address, u32 value) {
-  constexpr u32 width = access_width(K);
-  return c.bus_.write_io(address, width == 4 ? value : value & ((1u << (width * 8)) - 1), width);
+  return c.bus_.write_io(address, value, access_width(K));
 }
 
 // A native I/O load's access (Impl::io_access()): port_read(), the native code having made

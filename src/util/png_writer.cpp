@@ -1,5 +1,5 @@
 // PNG writer: libpng encodes into memory, the project's atomic file writer puts it on disk.
-#include "gpu/png_writer.h"
+#include "util/png_writer.h"
 
 #include <png.h>
 
@@ -8,7 +8,7 @@
 
 #include "core/atomic_file.h"
 
-namespace psx::gpu {
+namespace psx {
 namespace {
 
 void append(png_structp png, png_bytep data, png_size_t n) {
@@ -58,4 +58,4 @@ bool write_png_rgb(const std::string& path, const u8* rgb, u32 width, u32 height
   return true;
 }
 
-}  // namespace psx::gpu
+}  // namespace psx

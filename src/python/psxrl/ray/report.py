@@ -1,0 +1,123 @@
+"""A sweep's gathered results: one table row per run from its own metrics.csv (runs.csv and
+runs.md in the sweep folder, the Markdown with a mean and spread per configuration too) and one
+figure of test-episode learning curves, the mean over seeds and the min-max band per configuration.
+"""
+import csv
+import statistics
+from pathlib import Path
+
+COLUMNS = ["episodes", "test_episodes", "moves", "training_moves", "best_test_score", "last_test_score",
+           "mean_test_score", "test_wins", "first_test_win", "seconds"]
+
+
+def table_path(sweep):
+    return sweep.out / "runs.csv"
+
+
+def figure_path(sweep):
+    return sweep.out / "learning_curves.png"
+
+
+def read_metrics(folder):
+    """The rows of a run's metrics.csv (psxrl train's columns), [] before its first episode."""
+    path = Path(folder) / "metrics.csv"
+    if not path.is_file():
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def summarise(rows):
+    """The table's figures for one run's metrics rows (test scores: greedy test episodes only)."""
+    tests = [r for r in rows if r["kind"] == "test"]
+    scores = [int(r["score"]) for r in tests]
+    wins = [int(r["episode"]) for r in tests if r["outcome"] == "win"]
+    return {
+        "episodes": len(rows),
+        "test_episodes": len(tests),
+        "moves": sum(int(r["moves"]) for r in rows),
+        "training_moves": int(rows[-1]["total_moves"]) if rows else 0,
+        "best_test_score": max(scores) if scores else "",
+        "last_test_score": scores[-1] if scores else "",
+        "mean_test_score": round(statistics.fmean(scores), 3) if scores else "",
+        "test_wins": len(wins),
+        "first_test_win": wins[0] if wins else "",
+        "seconds": round(sum(float(r["seconds"]) for r in rows), 3),
+    }
+
+
+def gather(sweep):
+    """One dict per run: configuration, seed, grid values, status and the summary figures."""
+    from .sweep import finished
+
+    table = []
+    for r in sweep.runs:
+        status = "finished" if finished(r.folder) else "incomplete"
+        row = {"config": r.config, "seed": r.seed, **{k: r.grid[k] for k in sweep.grid_keys}, "status": status}
+        row.update(summarise(read_metrics(r.folder)))
+        row["folder"] = str(r.folder)
+        table.append(row)
+    return table
+
+
+def _markdown(sweep, table):
+    lines = [f"# Sweep {sweep.path.name}", "", "## Per configuration (mean ± standard deviation over seeds)", "",
+             "| configuration | runs | best test score | last test score | test wins | moves |",
+             "| --- | --- | --- | --- | --- | --- |"]
+    for config in dict.fromkeys(row["config"] for row in table):
+        rows = [row for row in table if row["config"] == config]
+        cells = []
+        for key in ("best_test_score", "last_test_score", "test_wins", "moves"):
+            values = [float(row[key]) for row in rows if row[key] != ""]
+            spread = statistics.stdev(values) if len(values) > 1 else 0.0
+            cells.append(f"{statistics.fmean(values):.1f} ± {spread:.1f}" if values else "-")
+        lines.append(f"| {config} | {len(rows)} | " + " | ".join(cells) + " |")
+    keys = ["config", "seed", "status"] + COLUMNS
+    lines += ["", "## Runs", "", "| " + " | ".join(keys) + " |", "|" + " --- |" * len(keys)]
+    lines += ["| " + " | ".join(str(row[k]) for k in keys) + " |" for row in table]
+    return "\n".join(lines) + "\n"
+
+
+def _figure(sweep, path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(8, 4.5), dpi=100)
+    for config in dict.fromkeys(r.config for r in sweep.runs):
+        curves = []
+        for r in (r for r in sweep.runs if r.config == config):
+            tests = [row for row in read_metrics(r.folder) if row["kind"] == "test"]
+            curves.append({int(row["episode"]): int(row["score"]) for row in tests})
+        episodes = sorted(set().union(*curves))
+        if not episodes:
+            continue
+        # Runs of one configuration test at the same episodes; a shorter run just stops adding.
+        scores = [[c[e] for c in curves if e in c] for e in episodes]
+        mean = [statistics.fmean(s) for s in scores]
+        line, = ax.plot(episodes, mean, label=config)
+        ax.fill_between(episodes, [min(s) for s in scores], [max(s) for s in scores], color=line.get_color(),
+                        alpha=0.2, linewidth=0)
+    ax.set_xlabel("episode")
+    ax.set_ylabel("test episode score (mean over seeds, band: min to max)")
+    ax.set_title(f"{sweep.path.name}: {len(sweep.seeds)} seeds per configuration")
+    ax.grid(alpha=0.3)
+    if ax.lines:
+        ax.legend(fontsize="small")
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def write(sweep):
+    """Writes runs.csv, runs.md and learning_curves.png into the sweep folder; returns the table."""
+    table = gather(sweep)
+    keys = ["config", "seed", *sweep.grid_keys, "status", *COLUMNS, "folder"]
+    with open(table_path(sweep), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=keys)
+        writer.writeheader()
+        writer.writerows(table)
+    (sweep.out / "runs.md").write_text(_markdown(sweep, table))
+    _figure(sweep, figure_path(sweep))
+    return table

@@ -32,6 +32,10 @@ std::uint64_t distinct_colours(const psx::Console::Frame& frame) {
 
 namespace {
 
+// How long a BIOS may take to reach its shell entry before an EXE counts as not booted: 20 s of
+// NTSC video, several times what a BIOS's intro takes.
+constexpr std::uint64_t kBiosBootFrames = 1200;
+
 // Loads the program into `console` as `psxrl run` would. Returns whether it started (Yes or No)
 // or whether the BIOS is to find it on the disc itself (Unknown); throws InputError.
 CompatRun::Booted boot(psx::Console& console, const CompatProgram& program, const CompatSettings& settings) {
@@ -71,13 +75,20 @@ CompatRun run_compat(const CompatProgram& program, const CompatSettings& setting
   // Headless, silent: the picture is converted when asked for at the end, the same bits.
   console.set_pixels_observed(false);
   console.set_sound_observed(false);
+  // With a BIOS an EXE starts when the BIOS reaches its shell entry: the frames before that are
+  // the BIOS's own, so the program's frames are counted from its start, as under the HLE kernel,
+  // and the two runs end on the same frame of the program.
+  // The frame in which the BIOS hands over is counted as the BIOS's.
+  std::uint64_t bios_frames = 0;
   try {
-    console.run_frames(settings.frames);
+    while (console.exe_pending() && console.frames() < kBiosBootFrames && !console.stopped()) console.run_frame();
+    bios_frames = console.frames();
+    if (!console.exe_pending()) console.run_frames(settings.frames);
   } catch (const std::exception& e) {
     run.stop = std::string("emulator error: ") + e.what();
     run.failed = true;
   }
-  run.frames = console.frames();
+  run.frames = console.frames() - bios_frames;
   if (run.stop.empty()) judge_stop(console, run);
   // An EXE still waiting for the BIOS's shell entry was never side-loaded: it did not boot.
   if (console.exe_pending()) {
@@ -85,7 +96,7 @@ CompatRun run_compat(const CompatProgram& program, const CompatSettings& setting
     run.failed = true;
     if (run.stop.empty())
       run.stop = "the BIOS did not reach its shell entry (0x80030000) to load the EXE in " +
-                 std::to_string(run.frames) + " frames";
+                 std::to_string(bios_frames) + " frames";
   }
   const psx::Console::Frame frame = console.native_frame();
   run.has_picture = frame.width > 0 && frame.height > 0;

@@ -42,8 +42,10 @@ struct CompatRun {
   std::uint64_t frame_hash = 0;
 };
 
-// Runs `program` for settings.frames frames (less if it stops) and, when it got as far as a
-// picture, writes that picture as PNG to `screenshot` (an InputError names an unwritable file).
+// Runs `program` for settings.frames frames (less if it stops), counted from the program's start
+// (an EXE under a BIOS starts when the BIOS reaches its shell entry, given up to 1200 frames), and,
+// when it got as far as a picture, writes that picture as PNG to `screenshot` (an InputError
+// names an unwritable file).
 CompatRun run_compat(const CompatProgram& program, const CompatSettings& settings, const std::string& screenshot);
 
 // FNV-1a (64-bit) over the picture's size and its RGB888 pixels, and the number of distinct RGB

@@ -20,5 +20,6 @@ int play_command(const std::vector<std::string>& args);
 int record_command(const std::vector<std::string>& args);
 int memsearch_command(const std::vector<std::string>& args);
 int sweep_command(const std::vector<std::string>& args);
+int compat_command(const std::vector<std::string>& args);
 
 }  // namespace psxrl::cli

@@ -18,6 +18,8 @@ const char* kHelp =
     "  record     record a play session (inputs, RAM snapshots, marks) for memsearch\n"
     "  memsearch  find a game's variables in a recorded session's RAM (see docs/memsearch.md)\n"
     "  sweep      train a grid of configurations x seeds on Ray, in Python (see docs/scaling.md)\n"
+    "  compat     run programs and discs under the HLE kernel (and a BIOS) and report what works,\n"
+    "             with screenshots (see psxrl compat --help, docs/compat.md)\n"
     "\n"
     "exit codes:\n"
     "  0  success\n"
@@ -43,6 +45,7 @@ int main(int argc, char** argv) {
   if (cmd == "record") return psxrl::cli::record_command(args);
   if (cmd == "memsearch") return psxrl::cli::memsearch_command(args);
   if (cmd == "sweep") return psxrl::cli::sweep_command(args);
+  if (cmd == "compat") return psxrl::cli::compat_command(args);
   std::fprintf(stderr, "psxrl: unknown command '%s'\n\n%s", cmd.c_str(), kHelp);
   return psxrl::cli::kUsage;
 }

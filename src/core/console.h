@@ -59,6 +59,9 @@ class Console : private CpuHooks {
   // the HLE kernel loads it at once. Throws InputError for a defective file.
   void boot_exe(const std::string& path);
   void boot_exe_image(const std::vector<u8>& file, const std::string& name);
+  // With a BIOS, an EXE given to boot_exe() waits until the BIOS reaches its shell entry and is
+  // then side-loaded: true while it still waits (the BIOS has not got that far).
+  bool exe_pending() const { return pending_exe_.has_value(); }
   // Boots the BIOS alone (from reset), e.g. for a BIOS test or a disc.
   void boot_bios();
 

@@ -1,0 +1,112 @@
+// One program, one kernel, headless: boot, run, judge the final picture (compat_run.h).
+#include "cli/compat_run.h"
+
+#include <algorithm>
+#include <exception>
+
+namespace psxrl::cli {
+
+std::uint64_t picture_hash(const psx::Console::Frame& frame) {
+  std::uint64_t h = 0xCBF29CE484222325ull;  // FNV-1a 64-bit offset basis and prime
+  auto mix = [&h](std::uint8_t byte) {
+    h ^= byte;
+    h *= 0x100000001B3ull;
+  };
+  for (std::uint32_t v : {frame.width, frame.height})
+    for (int shift = 0; shift < 32; shift += 8) mix(static_cast<std::uint8_t>(v >> shift));
+  const std::size_t bytes = std::size_t{frame.width} * frame.height * 3;
+  for (std::size_t i = 0; i < bytes; ++i) mix(frame.rgb[i]);
+  return h;
+}
+
+std::uint64_t distinct_colours(const psx::Console::Frame& frame) {
+  const std::size_t pixels = std::size_t{frame.width} * frame.height;
+  std::vector<std::uint32_t> colours(pixels);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const psx::u8* p = frame.rgb + i * 3;
+    colours[i] = std::uint32_t{p[0]} << 16 | std::uint32_t{p[1]} << 8 | p[2];
+  }
+  std::sort(colours.begin(), colours.end());
+  return static_cast<std::uint64_t>(std::unique(colours.begin(), colours.end()) - colours.begin());
+}
+
+namespace {
+
+// How long a BIOS may take to reach its shell entry before an EXE counts as not booted: 20 s of
+// NTSC video, several times what a BIOS's intro takes.
+constexpr std::uint64_t kBiosBootFrames = 1200;
+
+// Loads the program into `console` as `psxrl run` would. Returns whether it started (Yes or No)
+// or whether the BIOS is to find it on the disc itself (Unknown); throws InputError.
+CompatRun::Booted boot(psx::Console& console, const CompatProgram& program, const CompatSettings& settings) {
+  if (!settings.bios.empty()) console.load_bios_image(settings.bios, settings.bios_name);
+  if (program.kind == CompatProgram::Kind::Exe) {
+    console.boot_exe(program.path);
+    return CompatRun::Booted::Yes;
+  }
+  console.insert_disc(program.path);
+  console.boot_disc();
+  return settings.bios.empty() ? CompatRun::Booted::Yes : CompatRun::Booted::Unknown;
+}
+
+void judge_stop(const psx::Console& console, CompatRun& run) {
+  if (!console.fatal_error().empty()) {
+    run.stop = console.fatal_error();
+    run.failed = true;
+  } else if (auto code = console.exit_code()) {
+    run.stop = "exited with code " + std::to_string(*code);
+  }
+}
+
+}  // namespace
+
+CompatRun run_compat(const CompatProgram& program, const CompatSettings& settings, const std::string& screenshot) {
+  CompatRun run;
+  psx::Console console;
+  if (settings.recompiler) console.set_cpu_mode(psx::Console::CpuMode::Recompiler);
+  try {
+    run.booted = boot(console, program, settings);
+  } catch (const std::exception& e) {
+    run.booted = CompatRun::Booted::No;
+    run.stop = e.what();
+    run.failed = true;
+    return run;
+  }
+  // Headless, silent: the picture is converted when asked for at the end, the same bits.
+  console.set_pixels_observed(false);
+  console.set_sound_observed(false);
+  // With a BIOS an EXE starts when the BIOS reaches its shell entry: the frames before that are
+  // the BIOS's own, so the program's frames are counted from its start, as under the HLE kernel,
+  // and the two runs end on the same frame of the program.
+  // The frame in which the BIOS hands over is counted as the BIOS's.
+  std::uint64_t bios_frames = 0;
+  try {
+    while (console.exe_pending() && console.frames() < kBiosBootFrames && !console.stopped()) console.run_frame();
+    bios_frames = console.frames();
+    if (!console.exe_pending()) console.run_frames(settings.frames);
+  } catch (const std::exception& e) {
+    run.stop = std::string("emulator error: ") + e.what();
+    run.failed = true;
+  }
+  run.frames = console.frames() - bios_frames;
+  if (run.stop.empty()) judge_stop(console, run);
+  // An EXE still waiting for the BIOS's shell entry was never side-loaded: it did not boot.
+  if (console.exe_pending()) {
+    run.booted = CompatRun::Booted::No;
+    run.failed = true;
+    if (run.stop.empty())
+      run.stop = "the BIOS did not reach its shell entry (0x80030000) to load the EXE in " +
+                 std::to_string(bios_frames) + " frames";
+  }
+  const psx::Console::Frame frame = console.native_frame();
+  run.has_picture = frame.width > 0 && frame.height > 0;
+  if (!run.has_picture) return run;
+  run.width = frame.width;
+  run.height = frame.height;
+  run.colours = distinct_colours(frame);
+  run.frame_hash = picture_hash(frame);
+  console.save_screenshot(screenshot);
+  return run;
+}
+
+}  // namespace psxrl::cli

@@ -20,5 +20,7 @@ int play_command(const std::vector<std::string>& args);
 int record_command(const std::vector<std::string>& args);
 int memsearch_command(const std::vector<std::string>& args);
 int sweep_command(const std::vector<std::string>& args);
+// `psxrl experiment NAME`: one of the seed's studies, a sweep run by psxrl.experiments (docs/results.md).
+int experiment_command(const std::vector<std::string>& args);
 
 }  // namespace psxrl::cli

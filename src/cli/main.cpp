@@ -18,6 +18,7 @@ const char* kHelp =
     "  record     record a play session (inputs, RAM snapshots, marks) for memsearch\n"
     "  memsearch  find a game's variables in a recorded session's RAM (see docs/memsearch.md)\n"
     "  sweep      train a grid of configurations x seeds on Ray, in Python (see docs/scaling.md)\n"
+    "  experiment run one of the seed's studies as a sweep (see docs/results.md)\n"
     "\n"
     "exit codes:\n"
     "  0  success\n"
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
   if (cmd == "record") return psxrl::cli::record_command(args);
   if (cmd == "memsearch") return psxrl::cli::memsearch_command(args);
   if (cmd == "sweep") return psxrl::cli::sweep_command(args);
+  if (cmd == "experiment") return psxrl::cli::experiment_command(args);
   std::fprintf(stderr, "psxrl: unknown command '%s'\n\n%s", cmd.c_str(), kHelp);
   return psxrl::cli::kUsage;
 }

@@ -53,7 +53,7 @@ def gather(sweep):
     table = []
     for r in sweep.runs:
         status = "finished" if finished(r.folder) else "incomplete"
-        row = {"config": r.config, "seed": r.seed, **{k: r.grid[k] for k in sweep.grid_keys}, "status": status}
+        row = {"config": r.config, "seed": r.seed, **{k: r.grid.get(k, "") for k in sweep.grid_keys}, "status": status}
         row.update(summarise(read_metrics(r.folder)))
         row["folder"] = str(r.folder)
         table.append(row)

@@ -18,7 +18,7 @@ import pytest
 os.environ["RAY_USAGE_STATS_ENABLED"] = "0"
 ray = pytest.importorskip("ray", reason="Ray is installed in .venv-ray: ctest python_experiment_tests runs this file")
 
-from psxrl.experiments import names  # noqa: E402
+from psxrl.experiments import load, names  # noqa: E402
 from psxrl.experiments.__main__ import main  # noqa: E402
 
 DQN = {"agent": "dqn", "epsilon_moves": "2000"}
@@ -66,6 +66,28 @@ def test_every_study_has_a_test():
     assert names() == sorted(EXPECTED)
 
 
+# The full studies as their files state them: configurations, seeds, episodes.
+FULL = {"agents": (10, [0, 1, 2], "1000"), "discount": (2, [0, 1, 2, 3, 4], "300"),
+        "exploration": (2, [0, 1, 2, 3, 4], "300"), "output-layer": (2, list(range(33)), "300"),
+        "stability": (6, [1, 2, 3], "300")}
+
+
+@pytest.mark.parametrize("study", sorted(FULL))
+def test_full_study_plans_every_configuration_and_seed(study, tmp_path):
+    configs, seeds, episodes = FULL[study]
+    sweep, _ = load(study, tmp_path)
+    assert sweep.seeds == seeds and len(sweep.runs) == configs * len(seeds)
+    assert len({r.config for r in sweep.runs}) == configs
+    assert all(r.options["episodes"] == int(episodes) and "test-every" not in r.options for r in sweep.runs)
+
+
+def test_study_file_keeps_the_sweep_keys_out_of_its_study_table(tmp_path):
+    path = tmp_path / "s.toml"
+    path.write_text('[study]\ntitle = "t"\nseeds = [0, 1]\n')
+    with pytest.raises(ValueError, match=r"s.toml: \[study\] seeds: \[study\] holds only the title"):
+        load(str(path), tmp_path)
+
+
 @pytest.mark.parametrize("study", sorted(EXPECTED))
 def test_tiny_study_writes_its_table_figure_runs_and_commands(study, tmp_path):
     out = tmp_path / study
@@ -85,6 +107,7 @@ def test_tiny_study_writes_its_table_figure_runs_and_commands(study, tmp_path):
         assert row["status"] == "finished" and row["episodes"] == "2" and row["test_episodes"] == "1"
         assert row["last_test_score"] == metrics[1]["score"]
     table = (out / "runs.md").read_text()
+    assert table.startswith("# ") and table.splitlines()[0].endswith(" (tiny)")  # the study's title
     for config in EXPECTED[study]:
         assert f"| {config} | 2 |" in table  # its per-configuration row: 2 runs
         for seed in SEEDS:

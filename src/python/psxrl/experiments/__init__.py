@@ -63,11 +63,18 @@ def load(name, out=None, tiny=False):
     doc = read(path)
     if not isinstance(doc.get("study"), dict) or not isinstance(doc["study"].get("title"), str):
         raise SweepConfigError(f"{path}: expected a [study] table with a title")
+    if set(doc["study"]) != {"title"}:
+        key = sorted(set(doc["study"]) - {"title"})[0]
+        raise SweepConfigError(f"{path}: [study] {key}: [study] holds only the title (the sweep's own keys, such as "
+                               "seeds, go above it)")
     if tiny:
         doc = _tiny(path, doc)
+    title = doc["study"]["title"] + (" (tiny)" if tiny else "")
     doc = {k: v for k, v in doc.items() if k not in STUDY_KEYS}
     default = Path("runs") / "experiments" / (path.stem + ("-tiny" if tiny else ""))
-    return from_doc(doc, path, out if out is not None else default), path
+    sweep = from_doc(doc, path, out if out is not None else default)
+    sweep.title = title
+    return sweep, path
 
 
 def write_commands(sweep, path, exe, invocation):

@@ -72,6 +72,7 @@ class Sweep:
     seeds: list
     runs: list
     grid_keys: list
+    title: str = ""             # the report's heading (psxrl.experiments gives its study's title)
 
 
 def _text(value):

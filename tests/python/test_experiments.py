@@ -81,11 +81,19 @@ def test_full_study_plans_every_configuration_and_seed(study, tmp_path):
     assert all(r.options["episodes"] == int(episodes) and "test-every" not in r.options for r in sweep.runs)
 
 
-def test_study_file_keeps_the_sweep_keys_out_of_its_study_table(tmp_path):
+@pytest.mark.parametrize("text, tiny, message", [
+    ('[study]\ntitle = "t"\nseeds = [0, 1]\n', False, r"\[study\] seeds: \[study\] holds only the title"),
+    ("seeds = [0]\n", False, r"expected a \[study\] table with a title"),
+    ('[study]\ntitle = "t"\n', True, r"\[tiny\] must be a table of seeds, train, grid and configs"),
+    ('[study]\ntitle = "t"\n[tiny]\ntrain = 2\n', True, r"\[tiny\] train and \[train\] must be tables"),
+    ('configs = [1]\n[study]\ntitle = "t"\n[tiny]\ntrain = { episodes = 2 }\n', True,
+     r"configs must be a non-empty array of tables"),
+])
+def test_bad_study_files_name_the_file_and_the_key(tmp_path, text, tiny, message):
     path = tmp_path / "s.toml"
-    path.write_text('[study]\ntitle = "t"\nseeds = [0, 1]\n')
-    with pytest.raises(ValueError, match=r"s.toml: \[study\] seeds: \[study\] holds only the title"):
-        load(str(path), tmp_path)
+    path.write_text(text)
+    with pytest.raises(ValueError, match=r"s.toml: " + message):
+        load(str(path), tmp_path, tiny)
 
 
 @pytest.mark.parametrize("study", sorted(EXPECTED))

@@ -40,13 +40,17 @@ def _tiny(path, doc):
     tiny = doc.get("tiny")
     if not isinstance(tiny, dict) or set(tiny) - TINY_KEYS:
         raise SweepConfigError(f"{path}: [tiny] must be a table of seeds, train, grid and configs")
-    doc["seeds"] = tiny.get("seeds", doc.get("seeds"))
-    if "configs" in tiny:
-        doc["configs"] = tiny["configs"]
+    for key in ("train", "grid"):
+        if not isinstance(tiny.get(key, {}), dict) or not isinstance(doc.get(key, {}), dict):
+            raise SweepConfigError(f"{path}: [tiny] {key} and [{key}] must be tables of psxrl train options")
+    for key in ("seeds", "configs"):
+        if key in tiny:
+            doc[key] = tiny[key]
     train = dict(doc.get("train", {}))
     for key, value in tiny.get("train", {}).items():
         for entry in doc.get("configs", []):
-            entry.pop(key, None)
+            if isinstance(entry, dict):  # anything else: from_doc says what configs must be
+                entry.pop(key, None)
         doc.get("grid", {}).pop(key, None)
         train[key] = value
     doc["train"] = train

@@ -21,5 +21,7 @@ int record_command(const std::vector<std::string>& args);
 int memsearch_command(const std::vector<std::string>& args);
 int sweep_command(const std::vector<std::string>& args);
 int compat_command(const std::vector<std::string>& args);
+// `psxrl experiment NAME`: one of the seed's studies, a sweep run by psxrl.experiments (docs/results.md).
+int experiment_command(const std::vector<std::string>& args);
 
 }  // namespace psxrl::cli

@@ -20,6 +20,7 @@ const char* kHelp =
     "  sweep      train a grid of configurations x seeds on Ray, in Python (see docs/scaling.md)\n"
     "  compat     run programs and discs under the HLE kernel (and a BIOS) and report what works,\n"
     "             with screenshots (see psxrl compat --help, docs/compat.md)\n"
+    "  experiment run one of the seed's studies as a sweep (see docs/results.md)\n"
     "\n"
     "exit codes:\n"
     "  0  success\n"
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
   if (cmd == "memsearch") return psxrl::cli::memsearch_command(args);
   if (cmd == "sweep") return psxrl::cli::sweep_command(args);
   if (cmd == "compat") return psxrl::cli::compat_command(args);
+  if (cmd == "experiment") return psxrl::cli::experiment_command(args);
   std::fprintf(stderr, "psxrl: unknown command '%s'\n\n%s", cmd.c_str(), kHelp);
   return psxrl::cli::kUsage;
 }

@@ -1,5 +1,7 @@
-// `psxrl sweep CONFIG.toml [--address HOST:PORT] [--out DIR]`: a grid of `psxrl train` runs on Ray.
-// The sweep is Python (psxrl.ray, docs/scaling.md), so this process becomes that Python: the
+// `psxrl sweep CONFIG.toml [--address HOST:PORT] [--out DIR]`: a grid of `psxrl train` runs on Ray,
+// and `psxrl experiment NAME [--tiny]`, one of the seed's studies run as such a sweep.
+// Both are Python (psxrl.ray, docs/scaling.md; psxrl.experiments, docs/results.md), so this process
+// becomes that Python: the
 // interpreter in $PSXRL_PYTHON (default python3), with this executable as the runs' trainer and,
 // from a build tree, the build's module on its path.
 #include <unistd.h>
@@ -29,23 +31,33 @@ void use_this_build(const std::filesystem::path& self) {
   setenv("PYTHONPATH", path.c_str(), 1);
 }
 
-}  // namespace
-
-int sweep_command(const std::vector<std::string>& args) {
+// Replaces this process with `$PSXRL_PYTHON WORDS... ARGS...` (WORDS: -m and the module); returns
+// only on failure.
+int run_python_module(const char* command, std::vector<std::string> words, const std::vector<std::string>& args) {
   std::error_code ec;
   std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) use_this_build(self);
   const char* python = std::getenv("PSXRL_PYTHON");
   if (python == nullptr || *python == '\0') python = "python3";
-  std::vector<std::string> words = {python, "-m", "psxrl.ray", "sweep"};
+  words.insert(words.begin(), python);
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
   execvp(python, argv.data());
-  std::fprintf(stderr, "psxrl sweep: cannot run %s (%s): set PSXRL_PYTHON to a Python with psxrl and Ray\n", python,
-               std::strerror(errno));
+  std::fprintf(stderr, "psxrl %s: cannot run %s (%s): set PSXRL_PYTHON to a Python with psxrl and Ray\n", command,
+               python, std::strerror(errno));
   return kUsage;
+}
+
+}  // namespace
+
+int sweep_command(const std::vector<std::string>& args) {
+  return run_python_module("sweep", {"-m", "psxrl.ray", "sweep"}, args);
+}
+
+int experiment_command(const std::vector<std::string>& args) {
+  return run_python_module("experiment", {"-m", "psxrl.experiments"}, args);
 }
 
 }  // namespace psxrl::cli

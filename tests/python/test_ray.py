@@ -115,6 +115,10 @@ def test_sweep_table_restates_each_runs_metrics(reference):
         assert int(row["best_test_score"]) == max(scores) and int(row["last_test_score"]) == scores[-1]
         assert math.isclose(float(row["mean_test_score"]), sum(scores) / len(scores), abs_tol=5e-4)
         assert int(row["test_wins"]) == sum(r["outcome"] == "win" for r in tests)
+        wins = [int(r["episode"]) for r in tests if r["outcome"] == "win"]
+        expected = sum(float(r["seconds"]) for r in rows if int(r["episode"]) <= wins[0]) if wins else None
+        assert (row["first_test_win_seconds"] == "") if expected is None else \
+            math.isclose(float(row["first_test_win_seconds"]), expected, abs_tol=5e-4)
     markdown = (reference.out / "runs.md").read_text()
     assert "| max-moves=8 | 2 |" in markdown and "| max-moves=16 | 2 |" in markdown
     assert (reference.out / "learning_curves.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -127,6 +131,10 @@ def test_sweep_table_restates_each_runs_metrics(reference):
     ("[grid]\ngamma = 0.9", "[grid] gamma: expected a non-empty list of values"),
     ("[train]\ngamma = 0.9\n[grid]\ngamma = [0.5]", "gamma is in both [train] and [grid]"),
     ("sedes = [0]", "unknown key 'sedes'"),
+    ("configs = 3", "configs must be a non-empty array of tables ([[configs]])"),
+    ("[[configs]]\nseed = 1", "[configs 1] seed: the sweep sets --seed itself"),
+    ("[[configs]]\nobs = 'local'\n[[configs]]\nepisodes = [1, 2]", "[[configs]] 2 episodes: expected one value"),
+    ("[train]\nagent = 'q'\n[[configs]]\nagent = 'dqn'", "agent is in both [[configs]] and [train] or [grid]"),
     ("seeds = [0", "sweep.toml: "),
 ])
 def test_sweep_file_errors_name_the_file_and_the_key(tmp_path, text, message):

@@ -7,7 +7,7 @@ import statistics
 from pathlib import Path
 
 COLUMNS = ["episodes", "test_episodes", "moves", "training_moves", "best_test_score", "last_test_score",
-           "mean_test_score", "test_wins", "first_test_win", "seconds"]
+           "mean_test_score", "test_wins", "first_test_win", "first_test_win_seconds", "seconds"]
 
 
 def table_path(sweep):
@@ -42,6 +42,9 @@ def summarise(rows):
         "mean_test_score": round(statistics.fmean(scores), 3) if scores else "",
         "test_wins": len(wins),
         "first_test_win": wins[0] if wins else "",
+        # Host seconds of the run's episodes up to that test, itself included: the time to a first win.
+        "first_test_win_seconds": round(sum(float(r["seconds"]) for r in rows if int(r["episode"]) <= wins[0]), 3)
+        if wins else "",
         "seconds": round(sum(float(r["seconds"]) for r in rows), 3),
     }
 
@@ -53,7 +56,7 @@ def gather(sweep):
     table = []
     for r in sweep.runs:
         status = "finished" if finished(r.folder) else "incomplete"
-        row = {"config": r.config, "seed": r.seed, **{k: r.grid[k] for k in sweep.grid_keys}, "status": status}
+        row = {"config": r.config, "seed": r.seed, **{k: r.grid.get(k, "") for k in sweep.grid_keys}, "status": status}
         row.update(summarise(read_metrics(r.folder)))
         row["folder"] = str(r.folder)
         table.append(row)
@@ -61,7 +64,7 @@ def gather(sweep):
 
 
 def _markdown(sweep, table):
-    lines = [f"# Sweep {sweep.path.name}", "", "## Per configuration (mean ± standard deviation over seeds)", "",
+    lines = [f"# {sweep.title or 'Sweep ' + sweep.path.name}", "", "## Per configuration (mean ± standard deviation over seeds)", "",
              "| configuration | runs | best test score | last test score | test wins | moves |",
              "| --- | --- | --- | --- | --- | --- |"]
     for config in dict.fromkeys(row["config"] for row in table):

@@ -10,6 +10,16 @@ and the seeds; expanded into one planned run (options, seed, run folder) per gri
     gamma = [0.9, 0.99]
     exploration = ["epsilon", "q-weighted"]
 
+Options that only make sense together (an agent and its observation) are listed as configurations
+instead, each crossed with the grid:
+
+    [[configs]]
+    agent = "q"
+    obs = "simple"
+    [[configs]]
+    agent = "dqn"
+    obs = "local"
+
 A value true is a flag (`--double-dqn`), false leaves it out; everything else is passed as text.
 """
 import itertools
@@ -24,7 +34,7 @@ except ImportError:  # Python before 3.11
 
 # Options the sweep sets itself for each run.
 RESERVED = {"out", "seed", "resume", "quiet"}
-TOP_LEVEL = {"out", "seeds", "train", "grid"}
+TOP_LEVEL = {"out", "seeds", "train", "grid", "configs"}
 
 
 class SweepConfigError(ValueError):
@@ -34,8 +44,8 @@ class SweepConfigError(ValueError):
 @dataclass
 class Run:
     """One `psxrl train` run of the sweep: a configuration (a grid point) and a seed."""
-    config: str                 # the configuration's name: "gamma=0.9,agent=q" ("base" without a grid)
-    grid: dict                  # the grid values of this configuration, in the file's order
+    config: str                 # the configuration's name: "agent=q,gamma=0.9" ("base" without a grid)
+    grid: dict                  # the [[configs]] entry's and the grid's values, in the file's order
     seed: int
     folder: Path
     options: dict = field(default_factory=dict)  # every option but --out, --seed, --resume
@@ -62,6 +72,7 @@ class Sweep:
     seeds: list
     runs: list
     grid_keys: list
+    title: str = ""             # the report's heading (psxrl.experiments gives its study's title)
 
 
 def _text(value):
@@ -87,19 +98,43 @@ def _check_options(path, table, name):
             raise SweepConfigError(f"{path}: [train] {key}: expected one value (lists of values go in [grid])")
 
 
-def load(path, out=None):
-    """Reads and checks a sweep file; `out` overrides the file's sweep folder."""
-    path = Path(path)
+def read(path):
+    """The TOML document of a sweep file (a dict); a missing or malformed file raises SweepConfigError."""
     try:
         with open(path, "rb") as f:
-            doc = tomllib.load(f)
+            return tomllib.load(f)
     except OSError as e:
         raise SweepConfigError(f"{path}: cannot read the sweep file ({e.strerror})") from e
     except tomllib.TOMLDecodeError as e:
         raise SweepConfigError(f"{path}: {e}") from e
+
+
+def _configs(path, doc, train, grid):
+    """The [[configs]] entries (one empty entry without them), checked like [grid] options."""
+    configs = doc.get("configs", [{}])
+    if not (isinstance(configs, list) and configs and all(isinstance(c, dict) for c in configs)):
+        raise SweepConfigError(f"{path}: configs must be a non-empty array of tables ([[configs]])")
+    for i, entry in enumerate(configs):
+        _check_options(path, entry, f"configs {i + 1}")
+        for key, value in entry.items():
+            if isinstance(value, (dict, list)):
+                raise SweepConfigError(f"{path}: [[configs]] {i + 1} {key}: expected one value")
+            if key in train or key in grid:
+                raise SweepConfigError(f"{path}: {key} is in both [[configs]] and [train] or [grid]")
+    return configs
+
+
+def load(path, out=None):
+    """Reads and checks a sweep file; `out` overrides the file's sweep folder."""
+    return from_doc(read(path), path, out)
+
+
+def from_doc(doc, path, out=None):
+    """Checks a sweep file's document (as read()) and plans its runs; `path` names it in errors."""
+    path = Path(path)
     unknown = sorted(set(doc) - TOP_LEVEL)
     if unknown:
-        raise SweepConfigError(f"{path}: unknown key {unknown[0]!r}; expected out, seeds, [train] and [grid]")
+        raise SweepConfigError(f"{path}: unknown key {unknown[0]!r}; expected out, seeds, [train], [grid] and [[configs]]")
     seeds = doc.get("seeds", [0])
     if not (isinstance(seeds, list) and seeds and all(isinstance(s, int) and s >= 0 for s in seeds)) \
             or len(set(seeds)) != len(seeds):
@@ -112,13 +147,15 @@ def load(path, out=None):
             raise SweepConfigError(f"{path}: [grid] {key}: expected a non-empty list of values")
         if key in train:
             raise SweepConfigError(f"{path}: {key} is in both [train] and [grid]")
+    configs = _configs(path, doc, train, grid)
     # Absolute: the runs' trainers start in whatever folder Ray's workers have.
     folder = Path(out if out is not None else doc.get("out", Path("runs") / path.stem)).absolute()
     runs = []
-    for point in itertools.product(*grid.values()):
-        values = dict(zip(grid, point))
+    for entry, point in itertools.product(configs, itertools.product(*grid.values())):
+        values = {**entry, **dict(zip(grid, point))}
         name = ",".join(f"{k}={_text(v)}" for k, v in values.items()) or "base"
         for seed in seeds:
             runs.append(Run(config=name, grid=values, seed=seed, folder=folder / _folder_name(values) / f"s{seed}",
                             options={**train, **values}))
-    return Sweep(path=path, out=folder, seeds=seeds, runs=runs, grid_keys=list(grid))
+    keys = list(dict.fromkeys(k for entry in configs for k in entry)) + list(grid)
+    return Sweep(path=path, out=folder, seeds=seeds, runs=runs, grid_keys=keys)

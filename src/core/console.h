@@ -3,7 +3,7 @@
 // else from the core. A console is self-contained (no global state): many can run on many
 // threads. It never starts threads itself; every run call returns synchronously. One thread at a
 // time per console: booting, running, input or a save state from a second thread while one is
-// inside throws std::runtime_error("Console is in use by another thread") (core/thread_owner.h).
+// inside throws std::runtime_error("Console is in use by another thread") (util/thread_owner.h).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -32,7 +32,7 @@
 #include "core/sio/sio0.h"
 #include "core/sio/sio1.h"
 #include "core/state.h"
-#include "core/thread_owner.h"
+#include "util/thread_owner.h"
 #include "core/timers.h"
 #include "gpu/gl/gl_context.h"
 #include "gpu/gpu.h"
@@ -307,7 +307,7 @@ class Console : private CpuHooks {
   u64 program_hash_ = 0;
   // Frames left before press_for() releases each button of each port (0 = not timed).
   std::array<std::array<u32, 16>, 2> hold_frames_{};
-  // Booting, running, input and save states refuse a second thread (core/thread_owner.h).
+  // Booting, running, input and save states refuse a second thread (util/thread_owner.h).
   ThreadOwner owner_{"Console"};
 };
 

@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/thread_owner.h"
+#include "util/thread_owner.h"
 #include "rl/env.h"
 
 namespace psxrl::rl {

@@ -3,7 +3,7 @@
 // started or the move is over; the only clock is the emulated frame counter, so the same seed and
 // actions always give the same observations, rewards and flags. One thread at a time: a call from
 // a second thread while one is inside throws std::runtime_error("Env is in use by another
-// thread") and leaves the environment as it was (core/thread_owner.h).
+// thread") and leaves the environment as it was (util/thread_owner.h).
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/console.h"
-#include "core/thread_owner.h"
+#include "util/thread_owner.h"
 #include "rl/integration.h"
 #include "rl/move_delimiter.h"
 #include "rl/observation.h"

@@ -4,13 +4,13 @@
 // one thread at a time, so the results equal N single environments driven the same way, bit for
 // bit, whatever the thread count: environment i's k-th episode starts with
 // reset(level, episode_seed(seed, i, k)). One calling thread at a time: reset() or step() from a
-// second thread while one runs throws std::runtime_error (core/thread_owner.h).
+// second thread while one runs throws std::runtime_error (util/thread_owner.h).
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <vector>
 
-#include "core/thread_owner.h"
+#include "util/thread_owner.h"
 #include "rl/env.h"
 #include "rl/thread_pool.h"
 

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "core/console.h"
-#include "core/thread_owner.h"
+#include "util/thread_owner.h"
 #include "rl/async_vec_env.h"
 #include "rl/env.h"
 #include "rl/vec_env.h"

@@ -57,7 +57,7 @@ TINY = {"test_every": "2", "max_moves": "5"}  # config.json; the 2 episodes: met
 
 @pytest.fixture(scope="module", autouse=True)
 def local_ray():
-    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    ray.init(address="local", num_cpus=2, include_dashboard=False, log_to_driver=False)
     yield
     ray.shutdown()
 

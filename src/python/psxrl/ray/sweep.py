@@ -98,7 +98,7 @@ def run(sweep, address=None, log=print):
         if address:
             ray.init(address=address, log_to_driver=False)
         else:
-            ray.init(include_dashboard=False, log_to_driver=False)
+            ray.init(address="local", include_dashboard=False, log_to_driver=False)
     exe = find_executable()
     sweep.out.mkdir(parents=True, exist_ok=True)
     pending = {}

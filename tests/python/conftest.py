@@ -62,7 +62,10 @@ def x_display():
     if shutil.which("Xvfb") is None:
         pytest.fail("Xvfb is missing: run scripts/setup.sh (Debian package xvfb)")
     read, write = os.pipe()
-    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1024x768x24", "-nolisten", "tcp"],
+    # -noreset: an X server resets when its last client disconnects, and a window opened during
+    # the reset finds no display (each test's window is the only client while it lives).
+    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1024x768x24", "-nolisten", "tcp",
+                               "-noreset"],
                               pass_fds=(write,), stderr=subprocess.DEVNULL)
     os.close(write)
     with os.fdopen(read) as f:

@@ -11,6 +11,7 @@
 
 #include "core/console.h"
 #include "rl/env.h"
+#include "tumble_manifest_util.h"
 
 namespace fs = std::filesystem;
 using psxrl::rl::Env;
@@ -20,17 +21,6 @@ namespace {
 
 constexpr psx::u32 kMenuLevel = 0x80010058;
 constexpr int kLookRight = 1;  // Tumble's action 1: RIGHT, hold 2
-
-std::string tumble_manifest() {
-  auto bytes = psx::read_file(PSXRL_SOURCE_DIR "/games/tumble/game.toml");
-  return std::string(bytes.begin(), bytes.end());
-}
-
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  size_t at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? s : s.replace(at, from.size(), to);
-}
 
 // Tumble's integration, its levels started by `script` and ready on the level-select screen
 // (state 56), stepped in `moves` mode ("frames" with a frame skip, or "delimited").

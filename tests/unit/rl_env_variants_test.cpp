@@ -10,23 +10,13 @@
 #include "core/console.h"
 #include "core/input_error.h"
 #include "rl/env.h"
+#include "tumble_manifest_util.h"
 
 namespace fs = std::filesystem;
 using psxrl::rl::Env;
 using psxrl::rl::EnvConfig;
 
 namespace {
-
-std::string tumble_manifest() {
-  auto bytes = psx::read_file(PSXRL_SOURCE_DIR "/games/tumble/game.toml");
-  return std::string(bytes.begin(), bytes.end());
-}
-
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  size_t at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? s : s.replace(at, from.size(), to);
-}
 
 // Writes games/tumble/{game.toml, game.lua} under a fresh temporary folder; returns the folder
 // to use as games_dir (the integration keeps the name "tumble", so the built program is found).

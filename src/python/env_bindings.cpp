@@ -166,6 +166,7 @@ void bind_env(py::module_& m) {
             int level = static_cast<int>(int_arg("level", level_arg, INT_MIN, INT_MAX));
             std::uint64_t seed = u64_arg("seed", seed_arg);
             rl::StepInfo info;
+            auto held = e.hold();
             {
               R release;
               e.reset(level, seed, &info);
@@ -178,6 +179,7 @@ void bind_env(py::module_& m) {
           [](rl::Env& e, py::handle action_arg) {
             int action = static_cast<int>(int_arg("action", action_arg, INT_MIN, INT_MAX));
             rl::StepResult r;
+            auto held = e.hold();
             {
               R release;
               r = e.step(action);
@@ -189,7 +191,13 @@ void bind_env(py::module_& m) {
            "Releases the console and the Lua state now; any later reset, step or console call raises "
            "RuntimeError('Env is closed'). Closing twice is allowed.")
       .def_property_readonly("closed", &rl::Env::closed)
-      .def("observation", &env_observation, "The current observation (a copy).")
+      .def(
+          "observation",
+          [](const rl::Env& e) {
+            auto held = e.hold();
+            return env_observation(e);
+          },
+          "The current observation (a copy).")
       .def_property_readonly("observation_spaces", [](const rl::Env& e) { return spaces_list(e.observation_spaces()); })
       .def_property_readonly("obs", [](const rl::Env& e) { return rl::obs_kind_name(e.obs_kind()); })
       .def_property_readonly("game", [](const rl::Env& e) { return e.game().name; })

@@ -105,6 +105,10 @@ class Env {
   const Observation& reset(int level, std::uint64_t seed, StepInfo* info = nullptr);
   StepResult step(int action);
   const Observation& observation() const { return obs_; }
+  // Holds the environment for the calling thread until the returned object is destroyed, across
+  // several calls: the Python binding holds it from step() until the observation is copied, so a
+  // second thread cannot overwrite the observation mid-copy (it gets "Env is in use" instead).
+  [[nodiscard]] psx::ThreadOwner::Use hold() const { return psx::ThreadOwner::Use(owner_); }
 
   // A moment of an episode to start later episodes from (training from saved states, the seed's
   // §5 proposal): the console's whole state, the level and its time at the level's start.

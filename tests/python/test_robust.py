@@ -4,6 +4,7 @@ configuration and refuse to be copied; Gymnasium's checker passes on a machine w
 import copy
 import pickle
 import threading
+import time
 import warnings
 
 import gymnasium as gym
@@ -71,6 +72,24 @@ def test_env_from_two_threads_is_refused_and_stays_usable():
     assert refused > 0  # each call releases the GIL, so the two threads meet
     obs, info = env.reset(1, 1)  # usable afterwards; no error blaming the game's files
     assert info["level"] == 1 and env.step(1)[4]["moves"] == 1
+
+
+def test_observation_is_not_read_while_another_thread_steps():
+    """step() holds the environment until its observation is copied, and observation() holds it too:
+    a thread reading the observation while another steps is refused instead of copying a half-written
+    array."""
+    env = psxrl.Env(max_moves=1000)
+    env.reset(1, 1)
+
+    def read_often():
+        for _ in range(50):
+            env.observation()
+            time.sleep(0)  # lets the stepping thread take the GIL and enter step()
+
+    other, refused = hammer([lambda: step_or_reset(env), read_often], rounds=20)
+    assert other == []
+    assert refused > 0  # without the hold, observation() never meets the stepping thread
+    assert env.observation().shape == env.observation_spaces[0]["shape"]
 
 
 def test_vector_envs_from_two_threads_are_refused():

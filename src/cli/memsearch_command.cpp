@@ -40,7 +40,7 @@ const char* kMemsearchFooter =
 constexpr size_t kMaxListed = 200000;  // survivors beyond this are counted, not ranked
 
 struct MemsearchArgs {
-  std::string session, encodings, integration, name, range;
+  std::string session, encodings, integration, range;
   std::vector<std::string> queries, vars;
   size_t top = 20;
   bool verify = false;
@@ -58,10 +58,9 @@ struct MemsearchArgs {
     app.add_option("--range", range, "search only addresses FIRST-LAST (e.g. 0x80010000-0x80020000; LAST excluded)")
         ->type_name("A-B");
     app.add_flag("--verify", verify, "replay the session from its start state and check every snapshot");
-    app.add_option("--integration", integration, "write found variables as DIR/game.toml (a new integration)")
+    app.add_option("--integration", integration, "write found variables as DIR/game.toml (a new integration, named after DIR)")
         ->type_name("DIR")
         ->transform(folder_path());
-    app.add_option("--name", name, "the new integration's name (default: the folder's name)")->type_name("NAME");
     app.add_option("--var", vars, "a variable for --integration: NAME=ADDRESS:ENCODING (repeatable)")
         ->type_name("SPEC")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
@@ -184,8 +183,11 @@ int memsearch_command(const std::vector<std::string>& args) {
     if (!a.integration.empty()) {
       std::vector<memsearch::FoundVariable> vars;
       for (const std::string& v : a.vars) vars.push_back(memsearch::parse_found_variable(v));
-      std::string name = a.name.empty() ? std::filesystem::path(a.integration).filename().string() : a.name;
-      memsearch::write_integration_skeleton(a.integration, name, session.source, vars);
+      // A game is chosen by its folder's name, and loading refuses a manifest whose name differs
+      // from it, so the name is the folder's ("found_game/" names found_game too).
+      std::filesystem::path folder = std::filesystem::path(a.integration).lexically_normal();
+      if (!folder.has_filename()) folder = folder.parent_path();
+      memsearch::write_integration_skeleton(a.integration, folder.filename().string(), session.source, vars);
       std::printf("wrote %s/game.toml with %zu variables\n", a.integration.c_str(), vars.size());
     }
   } catch (const memsearch::QueryError& e) {

@@ -3,7 +3,8 @@
 // A leak shows as memory that keeps growing after the first report (the recompiler's code and
 // the allocator's pools are in place by then); a slowdown as moves/s falling from window to
 // window. Actions follow a fixed pseudo-random sequence; episodes that end are reset, as in
-// training. Usage: soak_bench [MOVES [EVERY]] (default 1000000 and 100000).
+// training. Usage: soak_bench [MOVES [EVERY [ENVS]]] (default 1000000, 100000, and both 1 and 8
+// environments; ENVS 1 or 8 runs only that soak, so the two can run side by side).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -69,12 +70,13 @@ void soak(int envs, long moves, long every) {
 int main(int argc, char** argv) {
   const long moves = argc > 1 ? std::atol(argv[1]) : 1'000'000;
   const long every = argc > 2 ? std::atol(argv[2]) : 100'000;
-  if (moves < 1 || every < 1) {
-    std::fprintf(stderr, "usage: soak_bench [MOVES [EVERY]] (both at least 1)\n");
+  const long envs = argc > 3 ? std::atol(argv[3]) : 0;
+  if (moves < 1 || every < 1 || (envs != 0 && envs != 1 && envs != 8)) {
+    std::fprintf(stderr, "usage: soak_bench [MOVES [EVERY [ENVS]]] (MOVES, EVERY at least 1; ENVS 1 or 8)\n");
     return 1;
   }
   std::printf("psxrl soak: Tumble level 1, observation simple, fixed random actions\n");
-  soak(1, moves, every);
-  soak(8, moves, every);
+  if (envs != 8) soak(1, moves, every);
+  if (envs != 1) soak(8, moves, every);
   return 0;
 }

@@ -37,6 +37,11 @@ psx_add_run_test(rom.cpu_breakpoints_recompiler CODE 0 CHECKS 123
 psx_add_rom_test(cpu_cop SOURCES cpu_cop.c cpu_cop.S CHECKS 40)
 psx_add_run_test(rom.cpu_cop_recompiler CODE 0 CHECKS 40
   RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_cop.exe --frames 600 --expect-exit --cpu recompiler)
+# Code run from I/O ports (issue 59 item 7, ps1-tests cpu/code-in-io): 4 cases that run (1
+# check), 3 that raise a bus error (2), and the scratchpad's EPC: 4 + 6 + 1 = 11.
+psx_add_rom_test(cpu_code_in_io SOURCES cpu_code_in_io.c cpu_code_in_io.S CHECKS 11)
+psx_add_run_test(rom.cpu_code_in_io_recompiler CODE 0 CHECKS 11
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_code_in_io.exe --frames 600 --expect-exit --cpu recompiler)
 # The cache programs check each case once (10 and 12 sites).
 psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S CHECKS 10)
 psx_add_rom_test(cpu_icache SOURCES cpu_icache.c cpu_icache.S CHECKS 12)

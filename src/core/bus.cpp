@@ -92,7 +92,7 @@ void Bus::report_unmapped(u32 vaddr, const char* what) {
 const u8* Bus::code_memory(u32 p) const {
   if (p < 0x00800000) return &ram_[p & (kRamSize - 1)];
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) return &bios_[p - kBiosBase];
-  return nullptr;  // the scratchpad is data cache: it cannot be executed, nor can I/O
+  return nullptr;  // the scratchpad is data cache and cannot be executed; I/O ports: fetch_slow()
 }
 
 // KUSEG and KSEG0 code runs through the i-cache when BCC.IS1 enables it: a hit is free and runs

@@ -92,18 +92,32 @@ void Bus::report_unmapped(u32 vaddr, const char* what) {
 const u8* Bus::code_memory(u32 p) const {
   if (p < 0x00800000) return &ram_[p & (kRamSize - 1)];
   if (p >= kBiosBase && p < kBiosBase + kBiosSize) return &bios_[p - kBiosBase];
-  return nullptr;  // the scratchpad is data cache: it cannot be executed, nor can I/O
+  return nullptr;  // the scratchpad is data cache and cannot be executed; I/O ports: fetch_slow()
 }
 
 // KUSEG and KSEG0 code runs through the i-cache when BCC.IS1 enables it: a hit is free and runs
 // the cached word, a miss reads the words it fills at the uncached fetch cost each. KSEG1 code is
 // always read from memory (psx-spx "Memory Map", i-Cache).
+// Code also runs from the I/O ports a device answers (memory control, RAM size, I_STAT/I_MASK
+// and the mapped devices), each word an uncached 32-bit I/O read with its time: ps1-tests
+// cpu/code-in-io (hardware log tests/data/ps1-tests/cpu-code-in-io.log) returns from a JR $RA;
+// NOP stored into the SPU's voice registers, DMA channel 0's BCR/CHCR and DPCR/DICR. Elsewhere
+// (the scratchpad, a port no device answers) the fetch is a bus error, as the same log shows.
 bool Bus::fetch_slow(u32 vaddr, u32& word, Cycles busy_until) {
   const u32 p = physical(vaddr);
   const u8* mem = code_memory(p);
   if (!mem) {
-    report_unmapped(vaddr, "instruction fetch");
-    return false;
+    const bool port = p >= kIoBase && p < kExp2Base &&
+                      (p < kIoBase + 0x24 || (p & ~3u) == 0x1F801060 || (p & ~7u) == 0x1F801070 ||
+                       io_[(p - kIoBase) / 16] != nullptr);
+    if (!port) {
+      report_unmapped(vaddr, "instruction fetch");
+      return false;
+    }
+    if (sched_.now() < busy_until) sched_.advance(busy_until - sched_.now());
+    sched_.advance(io_read_cycles(p, 4));
+    word = io_read(p, 4);
+    return true;
   }
   // Each word read from the BIOS is a 32-bit read over the ROM's bus.
   const Cycles word_cycles = p < 0x00800000 ? kRamFetchUncached : read_cycles(kBiosDelay, 4);

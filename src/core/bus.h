@@ -62,8 +62,8 @@ class Bus {
     return true;
   }
   // The word fetch() would execute at vaddr (the cached copy on a hit), without timing or fills;
-  // false where fetch() would fail. Inline for RAM, where idle skipping looks at each word of a
-  // loop it repeats.
+  // false where fetch() would fail or read an I/O port (a read there may act). Inline for RAM,
+  // where idle skipping looks at each word of a loop it repeats.
   bool peek_code(u32 vaddr, u32& word) const {
     const u32 p = physical(vaddr);
     if (p >= 0x00800000 || (vaddr & 3)) return peek_code_elsewhere(vaddr, p, word);

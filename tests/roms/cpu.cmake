@@ -25,9 +25,24 @@ psx_add_exe(bios_putchar SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/bios_putchar.c ${CM
 psx_add_run_test(rom.bios_putchar_with_rom CODE 0 OUTPUT "psxrl boot ROM\nok\n"
   RUN --bios ${CMAKE_CURRENT_BINARY_DIR}/bootrom.bin --exe ${CMAKE_CURRENT_BINARY_DIR}/bios_putchar.exe --frames 60 --expect-exit)
 psx_add_rom_test(watch_writes SOURCES watch_writes.c CHECKS 5)
-# COP0 breakpoints: 11 checks in main's flow, 12 expected breaks of 5 checks, 10 expected
-# non-breaks of 1: 11 + 60 + 10 = 81. The cache programs check each case once (10 and 12 sites).
-psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S CHECKS 81)
+# COP0 breakpoints (issue 59 item 2): 14 expected breaks of 6 checks, 12 expected non-breaks of 2,
+# 15 checks between them: 84 + 24 + 15 = 123. Run by both CPUs: the recompiler leaves armed
+# breakpoints to the interpreter's code, which this holds it to.
+psx_add_rom_test(cpu_breakpoints SOURCES cpu_breakpoints.c cpu_breakpoints.S CHECKS 123)
+psx_add_run_test(rom.cpu_breakpoints_recompiler CODE 0 CHECKS 123
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_breakpoints.exe --frames 600 --expect-exit --cpu recompiler)
+# Coprocessor exceptions (issue 59 item 7): ps1-tests cpu/cop's 17 cases, 10 with no exception (1
+# check) and 7 with one (3), the PRId read, and 4 psx-spx cases (3 + 2 + 2 + 1):
+# 10 + 21 + 1 + 8 = 40.
+psx_add_rom_test(cpu_cop SOURCES cpu_cop.c cpu_cop.S CHECKS 40)
+psx_add_run_test(rom.cpu_cop_recompiler CODE 0 CHECKS 40
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_cop.exe --frames 600 --expect-exit --cpu recompiler)
+# Code run from I/O ports (issue 59 item 7, ps1-tests cpu/code-in-io): 4 cases that run (1
+# check), 3 that raise a bus error (2), and the scratchpad's EPC: 4 + 6 + 1 = 11.
+psx_add_rom_test(cpu_code_in_io SOURCES cpu_code_in_io.c cpu_code_in_io.S CHECKS 11)
+psx_add_run_test(rom.cpu_code_in_io_recompiler CODE 0 CHECKS 11
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_code_in_io.exe --frames 600 --expect-exit --cpu recompiler)
+# The cache programs check each case once (10 and 12 sites).
 psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S CHECKS 10)
 psx_add_rom_test(cpu_icache SOURCES cpu_icache.c cpu_icache.S CHECKS 12)
 # Load timing: one check per measured sequence (SEQUENCES in the source).

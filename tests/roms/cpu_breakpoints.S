@@ -1,41 +1,62 @@
 # COP0 hardware breakpoints (psx-spx "COP0 - Debug Registers"): a debug-vector handler that records
-# Cause, EPC and DCIC, clears DCIC (the first thing psx-spx says a handler must do) and returns to
-# EPC, re-running the instruction or access that broke; plus one routine per breakpoint site.
+# Cause, EPC and DCIC, clears DCIC (the first thing psx-spx says a handler must do) and returns: to
+# EPC after an execution break, which is taken before the instruction runs, and to EPC+4 after a
+# data break, which is taken after the access (as pcsx-redux's hardware-run handler does); a
+# general-vector handler that counts the exceptions that come there instead; plus one routine per
+# breakpoint site.
         .set noreorder
         .set noat
         .text
 
-# bp_record: +0 Cause, +4 EPC, +8 DCIC at entry, +12 count
+# bp_record: +0 Cause, +4 EPC, +8 DCIC at entry, +12 debug-vector count, +16 general-vector count
         .globl bp_record
         .data
 bp_record:
-        .word   0, 0, 0, 0
+        .word   0, 0, 0, 0, 0
         .text
 
-# Copied to 0x80000040, the debug vector.
-        .globl debug_vector_stub
+# Copied to 0x80000040, the debug vector, and to 0x80000080, the general vector.
+        .globl debug_vector_stub, general_vector_stub
 debug_vector_stub:
         j       debug_handler
         nop
+general_vector_stub:
+        j       general_handler
+        nop
 
 debug_handler:
+        mfc0    $k1, $7
+        mtc0    $zero, $7
         la      $k0, bp_record
+        sw      $k1, 8($k0)
         mfc0    $k1, $13
         nop
         sw      $k1, 0($k0)
         mfc0    $k1, $14
         nop
         sw      $k1, 4($k0)
-        mfc0    $k1, $7
-        nop
-        sw      $k1, 8($k0)
         lw      $k1, 12($k0)
         nop
         addiu   $k1, $k1, 1
         sw      $k1, 12($k0)
-        mtc0    $zero, $7
+        lw      $k1, 8($k0)
+        mfc0    $k0, $14
+        andi    $k1, $k1, 0x02      # DCIC bit 1: an execution break, run the instruction now
+        bnez    $k1, 1f
+        nop
+        addiu   $k0, $k0, 4         # a data break: the access is done, go on after it
+1:      jr      $k0
+        rfe
+
+general_handler:
+        la      $k0, bp_record
+        lw      $k1, 16($k0)
+        nop
+        addiu   $k1, $k1, 1
+        sw      $k1, 16($k0)
         mfc0    $k0, $14
         nop
+        addiu   $k0, $k0, 4
         jr      $k0
         rfe
 

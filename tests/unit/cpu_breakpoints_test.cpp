@@ -1,7 +1,8 @@
 // COP0 hardware breakpoints on a bare CPU (psx-spx "COP0 - Debug Registers"): the vector follows
-// SR.BEV (80000040h, or BFC00140h with BEV set, per psx-spx's exception vector table), and DCIC's
-// KD/UD bits pick the CPU modes in which breaks are armed. tests/roms/cpu_breakpoints covers the
-// break kinds from inside the console.
+// SR.BEV (80000040h, or BFC00140h with BEV set, per psx-spx's exception vector table), and DCIC
+// bits 23, 30 and 31 arm execution breaks in kernel and user mode alike, bit 29 playing no part
+// (pcsx-redux's hardware-run cop0 tests break from kernel mode with bit 29 clear).
+// tests/roms/cpu_breakpoints covers the break kinds from inside the console.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -40,7 +41,7 @@ class FlatBus {
 };
 
 constexpr u32 kNop = 0;
-constexpr u32 kDE = 1u << 23, kPCE = 1u << 24, kKD = 1u << 29, kUD = 1u << 30, kTR = 1u << 31;
+constexpr u32 kDE = 1u << 23, kPCE = 1u << 24, kBit29 = 1u << 29, kME = 1u << 30, kTR = 1u << 31;
 
 struct Rig {
   Scheduler sched;
@@ -62,7 +63,7 @@ struct Rig {
 
 TEST(CpuBreakpoints, BevSelectsTheRomDebugVector) {
   Rig r;  // reset leaves SR.BEV set
-  r.arm(0x1008, kDE | kPCE | kKD | kTR);
+  r.arm(0x1008, kDE | kPCE | kME | kTR);
   r.cpu.step();
   r.cpu.step();
   r.cpu.step();
@@ -75,18 +76,19 @@ TEST(CpuBreakpoints, BevSelectsTheRomDebugVector) {
 TEST(CpuBreakpoints, RamDebugVectorWithoutBev) {
   Rig r;
   r.cpu.cop0().sr = 0;
-  r.arm(0x1000, kDE | kPCE | kKD | kTR);
+  r.arm(0x1000, kDE | kPCE | kME | kTR);
   r.cpu.step();
   EXPECT_EQ(r.cpu.pc(), 0x80000040u);
 }
 
-TEST(CpuBreakpoints, UserModeBreaksNeedUD) {
+TEST(CpuBreakpoints, BreaksArmInEveryModeWithBit30) {
   Rig r;
   r.cpu.cop0().sr = 0x2;  // KUc: user mode
-  r.arm(0x1000, kDE | kPCE | kKD | kTR);
+  r.arm(0x1000, kDE | kPCE | kBit29 | kTR);
   r.cpu.step();
-  EXPECT_EQ(r.cpu.pc(), 0x1004u) << "KD alone does not arm breaks in user mode";
-  r.arm(0x1004, kDE | kPCE | kUD | kTR);
+  EXPECT_EQ(r.cpu.pc(), 0x1004u) << "bit 29 does not stand in for bit 30";
+  EXPECT_EQ(r.cpu.cop0().dcic & 0x3F, 0u) << "an unarmed break sets no status bit";
+  r.arm(0x1004, kDE | kPCE | kME | kTR);
   r.cpu.step();
   EXPECT_EQ(r.cpu.pc(), 0x80000040u);
   EXPECT_EQ(r.cpu.cop0().sr & 0x3F, 0x08u) << "the KU/IE stack is pushed: user mode becomes previous";

@@ -141,13 +141,14 @@ TEST(RecompilerMemory, RandomMemoryStreams) {
 }
 
 // DCIC data breaks (psx-spx "COP0 - Debug Registers") on reads and writes of a 64-byte range of
-// the data area, first without a trap (status bits only), then with one (a Bp exception at the
-// debug vector 0x80000040, whose nops run into the handler at 0x80000080).
+// the data area, first with DCIC bit 31 clear (not armed: the streams run as without DCIC), then
+// armed (a Bp exception after the access, at the debug vector 0x80000040, whose nops run into the
+// handler at 0x80000080).
 TEST(RecompilerMemory, StreamsWithDataBreaks) {
   for (u32 trap : {0u, 1u}) {
     for (int seed = 31; seed < 31 + test_scale::sized(4, 2); ++seed) {
       SCOPED_TRACE("seed " + std::to_string(seed) + (trap ? " trap" : ""));
-      const u32 dcic = Cop0::kDcicDE | Cop0::kDcicDAE | Cop0::kDcicDR | Cop0::kDcicDW | Cop0::kDcicKD |
+      const u32 dcic = Cop0::kDcicDE | Cop0::kDcicDAE | Cop0::kDcicDR | Cop0::kDcicDW | Cop0::kDcicME |
                        (trap ? Cop0::kDcicTR : 0);
       // The break watches 64 bytes of the streams' RAM data, or (odd seeds) the timers' registers
       // in KUSEG, which the streams' stores reach through their calls.

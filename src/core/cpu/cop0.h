@@ -39,24 +39,26 @@ struct Cop0 {
   static constexpr u32 kDcicDA = 1u << 2;  // BDA data address break
   static constexpr u32 kDcicR = 1u << 3;   // ... on a read
   static constexpr u32 kDcicW = 1u << 4;   // ... on a write
-  // ...and enables: DE gates bits 24-31; KD/UD arm breaks in kernel/user mode; TR jumps to the
-  // debug vector, without it a break only sets the status bits.
+  // ...and enables. psx-spx names bit 23 "super-master enable 1" and bit 31 "super-master enable
+  // 2" for bits 24-29, bit 30 the master enable for bits 24-27 (execution and data breaks) and bit
+  // 29 the one for bit 28 (the any-jump break, not modelled). Bits 29/30 are no kernel/user mode
+  // selectors (the LR33300's KD/UD reading): pcsx-redux's hardware-run cop0 tests arm a data break
+  // from kernel mode with DCIC CA800000h (bit 29 clear) and it fires.
   static constexpr u32 kDcicDE = 1u << 23;
   static constexpr u32 kDcicPCE = 1u << 24;
   static constexpr u32 kDcicDAE = 1u << 25;
   static constexpr u32 kDcicDR = 1u << 26;
   static constexpr u32 kDcicDW = 1u << 27;
-  static constexpr u32 kDcicKD = 1u << 29;
-  static constexpr u32 kDcicUD = 1u << 30;
+  static constexpr u32 kDcicME = 1u << 30;
   static constexpr u32 kDcicTR = 1u << 31;
   static constexpr u32 kDcicWritable = 0xFF80F03F;  // bits 6-11 and 16-22 always read zero
 
   u32 bpc = 0, bda = 0, jumpdest = 0, dcic = 0, badvaddr = 0, bdam = 0, bpcm = 0;
   u32 sr = 0, cause = 0, epc = 0;
 
-  // Whether every DCIC enable in `enables` is set, with DE, and breaks are armed in this mode.
+  // Whether every DCIC enable in `enables` is set with the three master enables (any CPU mode).
   bool break_armed(u32 enables) const {
-    u32 need = kDcicDE | enables | ((sr & kKUc) ? kDcicUD : kDcicKD);
+    const u32 need = kDcicDE | kDcicME | kDcicTR | enables;
     return (dcic & need) == need;
   }
 

@@ -113,13 +113,15 @@ class CpuT {
   void execute_special(u32 instr);
   void execute_bcondz(u32 instr);
   void execute_cop0(u32 instr);
+  void execute_cop0_command(u32 instr);
+  void execute_absent_cop(u32 instr);
   void execute_cop2(u32 instr);
   // Vectors at BEV ? 0xBFC00100 : 0x80000000 plus 0x80 (general) or 0x40 (debug break).
   static constexpr u32 kGeneralVector = 0x80, kDebugVector = 0x40;
   void exception(Exception code, u32 coprocessor = 0, u32 vector_offset = kGeneralVector);
   bool exec_break();
   bool data_break(u32 first, u32 count, bool write);
-  bool debug_break(u32 status);
+  void take_data_break();
   void take_interrupt();
   bool interrupt_pending() const;
 
@@ -174,6 +176,7 @@ class CpuT {
   void load_unaligned(u32 instr, bool left);
   void store(u32 instr, u32 width);
   void store_unaligned(u32 instr, bool left);
+  bool write_bytes(u32 base, u32 first, u32 last, u32 data);
   bool check_address(u32 addr, u32 align_mask, Exception code);
 
   BusT& bus_;

@@ -36,9 +36,7 @@ void CpuT<BusT>::execute(u32 instr) {
     case 0x10: execute_cop0(instr); break;
     case 0x12: execute_cop2(instr); break;
     case 0x11:
-    case 0x13:  // COP1/COP3 do not exist on the PlayStation
-      exception(Exception::CopUnusable, (instr >> 26) & 3);
-      break;
+    case 0x13: execute_absent_cop(instr); break;  // COP1, COP3
     case 0x20: load(instr, 1, true); break;            // LB
     case 0x21: load(instr, 2, true); break;            // LH
     case 0x22: load_unaligned(instr, true); break;     // LWL
@@ -58,7 +56,6 @@ void CpuT<BusT>::execute(u32 instr) {
       }
       u32 addr = s + simm(instr), v;
       if (!check_address(addr, 3, Exception::AddressLoad)) break;
-      if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, 4, false)) break;
       if constexpr (kLoadShadow) wait_load();  // the GTE load is not shadowed, but waits its turn
       if (!bus_.read32(addr, v)) {
         exception(Exception::BusData);
@@ -66,6 +63,7 @@ void CpuT<BusT>::execute(u32 instr) {
       }
       wait_gte();
       gte_.write_data(rt(instr), v);
+      if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, 4, false)) take_data_break();
       break;
     }
     case 0x3A: {  // SWC2
@@ -75,10 +73,13 @@ void CpuT<BusT>::execute(u32 instr) {
       }
       u32 addr = s + simm(instr);
       if (!check_address(addr, 3, Exception::AddressStore)) break;
-      if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, 4, true)) break;
       wait_gte();
       if (cop0_.sr & Cop0::kIsC) bus_.isolated_store(addr, gte_.read_data(rt(instr)));
-      else if (!bus_.write32(addr, gte_.read_data(rt(instr)))) exception(Exception::BusData);
+      else if (!bus_.write32(addr, gte_.read_data(rt(instr)))) {
+        exception(Exception::BusData);
+        break;
+      }
+      if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, 4, true)) take_data_break();
       break;
     }
     case 0x30:
@@ -86,9 +87,7 @@ void CpuT<BusT>::execute(u32 instr) {
     case 0x33:
     case 0x38:
     case 0x39:
-    case 0x3B:  // LWC0/1/3, SWC0/1/3: no such coprocessor data path
-      exception(Exception::CopUnusable, (instr >> 26) & 3);
-      break;
+    case 0x3B: execute_absent_cop(instr); break;  // LWC0/1/3, SWC0/1/3
     default: exception(Exception::Reserved); break;
   }
 }
@@ -194,6 +193,28 @@ void CpuT<BusT>::execute_bcondz(u32 instr) {
   loop_branch(pc_ + (simm(instr) << 2), taken);
 }
 
+// Instructions for a coprocessor with no data path to the CPU: COP1/COP3 and LWC/SWC for 0, 1
+// and 3. ps1-tests cpu/cop (hardware log tests/data/ps1-tests/cpu-cop.log) shows the unusable
+// exception only while SR.CUn is clear, in kernel mode too, and nothing at all when it is set, for
+// COP1, COP3, SWC0 and SWC3. With CUn set an LWCn still reads the word (a bus read with its
+// timing and side effects) and an SWCn writes nothing, after Mednafen; both check alignment first.
+template <class BusT>
+void CpuT<BusT>::execute_absent_cop(u32 instr) {
+  using namespace cpu_detail;
+  const u32 cop = op(instr) & 3;
+  if (!(cop0_.sr & (Cop0::kCU0 << cop))) {
+    exception(Exception::CopUnusable, cop);
+    return;
+  }
+  if (op(instr) < 0x30) return;  // COP1/COP3: no coprocessor takes the command
+  const bool store = op(instr) >= 0x38;
+  const u32 addr = regs_[rs(instr)] + simm(instr);
+  if (!check_address(addr, 3, store ? Exception::AddressStore : Exception::AddressLoad) || store) return;
+  u32 v;
+  if constexpr (kLoadShadow) wait_load();
+  if (!bus_.read32(addr, v)) exception(Exception::BusData);
+}
+
 template <class BusT>
 void CpuT<BusT>::execute_cop0(u32 instr) {
   using namespace cpu_detail;
@@ -216,7 +237,8 @@ void CpuT<BusT>::execute_cop0(u32 instr) {
         case 13: v = cop0_.cause; break;
         case 14: v = cop0_.epc; break;
         case 15: v = Cop0::kPRId; break;
-        default: exception(Exception::Reserved); return;
+        case 0: case 1: case 2: case 4: case 10: exception(Exception::Reserved); return;
+        default: return;  // cop0r16-r31: no exception (psx-spx "COP0 - Misc"); rt keeps its value
       }
       delayed_load(rt(instr), v);
       break;
@@ -235,15 +257,32 @@ void CpuT<BusT>::execute_cop0(u32 instr) {
       }
       break;
     }
-    case 0x10:  // RFE (funct 0x10): pop the KU/IE stack
-      if (funct(instr) == 0x10) {
-        cop0_.sr = (cop0_.sr & ~0xFu) | ((cop0_.sr >> 2) & 0xF);
-        resume_pc_ = pc_;  // in a JR's delay slot: where the JR goes
-      } else {
-        exception(Exception::Reserved);
-      }
+    case 0x02:
+    case 0x06: exception(Exception::Reserved); break;  // CFC0/CTC0: cop0r32-r63 do not exist
+    case 0x08:
+    case 0x0C: exception(Exception::CopUnusable, 0); break;  // BC0F/BC0T (psx-spx "COP0 - Misc")
+    default:
+      if (rs(instr) >= 0x10) execute_cop0_command(instr);
+      break;  // the other rs values do nothing, as in Mednafen
+  }
+}
+
+// COP0 commands (bit 25 set, any rs from 10h): only RFE exists; the TLB commands TLBR, TLBWI,
+// TLBWR and TLBP (01h, 02h, 06h, 08h) raise RI (psx-spx "COP0 - Misc"), and the rest do nothing:
+// ps1-tests cpu/cop runs command 0 with rs = 1Fh on hardware and sees no exception. The command
+// is decoded from bits 0-4, as Mednafen does.
+template <class BusT>
+void CpuT<BusT>::execute_cop0_command(u32 instr) {
+  switch (instr & 0x1F) {
+    case 0x10:  // RFE: pop the KU/IE stack
+      cop0_.sr = (cop0_.sr & ~0xFu) | ((cop0_.sr >> 2) & 0xF);
+      resume_pc_ = pc_;  // in a JR's delay slot: where the JR goes
       break;
-    default: exception(Exception::Reserved); break;
+    case 0x01:
+    case 0x02:
+    case 0x06:
+    case 0x08: exception(Exception::Reserved); break;
+    default: break;
   }
 }
 

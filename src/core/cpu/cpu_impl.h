@@ -150,32 +150,44 @@ void CpuT<BusT>::exception(Exception code, u32 coprocessor, u32 vector_offset) {
 }
 
 // COP0 hardware breakpoints (psx-spx "COP0 - Debug Registers"): a break sets DCIC's status bits
-// and, with DCIC.TR, raises a Bp exception (ExcCode 09h, EPC/BD as for any exception) at the debug
-// vector 0x80000040 (0xBFC00140 with SR.BEV) instead of executing the instruction or making the
-// access, so the handler can clear DCIC and return to EPC to run it.
+// and raises a Bp exception (ExcCode 09h, EPC/BD as for any exception) at the debug vector
+// 0x80000040 (0xBFC00140 with SR.BEV). An execution break is taken instead of the instruction, so
+// the handler returns to EPC to run it. A data break is taken after the access: pcsx-redux's
+// hardware-run tests (src/mips/tests/cop0/cop0.c) see the matching SW and SB carried out and EPC =
+// the store, so a handler resumes at EPC+4.
 template <class BusT>
 bool CpuT<BusT>::exec_break() {
   if (((pc_ ^ cop0_.bpc) & cop0_.bpcm) != 0 || !cop0_.break_armed(Cop0::kDcicPCE)) return false;
-  return debug_break(Cop0::kDcicPC);
+  cop0_.dcic |= Cop0::kDcicDB | Cop0::kDcicPC;
+  exception(Exception::Break, 0, kDebugVector);
+  return true;
 }
 
-// An access of `count` bytes from `first` breaks when any byte it touches meets psx-spx's
+// Whether an access of `count` bytes from `first` breaks: when any byte it touches meets psx-spx's
 // condition ((addr XOR BDA) AND BDAM) = 0, so a partial or unaligned access (SB into a watched
-// word, SWL/SWR covering the watched byte) is caught as well as an exact one.
+// word, SWL/SWR covering the watched byte) is caught as well as an exact one. A break sets the
+// status bits; the caller makes the access, then take_data_break().
 template <class BusT>
 bool CpuT<BusT>::data_break(u32 first, u32 count, bool write) {
   if (!cop0_.break_armed(Cop0::kDcicDAE | (write ? Cop0::kDcicDW : Cop0::kDcicDR))) return false;
-  for (u32 a = first; a != first + count; ++a)
-    if (((a ^ cop0_.bda) & cop0_.bdam) == 0) return debug_break(Cop0::kDcicDA | (write ? Cop0::kDcicW : Cop0::kDcicR));
+  for (u32 a = first; a != first + count; ++a) {
+    if (((a ^ cop0_.bda) & cop0_.bdam) == 0) {
+      cop0_.dcic |= Cop0::kDcicDB | Cop0::kDcicDA | (write ? Cop0::kDcicW : Cop0::kDcicR);
+      return true;
+    }
+  }
   return false;
 }
 
+// The Bp exception after a data access that broke. A load's value still arrives: the access was
+// made and the instruction is complete, as the store's is (no hardware test reads the register;
+// see docs/fidelity.md).
 template <class BusT>
-bool CpuT<BusT>::debug_break(u32 status) {
-  cop0_.dcic |= Cop0::kDcicDB | status;
-  if (!(cop0_.dcic & Cop0::kDcicTR)) return false;
+void CpuT<BusT>::take_data_break() {
+  const u32 reg = new_load_reg_, value = new_load_val_;
   exception(Exception::Break, 0, kDebugVector);
-  return true;
+  new_load_reg_ = reg;
+  new_load_val_ = value;
 }
 
 template <class BusT>
@@ -235,7 +247,6 @@ void CpuT<BusT>::load(u32 instr, u32 width, bool sign) {
   using namespace cpu_detail;
   u32 addr = regs_[rs(instr)] + simm(instr);
   if (!check_address(addr, width - 1, Exception::AddressLoad)) return;
-  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, width, false)) return;
   u32 v;
   if (!timed_read(addr, width, rt(instr), v)) {
     exception(Exception::BusData);
@@ -243,6 +254,7 @@ void CpuT<BusT>::load(u32 instr, u32 width, bool sign) {
   }
   if (sign) v = width == 2 ? u32(s32(s16(v))) : u32(s32(s8(v)));
   delayed_load(rt(instr), v);
+  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, width, false)) take_data_break();
 }
 
 template <class BusT>
@@ -255,7 +267,6 @@ void CpuT<BusT>::load_unaligned(u32 instr, bool left) {
     return;
   }
   const u32 off = addr & 3;
-  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(left ? addr - off : addr, left ? off + 1 : 4 - off, false)) return;
   u32 word;
   if (!timed_read(addr & ~3u, 4, rt(instr), word)) {
     exception(Exception::BusData);
@@ -268,6 +279,8 @@ void CpuT<BusT>::load_unaligned(u32 instr, bool left) {
   u32 v = left ? (cur & (0x00FFFFFFu >> sh)) | (word << (24 - sh))
                : (cur & ~(0xFFFFFFFFu >> sh)) | (word >> sh);
   delayed_load(t, v);
+  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(left ? addr - off : addr, left ? off + 1 : 4 - off, false))
+    take_data_break();
 }
 
 template <class BusT>
@@ -275,15 +288,16 @@ void CpuT<BusT>::store(u32 instr, u32 width) {
   using namespace cpu_detail;
   u32 addr = regs_[rs(instr)] + simm(instr);
   if (!check_address(addr, width - 1, Exception::AddressStore)) return;
-  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, width, true)) return;
   u32 v = regs_[rt(instr)];
+  bool ok = true;
   if (cop0_.sr & Cop0::kIsC) {  // cache isolated: the store only touches the cache
     bus_.isolated_store(addr, v);
-    return;
+  } else {
+    // The whole register goes to the bus: memory takes the low bytes, an I/O register all of it.
+    ok = width == 4 ? bus_.write32(addr, v) : width == 2 ? bus_.write16(addr, v) : bus_.write8(addr, v);
   }
-  // The whole register goes to the bus: memory takes the low bytes, an I/O register all of it.
-  bool ok = width == 4 ? bus_.write32(addr, v) : width == 2 ? bus_.write16(addr, v) : bus_.write8(addr, v);
   if (!ok) exception(Exception::BusData);
+  else if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(addr, width, true)) take_data_break();
 }
 
 template <class BusT>
@@ -300,17 +314,19 @@ void CpuT<BusT>::store_unaligned(u32 instr, bool left) {
   u32 v = regs_[rt(instr)];
   u32 off = addr & 3, base = addr & ~3u;
   u32 first = left ? 0 : off, last = left ? off : 3;
-  if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(base + first, last - first + 1, true)) return;
-  if (cop0_.sr & Cop0::kIsC) return;
-  u32 shift = left ? 24 - 8 * off : 8 * off;  // register bits that land in byte `first`
-  u32 data = left ? v >> shift : v << shift;
   bool ok = true;
-  if (first == 0 && last == 3) {
-    ok = bus_.write32(base, data);
-  } else {
-    for (u32 b = first; b <= last && ok; ++b) ok = bus_.write8(base + b, (data >> (8 * b)) & 0xFF);
-  }
+  if (!(cop0_.sr & Cop0::kIsC)) ok = write_bytes(base, first, last, left ? v >> (24 - 8 * off) : v << (8 * off));
   if (!ok) exception(Exception::BusData);
+  else if ((cop0_.dcic & Cop0::kDcicDAE) && data_break(base + first, last - first + 1, true)) take_data_break();
+}
+
+// SWL/SWR's bus writes: bytes first..last of the word at base, from `data` (byte b in bits 8b..).
+template <class BusT>
+bool CpuT<BusT>::write_bytes(u32 base, u32 first, u32 last, u32 data) {
+  if (first == 0 && last == 3) return bus_.write32(base, data);
+  for (u32 b = first; b <= last; ++b)
+    if (!bus_.write8(base + b, (data >> (8 * b)) & 0xFF)) return false;
+  return true;
 }
 
 }  // namespace psx

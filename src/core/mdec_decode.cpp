@@ -1,5 +1,5 @@
 // MDEC decompression: run-length decoding, IDCT and colour conversion. The steps follow psx-spx;
-// the rounding is the one fitted to ps1-tests' hardware captures (see mdec_decode.h).
+// the rounding is the one that reproduces ps1-tests' hardware captures (see mdec_decode.h).
 #include "core/mdec_decode.h"
 
 #include <algorithm>
@@ -33,8 +33,8 @@ s8 clip9(s32 v) { return static_cast<s8>(std::clamp(signed9(v), -128, 127)); }
 // one fraction bit of the x/8 product remains), then an even result is moved one unit toward
 // zero, so every non-zero coefficient is odd (the DC too). q_scale 0 stores the raw value
 // times 2. Saturated to psx-spx's signed 11-bit range (no capture reaches it). Only this
-// reading brings the IDCT within rounding of the captures: Mednafen's four fraction bits and
-// psx-spx's (x + 4) / 8 leave it a level off in 15% or more of the samples.
+// reading lets the IDCT reproduce the captures: Mednafen's four fraction bits and psx-spx's
+// (x + 4) / 8 leave it a level off in 15% or more of the samples.
 s32 dequantise(s32 value, s32 factor, bool ac, bool raw) {
   s32 v = raw ? value * 4 : ac ? (value * factor * 2) >> 3 : value * factor * 2;
   if (!raw && v != 0 && (v & 1) == 0) v += v < 0 ? 1 : -1;
@@ -79,24 +79,23 @@ bool rl_decode_block(const u16* src, size_t size, size_t& pos, const QuantTable&
 }
 
 void idct(const ScaleTable& scale, const Block& blk, Samples& out) {
-  // Columns first (tmp[y][u]), then rows, with the table's upper 13 bits. The first pass keeps
-  // 7 fraction bits of each product (1 + 13 - 7) and 3 of their sum; the second keeps 8 of each
-  // product (3 + 13 - 8) and rounds their sum. This fits 99.93% of the 115,200 IDCT outputs that
-  // mdec/frame's 24-bit capture determines; every other reading of one or two truncation points
-  // fits fewer. |blk| < 2^11 and |m| <= 2^12: every sum stays far inside 32 bits.
-  std::array<s32, 64> m;
-  for (u32 i = 0; i < 64; ++i) m[i] = scale[i] >> 3;
+  // Columns first (tmp[y][u]), then rows. The first pass multiplies by the table's upper 13 bits,
+  // keeps 7 fraction bits of each product (1 + 13 - 7) and 3 of their sum; the second multiplies
+  // by the upper 12 bits, keeps 8 fraction bits of each product (3 + 12 - 7) and rounds their
+  // sum. This reproduces all 115,200 IDCT outputs that mdec/frame's 24-bit capture determines and
+  // every byte of the 8-bit heart block; moving any one truncation point by a bit loses some.
+  // |blk| < 2^11, table entries < 2^15: |tmp| < 2^15 and every sum stays inside 32 bits.
   std::array<s32, 64> tmp;
   for (u32 u = 0; u < 8; ++u)
     for (u32 y = 0; y < 8; ++y) {
       s32 sum = 0;
-      for (u32 v = 0; v < 8; ++v) sum += (blk[v * 8 + u] * m[v * 8 + y]) >> 7;
+      for (u32 v = 0; v < 8; ++v) sum += (blk[v * 8 + u] * (scale[v * 8 + y] >> 3)) >> 7;
       tmp[y * 8 + u] = sum >> 4;
     }
   for (u32 y = 0; y < 8; ++y)
     for (u32 x = 0; x < 8; ++x) {
       s32 sum = 0;
-      for (u32 u = 0; u < 8; ++u) sum += (tmp[y * 8 + u] * m[u * 8 + x]) >> 8;
+      for (u32 u = 0; u < 8; ++u) sum += (tmp[y * 8 + u] * (scale[u * 8 + x] >> 4)) >> 7;
       out[y * 8 + x] = clip9((sum + 0x80) >> 8);
     }
 }

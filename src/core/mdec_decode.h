@@ -2,8 +2,8 @@
 // with the quant table, the matrix IDCT with the uploaded scale table, and the YUV->RGB and Y->mono
 // conversions of a macroblock. Pure functions, so they can be tested without the register file.
 // The arithmetic (coefficient precision, where each IDCT pass drops bits, the colour factors and
-// the 15-bit rounding) was fitted to ps1-tests' hardware captures (docs/fidelity.md): psx-spx's
-// own pseudo code is off by a level in about half the pixels of those captures.
+// the 15-bit rounding) reproduces ps1-tests' hardware captures bit for bit (docs/fidelity.md):
+// psx-spx's pseudo code and Mednafen's arithmetic are a level off in many of their pixels.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -27,9 +27,9 @@ extern const std::array<u8, 64> kZigzag;
 // leaves `pos` unchanged when the data ends before the block does.
 bool rl_decode_block(const u16* src, size_t size, size_t& pos, const QuantTable& qt, Block& blk);
 
-// The hardware IDCT: two passes of a matrix multiply by the scale table's upper 13 bits, each
-// product and each pass truncated to a fixed precision, the result rounded, wrapped to 9 bits and
-// saturated to signed 8 bits.
+// The hardware IDCT: two passes of a matrix multiply by the scale table (its upper 13 bits, then
+// its upper 12), each product and the first pass's sums truncated to a fixed precision, the result
+// rounded, wrapped to 9 bits and saturated to signed 8 bits.
 void idct(const ScaleTable& scale, const Block& blk, Samples& out);
 
 // 16x16 pixels, 3 unsigned components (R, G, B) each, from Cr, Cb (8x8, upsampled) and Y1..Y4:

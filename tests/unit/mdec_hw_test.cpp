@@ -121,19 +121,12 @@ TEST_F(MdecHardware, FourBitHeartBlockMatchesTheConsoleByteForByte) {
   for (u32 i = 0; i < 32; ++i) EXPECT_EQ((out[i / 4] >> (8 * (i % 4))) & 0xFF, want[i]) << "byte " << i;
 }
 
-TEST_F(MdecHardware, EightBitHeartBlockIsWithinOneLevelOfTheConsole) {
+TEST_F(MdecHardware, EightBitHeartBlockMatchesTheConsoleByteForByte) {
+  // Mednafen's arithmetic: 54 of the 64 bytes; psx-spx's pseudo code: 48.
   std::vector<u8> want = hexdump_bytes("8bit-psx.log");
   ASSERT_EQ(want.size(), 64u);
   std::vector<u32> out = decode(1, "heart.mdec", 16);
-  int exact = 0;
-  for (u32 i = 0; i < 64; ++i) {
-    int got = (out[i / 4] >> (8 * (i % 4))) & 0xFF;
-    EXPECT_LE(std::abs(got - want[i]), 1) << "byte " << i;
-    exact += got == want[i];
-  }
-  // 63 of the 64 bytes agree (the IDCT fitted to mdec/frame; Mednafen's arithmetic: 54, psx-spx's
-  // pseudo code: 48); the last is a tie the fitted truncation points resolve the other way.
-  EXPECT_GE(exact, 63);
+  for (u32 i = 0; i < 64; ++i) EXPECT_EQ((out[i / 4] >> (8 * (i % 4))) & 0xFF, want[i]) << "byte " << i;
 }
 
 // Counts the picture's pixels (320x240 in 15-bit, 480x240 halfwords in 24-bit) that differ from
@@ -161,22 +154,19 @@ TEST_F(MdecHardware, FifteenBitFrameMatchesTheConsoleCapture) {
   std::vector<u16> got = frame(3);
   FrameDiff d = compare(got, vram_image("frame-vram-15bit.png"), 320);
   RecordProperty("differing_pixels", d.pixels);
-  // Every pixel within one level, and 39 of the 76,800 one level off somewhere: the colour
-  // conversion and 15-bit rounding reproduce every pixel from the samples the 24-bit capture
-  // determines, so these are the IDCT's last ties (Mednafen's arithmetic: 15,133; psx-spx's pseudo
-  // code with a truncating 15-bit conversion: 62,204).
+  // Every pixel as captured (before: 14,493 one level off; Mednafen's arithmetic: 15,133;
+  // psx-spx's pseudo code with a truncating 15-bit conversion: 62,204).
   EXPECT_EQ(d.far, 0);
-  EXPECT_LE(d.pixels, 39) << "of 76800";
+  EXPECT_EQ(d.pixels, 0) << "of 76800";
 }
 
 TEST_F(MdecHardware, TwentyFourBitFrameMatchesTheConsoleCapture) {
   std::vector<u16> got = frame(2);
   FrameDiff d = compare(got, vram_image("frame-vram-24bit.png"), 480);
   RecordProperty("differing_halfwords", d.pixels);
-  // 180 of the 115,200 halfwords differ, by a level in a byte: 75 of the 115,200 IDCT samples the
-  // capture determines are ties resolved the other way (Mednafen's arithmetic: 37,157 halfwords;
-  // psx-spx's pseudo code: 75,103).
-  EXPECT_LE(d.pixels, 180) << "of 115200";
+  // Every halfword as captured (before: 33,742 differed; Mednafen's arithmetic: 37,157; psx-spx's
+  // pseudo code: 75,103).
+  EXPECT_EQ(d.pixels, 0) << "of 115200";
 }
 
 // ps1-tests mdec/step-by-step-log: four macroblocks in 15-bit colour (unsigned, bit 15 clear),
@@ -201,9 +191,9 @@ TEST_F(MdecHardware, FifteenBitRegisterReadsMatchTheConsoleLog) {
     differing += ((got ^ want[i]) >> 16) != 0;
   }
   RecordProperty("differing_pixels", differing);
-  // 4 of the 1024 pixels differ (one Cr sample, an IDCT tie, one level low in red; before the
-  // fitted IDCT and 15-bit rounding: 87). This data took no part in the fit.
-  EXPECT_LE(differing, 4) << "of 1024";
+  // Every pixel as the console read it (before: 87 of the 1024 differed). This data took no part
+  // in choosing the arithmetic.
+  EXPECT_EQ(differing, 0) << "of 1024";
 }
 
 }  // namespace

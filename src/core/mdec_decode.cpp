@@ -85,17 +85,21 @@ void idct(const ScaleTable& scale, const Block& blk, Samples& out) {
   // sum. This reproduces all 115,200 IDCT outputs that mdec/frame's 24-bit capture determines and
   // every byte of the 8-bit heart block; moving any one truncation point by a bit loses some.
   // |blk| < 2^11, table entries < 2^15: |tmp| < 2^15 and every sum stays inside 32 bits.
-  std::array<s32, 64> tmp;
+  std::array<s32, 64> m13, m12, tmp;
+  for (u32 i = 0; i < 64; ++i) {
+    m13[i] = scale[i] >> 3;
+    m12[i] = scale[i] >> 4;
+  }
   for (u32 u = 0; u < 8; ++u)
     for (u32 y = 0; y < 8; ++y) {
       s32 sum = 0;
-      for (u32 v = 0; v < 8; ++v) sum += (blk[v * 8 + u] * (scale[v * 8 + y] >> 3)) >> 7;
+      for (u32 v = 0; v < 8; ++v) sum += (blk[v * 8 + u] * m13[v * 8 + y]) >> 7;
       tmp[y * 8 + u] = sum >> 4;
     }
   for (u32 y = 0; y < 8; ++y)
     for (u32 x = 0; x < 8; ++x) {
       s32 sum = 0;
-      for (u32 u = 0; u < 8; ++u) sum += (tmp[y * 8 + u] * (scale[u * 8 + x] >> 4)) >> 7;
+      for (u32 u = 0; u < 8; ++u) sum += (tmp[y * 8 + u] * m12[u * 8 + x]) >> 7;
       out[y * 8 + x] = clip9((sum + 0x80) >> 8);
     }
 }

@@ -60,7 +60,8 @@ bool rl_decode_block(const u16* src, size_t size, size_t& pos, const QuantTable&
   blk.fill(0);
   u16 n = src[p++];
   const s32 q_scale = (n >> 10) & 0x3F;
-  // q_scale 0 stores values in raster order, unquantised (psx-spx); the DC uses the table alone.
+  // q_scale 0 stores raw values times 2 in raster order (psx-spx); otherwise the DC is scaled by
+  // the table alone, without q_scale.
   auto at = [&](u32 k) -> s32& { return blk[q_scale ? kZagzig[k] : k]; };
   at(0) = dequantise(signed10(n), qt[0], false, q_scale == 0);
   for (u32 k = 0;;) {

@@ -160,7 +160,7 @@ bool Mdec::decode_macroblock() {
     for (u32 b = 0; b < 4; ++b) {
       if (!mdec::rl_decode_block(src, size, pos, iq_y_, blk)) return false;
       mdec::idct(scale_, blk, y);
-      mdec::yuv_to_rgb(cr, cb, y, (b & 1) * 8, (b >> 1) * 8, rgb);
+      mdec::yuv_to_rgb(cr, cb, y, (b & 1) * 8, (b >> 1) * 8, depth() == 3, rgb);
     }
     pack_colour(rgb);
   } else {

@@ -1,9 +1,9 @@
 // MDEC decompression steps (psx-spx "MDEC Decompression"): run-length decoding of one 8x8 block
 // with the quant table, the matrix IDCT with the uploaded scale table, and the YUV->RGB and Y->mono
 // conversions of a macroblock. Pure functions, so they can be tested without the register file.
-// The arithmetic (coefficient fraction bits, where each IDCT pass rounds, the colour factors) is
-// the one that comes closest to ps1-tests' hardware captures (docs/fidelity.md): psx-spx's own
-// pseudo code is off by a level in about half the pixels of those captures.
+// The arithmetic (coefficient precision, where each IDCT pass drops bits, the colour factors and
+// the 15-bit rounding) reproduces ps1-tests' hardware captures bit for bit (docs/fidelity.md):
+// psx-spx's pseudo code and Mednafen's arithmetic are a level off in many of their pixels.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -12,7 +12,7 @@
 
 namespace psx::mdec {
 
-// Coefficients in 1/16 units (the hardware keeps four fraction bits after dequantisation).
+// Coefficients in 1/2 units (the hardware keeps one fraction bit after dequantisation).
 using Block = std::array<s32, 64>;
 using QuantTable = std::array<u8, 64>;
 using ScaleTable = std::array<s16, 64>;
@@ -27,18 +27,21 @@ extern const std::array<u8, 64> kZigzag;
 // leaves `pos` unchanged when the data ends before the block does.
 bool rl_decode_block(const u16* src, size_t size, size_t& pos, const QuantTable& qt, Block& blk);
 
-// The hardware IDCT: two passes of a plain matrix multiply by the scale table's upper 13 bits,
-// the result wrapped to 9 bits and saturated to signed 8 bits.
+// The hardware IDCT: two passes of a matrix multiply by the scale table (its upper 13 bits, then
+// its upper 12), each product and the first pass's sums truncated to a fixed precision, the result
+// rounded, wrapped to 9 bits and saturated to signed 8 bits.
 void idct(const ScaleTable& scale, const Block& blk, Samples& out);
 
-// 16x16 pixels, 3 unsigned bytes (R, G, B) each, from Cr, Cb (8x8, upsampled) and Y1..Y4.
+// 16x16 pixels, 3 unsigned components (R, G, B) each, from Cr, Cb (8x8, upsampled) and Y1..Y4:
+// 8-bit components for 24-bit output, 5-bit ones (0..31) for 15-bit output.
 using Rgb16x16 = std::array<u8, 16 * 16 * 3>;
-void yuv_to_rgb(const Samples& cr, const Samples& cb, const Samples& y, u32 xx, u32 yy, Rgb16x16& out);
+void yuv_to_rgb(const Samples& cr, const Samples& cb, const Samples& y, u32 xx, u32 yy, bool five_bit,
+                Rgb16x16& out);
 
 // 8-bit output byte of a sample; 4-bit output nibble (rounded, psx-spx "4bit mono").
 u8 mono8(s8 y, bool is_signed);
 u8 mono4(s8 y, bool is_signed);
-// 15-bit output: the unsigned 8-bit components rounded to 5 bits (saturating).
+// 15-bit output halfword (bit 15 clear) of three unsigned 5-bit components.
 u16 rgb15(const u8* rgb, bool is_signed);
 
 }  // namespace psx::mdec

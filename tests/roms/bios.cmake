@@ -6,3 +6,4 @@ psx_add_rom_test(bios_interrupts SOURCES bios_interrupts.c bios_calls.S CHECKS 3
 psx_add_rom_test(bios_kernel SOURCES bios_kernel.c bios_calls.S CHECKS 43)
 psx_add_rom_test(bios_entry SOURCES bios_entry.c CHECKS 9)
 psx_add_rom_test(bios_load_delay SOURCES bios_load_delay.c bios_calls.S CHECKS 6)
+psx_add_rom_test(bios_exceptions SOURCES bios_exceptions.c bios_calls.S CHECKS 5)

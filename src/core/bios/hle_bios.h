@@ -149,11 +149,12 @@ class HleBios {
   void exception();
   void syscall();
   void kernel_stub_syscall();
-  void fail_exception(u32 code);
+  void fail_exception();
   void save_thread_registers();
   void return_from_exception();
   void dispatch_next();
   bool run_native(u32 id);
+  bool unresolved_exception();
   bool rcnt_handler(u32 counter);
   bool pad_handler();
   bool def_int();

@@ -77,13 +77,15 @@ CompatRun run_compat(const CompatProgram& program, const CompatSettings& setting
   console.set_sound_observed(false);
   // With a BIOS an EXE starts when the BIOS reaches its shell entry: the frames before that are
   // the BIOS's own, so the program's frames are counted from its start, as under the HLE kernel,
-  // and the two runs end on the same frame of the program.
-  // The frame in which the BIOS hands over is counted as the BIOS's.
+  // and the two runs end on the same frame of the program. A frame ends at a VBlank, so the
+  // frame in which the BIOS hands over is the program's first, as the HLE kernel's first frame
+  // is: both runs end on the program's settings.frames-th VBlank.
   std::uint64_t bios_frames = 0;
   try {
     while (console.exe_pending() && console.frames() < kBiosBootFrames && !console.stopped()) console.run_frame();
-    bios_frames = console.frames();
-    if (!console.exe_pending()) console.run_frames(settings.frames);
+    const bool handed_over = console.frames() > 0 && !console.exe_pending();
+    bios_frames = handed_over ? console.frames() - 1 : console.frames();
+    if (!console.exe_pending()) console.run_frames(settings.frames - (handed_over ? 1 : 0));
   } catch (const std::exception& e) {
     run.stop = std::string("emulator error: ") + e.what();
     run.failed = true;

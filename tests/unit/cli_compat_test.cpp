@@ -230,6 +230,27 @@ TEST_F(CompatCommand, HleAndBiosRunsOfTheSamePictureAgree) {
   EXPECT_EQ(html.find("</tr>", hle_img), html.find("</tr>", bios_img));
 }
 
+// The boot ROM hands over in the middle of a frame: that frame is the program's first, as the HLE
+// kernel's first frame is, so a picture that changes at every VBlank agrees at the end of both.
+// (Counted as the BIOS's, the program saw one VBlank more under the ROM: another colour.)
+TEST_F(CompatCommand, HleAndBiosRunsEndOnTheSameVblankOfTheProgram) {
+  const fs::path out = dir_ / "report";
+  const std::string exe = (kRoms / "compat_frames.exe").string();
+  const Result r = run(exe + " --frames 30 --quiet --bios " + (kRoms / "bootrom.bin").string() + " --out " +
+                       out.string());
+  EXPECT_EQ(r.code, 0) << r.out;
+  const auto table = rows(slurp(out / "report.md"));
+  const auto* hle = find_row(table, exe, "HLE");
+  const auto* bios = find_row(table, exe, "BIOS");
+  ASSERT_NE(hle, nullptr);
+  ASSERT_NE(bios, nullptr);
+  EXPECT_EQ((*hle)[3], "30");
+  EXPECT_EQ((*bios)[3], "30");
+  EXPECT_EQ((*hle)[5], "1");
+  EXPECT_EQ((*bios)[6], (*hle)[6]);
+  EXPECT_EQ((*bios)[7], "yes");
+}
+
 // A BIOS that never reaches the shell entry (the cdboot ROM waits for a disc) never loads the EXE.
 TEST_F(CompatCommand, AnExeTheBiosNeverLoadsDidNotBoot) {
   const fs::path out = dir_ / "report";

@@ -47,8 +47,10 @@
 // is on acknowledge and return), the pad handler (chain 2, after StartPad: reads both pads into
 // the InitPad buffers at VBlank) and DefInt (C0h:0Ch, chain 3: delivers F000000xh/1000h for each
 // pending IRQ and acknowledges those SetIrqAutoAck turned on). Other exceptions (break, address
-// errors...) deliver F0000010h/1000h; unless a handler returns from the exception, the console
-// stops with a message. Program functions are called with ra pointing at a kernel stub that
+// errors...) reach the syscall handler's element, which delivers F0000010h/1000h and calls
+// A0h:40h through the A table: a program's replacement resolves the exception; with the
+// kernel's own entry the console stops with a message. A load in flight when the CPU reaches a
+// vector lands before the kernel runs (land_pending_load). Program functions are called with ra pointing at a kernel stub that
 // executes SYSCALL, which hands control back. A program that returns from its entry point stops
 // the console. With a real BIOS the console keeps only the putchar hooks and the shell hook.
 #pragma once
@@ -128,6 +130,7 @@ class HleBios {
   void call_a0(u32 fn);
   void call_b0(u32 fn);
   void call_c0(u32 fn);
+  void land_pending_load();
   void return_to_caller(u32 v0);
   void unsupported(const char* table, u32 fn);
   bool tty_call(u32 table, u32 fn);
@@ -148,11 +151,12 @@ class HleBios {
   void exception();
   void syscall();
   void kernel_stub_syscall();
-  void fail_exception(u32 code);
+  void fail_exception();
   void save_thread_registers();
   void return_from_exception();
   void dispatch_next();
   bool run_native(u32 id);
+  bool unresolved_exception();
   bool rcnt_handler(u32 counter);
   bool pad_handler();
   bool def_int();

@@ -37,26 +37,20 @@ void HleBios::exception() {
   unresolved_ = code != static_cast<u32>(Exception::Interrupt);
   chain_prio_ = 0;
   chain_elem_ = chain_head(0);
-  if (unresolved_) {
-    // Not an interrupt: the syscall handler delivers "unknown exception" to whoever opened it
-    // (psyqo resolves its BREAK codes so); the chains are not walked.
-    chain_prio_ = 4;
-    chain_elem_ = 0;
-    deliver_event(0xF0000010, 0x1000);
-  } else {
-    // The hardware executes a GTE command at the interrupted address before taking the
-    // interrupt, so the BIOS resumes after it (psx-spx "COP0 - Interrupt Handling").
-    u32 tcb = current_tcb(), epc = peek32(tcb + kTcbEpc);
-    if (!(c.cause & Cop0::kBD) && (peek32(epc) >> 25) == 0x25) poke32(tcb + kTcbEpc, epc + 4);
-  }
+  // The hardware executes a GTE command at the interrupted address before taking the
+  // interrupt, so the BIOS resumes after it (psx-spx "COP0 - Interrupt Handling").
+  u32 tcb = current_tcb(), epc = peek32(tcb + kTcbEpc);
+  if (!unresolved_ && !(c.cause & Cop0::kBD) && (peek32(epc) >> 25) == 0x25) poke32(tcb + kTcbEpc, epc + 4);
   dispatch_next();
 }
 
-void HleBios::fail_exception(u32 code) {
-  Cop0& c = cpu_.cop0();
+// Cause and EPC as the exception saved them in the TCB (an event callback run since has taken
+// the kernel's return SYSCALL, which changed the COP0 registers).
+void HleBios::fail_exception() {
+  u32 tcb = current_tcb(), cause = peek32(tcb + kTcbCause);
   char msg[128];
-  std::snprintf(msg, sizeof msg, "unhandled CPU exception %u (Cause 0x%08X) at EPC 0x%08X, BadVaddr 0x%08X", code,
-                c.cause, c.epc, c.badvaddr);
+  std::snprintf(msg, sizeof msg, "unhandled CPU exception %u (Cause 0x%08X) at EPC 0x%08X, BadVaddr 0x%08X",
+                (cause >> 2) & 0x1F, cause, peek32(tcb + kTcbEpc), cpu_.cop0().badvaddr);
   dispatching_ = false;
   if (on_fatal) on_fatal(msg);
   cpu_.stop();
@@ -141,10 +135,6 @@ void HleBios::dispatch_next() {
       return_from_exception();
       return;
     }
-    if (unresolved_) {
-      fail_exception((cpu_.cop0().cause >> 2) & 0x1F);
-      return;
-    }
     if (!chain_elem_) {
       if (++chain_prio_ >= 4) break;
       chain_elem_ = chain_head(chain_prio_);
@@ -161,6 +151,11 @@ void HleBios::dispatch_next() {
       call_guest(func1, 0, {Resume::kChainFunc1, func2, 1});
       return;
     }
+  }
+  // A non-interrupt exception that reached no handler of the program's.
+  if (unresolved_) {
+    fail_exception();
+    return;
   }
   // All chains done: longjmp through the exit buffer with v0 = 1 (ra, sp, fp, s0-s7, gp).
   dispatching_ = false;
@@ -221,8 +216,31 @@ bool HleBios::run_native(u32 id) {
     case kRcnt0: return rcnt_handler(0);
     case kPad: return pad_handler();
     case kDefInt: return def_int();
-    default: return false;  // the syscall handler: SYSCALL never reaches the chains here
+    case kSyscallHandler: return unresolved_exception();
+    default: return false;
   }
+}
+
+// The syscall handler's part for other exceptions (SYSCALL never reaches the chains here): for
+// anything but an interrupt it delivers F0000010h/1000h, then calls A0h:40h
+// SystemErrorUnresolvedException through the A table (psx-spx "BIOS Interrupt/Exception
+// Handling"; OpenBIOS handlers/syscall.c, syscallVerifier). Programs replace that entry to
+// resolve exceptions themselves (ps1-tests' hookUnresolvedExceptionHandler edits the TCB's EPC
+// and returns); the walk then goes on and the exit buffer resumes the program. The kernel's own
+// entry shows the error and hangs on a BIOS: here the console stops, once the event's
+// callbacks have run (one may return from the exception instead).
+bool HleBios::unresolved_exception() {
+  if (!unresolved_) return false;
+  deliver_event(0xF0000010, 0x1000);
+  u32 entry = peek32(kTableA + 4 * 0x40);
+  if (entry == kStubs + 8 * 0x40) {
+    chain_prio_ = 3;  // ends the walk: dispatch_next() stops the console after the callbacks
+    chain_elem_ = 0;
+    return false;
+  }
+  unresolved_ = false;
+  callbacks_.push_back(entry);
+  return false;
 }
 
 // DefInt: an event per pending IRQ (IRQ6, timer 2, uses timer 1's class, as the BIOS does:
@@ -340,7 +358,10 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
       default: return false;
     }
   }
-  const u32 t = a0, base = 0xBF801100 + 16 * a0;
+  // The SDKs pass a counter's event class (F200000xh, "RCntCNTx"); the kernel uses its low 16
+  // bits (OpenBIOS handlers/irq.c: initTimer, enableTimerIRQ, disableTimerIRQ, restartTimer;
+  // its getTimer takes the number as it is).
+  const u32 t = a0 & 0xFFFF, base = 0xBF801100 + 16 * t;
   switch (fn) {
     case 0x02: {  // SetRCnt (init_timer): mode from the flags, psx-spx "BIOS Timer Functions"
       if (t > 2) {
@@ -356,7 +377,7 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
       return_to_caller(1);
       return true;
     }
-    case 0x03: return_to_caller(t <= 2 ? io_read(base, 2) : 0); return true;  // GetRCnt
+    case 0x03: return_to_caller(a0 <= 2 ? io_read(base, 2) : 0); return true;  // GetRCnt
     case 0x04:                                                                 // StartRCnt
       io_write(kIMask, io_read(kIMask, 4) | (t == 3 ? 1u : 1u << (4 + (t & 3))), 4);
       return_to_caller(t <= 2 ? 1 : 0);

@@ -55,6 +55,10 @@ void Bus::update_read_cycles() {
       read_cycles_[r - kExp1Delay][w >> 1] = memory_read_cycles(memctrl_[r], memctrl_[kComDelay], w) - 1;
 }
 
+Cycles Bus::dma_word_cycles(DelayRegion r) const {
+  return psx::dma_word_cycles(memctrl_[r], memctrl_[kComDelay]);
+}
+
 Cycles Bus::io_read_cycles(u32 p, u32 width) const {
   if (p >= kExp2Base) return read_cycles(kExp2Delay, width);
   if (p >= kSpuBase && p < kSpuEnd) return read_cycles(kSpuDelay, width);

@@ -239,6 +239,8 @@ class Bus {
   enum DelayRegion : u32 { kExp1Delay = 2, kExp3Delay, kBiosDelay, kSpuDelay, kCdromDelay, kExp2Delay };
   // Extra cycles of a `width`-byte read from a Delay/Size region under the current settings.
   Cycles read_cycles(DelayRegion r, u32 width) const { return read_cycles_[r - kExp1Delay][width >> 1]; }
+  // Cycles a DMA channel spends per word on a Delay/Size region's bus (memory_control.h).
+  Cycles dma_word_cycles(DelayRegion r) const;
 
  private:
   bool fetch_slow(u32 vaddr, u32& word, Cycles busy_until);

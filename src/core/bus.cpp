@@ -127,6 +127,13 @@ bool Bus::fetch_slow(u32 vaddr, u32& word, Cycles busy_until) {
   return true;
 }
 
+void Bus::fill_line_ahead(u32 vaddr, Cycles busy_until) {
+  const u32 p = physical(vaddr);
+  if ((vaddr & 3) || !cached_code(vaddr) || icache_.hit(vaddr, p) || !code_memory(p)) return;
+  u32 word;
+  fetch_slow(vaddr, word, busy_until);
+}
+
 // peek_code() outside RAM (the BIOS ROM) or misaligned.
 bool Bus::peek_code_elsewhere(u32 vaddr, u32 p, u32& word) const {
   const u8* mem = code_memory(p);

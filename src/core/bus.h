@@ -132,6 +132,11 @@ class Bus {
   // I/O region (physical 1F801000h-1F802FFFh); false, with nothing written, anywhere else. For
   // the recompiler's store calls, whose native code makes the RAM and scratchpad stores itself.
   bool write_io(u32 vaddr, u32 v, u32 width);
+  // An i-cache miss at vaddr filled now, as fetch() would fill it (waiting for `busy_until`
+  // first); nothing where fetch() would hit, read uncached memory or fail. For the CPU's stores
+  // to I/O: the refill of the next instruction's line takes the bus before the store, which waits
+  // in the write queue.
+  void fill_line_ahead(u32 vaddr, Cycles busy_until);
   // Whether vaddr lies in the I/O region, where read_io() and write_io() reach.
   static bool io_address(u32 vaddr) {
     const u32 p = physical(vaddr);

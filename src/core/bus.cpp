@@ -55,6 +55,10 @@ void Bus::update_read_cycles() {
       read_cycles_[r - kExp1Delay][w >> 1] = memory_read_cycles(memctrl_[r], memctrl_[kComDelay], w) - 1;
 }
 
+Cycles Bus::dma_word_cycles(DelayRegion r) const {
+  return psx::dma_word_cycles(memctrl_[r], memctrl_[kComDelay]);
+}
+
 Cycles Bus::io_read_cycles(u32 p, u32 width) const {
   if (p >= kExp2Base) return read_cycles(kExp2Delay, width);
   if (p >= kSpuBase && p < kSpuEnd) return read_cycles(kSpuDelay, width);
@@ -135,6 +139,13 @@ bool Bus::fetch_slow(u32 vaddr, u32& word, Cycles busy_until) {
   }
   word = icache_.code(vaddr);
   return true;
+}
+
+void Bus::fill_line_ahead(u32 vaddr, Cycles busy_until) {
+  const u32 p = physical(vaddr);
+  if ((vaddr & 3) || !cached_code(vaddr) || icache_.hit(vaddr, p) || !code_memory(p)) return;
+  u32 word;
+  fetch_slow(vaddr, word, busy_until);
 }
 
 // peek_code() outside RAM (the BIOS ROM) or misaligned.

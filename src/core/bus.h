@@ -132,6 +132,11 @@ class Bus {
   // I/O region (physical 1F801000h-1F802FFFh); false, with nothing written, anywhere else. For
   // the recompiler's store calls, whose native code makes the RAM and scratchpad stores itself.
   bool write_io(u32 vaddr, u32 v, u32 width);
+  // An i-cache miss at vaddr filled now, as fetch() would fill it (waiting for `busy_until`
+  // first); nothing where fetch() would hit, read uncached memory or fail. For the CPU's stores
+  // to I/O: the refill of the next instruction's line takes the bus before the store, which waits
+  // in the write queue.
+  void fill_line_ahead(u32 vaddr, Cycles busy_until);
   // Whether vaddr lies in the I/O region, where read_io() and write_io() reach.
   static bool io_address(u32 vaddr) {
     const u32 p = physical(vaddr);
@@ -239,6 +244,8 @@ class Bus {
   enum DelayRegion : u32 { kExp1Delay = 2, kExp3Delay, kBiosDelay, kSpuDelay, kCdromDelay, kExp2Delay };
   // Extra cycles of a `width`-byte read from a Delay/Size region under the current settings.
   Cycles read_cycles(DelayRegion r, u32 width) const { return read_cycles_[r - kExp1Delay][width >> 1]; }
+  // Cycles a DMA channel spends per word on a Delay/Size region's bus (memory_control.h).
+  Cycles dma_word_cycles(DelayRegion r) const;
 
  private:
   bool fetch_slow(u32 vaddr, u32& word, Cycles busy_until);

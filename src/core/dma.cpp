@@ -304,9 +304,8 @@ void Dma::from_device(u32 ch, u32 addr, u32 count, bool backward) {
 
 void Dma::charge(u32 ch, u32 words) {
   // psx-spx lists CD-ROM DMA at 24 clocks a word with the BIOS's CDROM Delay/Size setting and 40
-  // with the games' one: exactly a 32-bit CPU read under 0x00020843 (25 cycles) and 0x00020943
-  // (41) less the CPU's issue cycle, so the rate follows the register.
-  u64 per256 = ch == Cdrom ? 256 * bus_.read_cycles(Bus::kCdromDelay, 4) : kClocksPer256Words[ch];
+  // with the games' one: the rate follows the register (Bus::dma_word_cycles).
+  u64 per256 = ch == Cdrom ? 256 * bus_.dma_word_cycles(Bus::kCdromDelay) : kClocksPer256Words[ch];
   u64 total = charge_frac_ + u64{words} * per256;
   sched_.advance(total / 256);
   charge_frac_ = static_cast<u32>(total % 256);

@@ -16,3 +16,8 @@ psx_add_rom_test(timers_video SOURCES timers_video.c CHECKS 24)
 psx_add_rom_test(dma_list_end SOURCES dma_list_end.c CHECKS 38)
 # timers_dots (issue 59 item 3): one check per display mode, 5 widths x NTSC/PAL = 10.
 psx_add_rom_test(timers_dots SOURCES timers_dots.c CHECKS 10)
+# timers_reset (issue 59 item 3): 3 reads after a reset, each after a check that the count had
+# passed 10 = 6. Run by both CPUs: the recompiler makes I/O stores natively.
+psx_add_rom_test(timers_reset SOURCES timers_reset.c timers_reset.S CHECKS 6)
+psx_add_run_test(rom.timers_reset_recompiler CODE 0 CHECKS 6
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/timers_reset.exe --frames 600 --expect-exit --cpu recompiler)

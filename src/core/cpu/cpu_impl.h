@@ -293,6 +293,13 @@ void CpuT<BusT>::store(u32 instr, u32 width) {
   if (cop0_.sr & Cop0::kIsC) {  // cache isolated: the store only touches the cache
     bus_.isolated_store(addr, v);
   } else {
+    // A store waits in the write queue while the pipeline stalls for an i-cache refill of the next
+    // instruction, so an I/O register sees the store only after the refill (pcsx-redux
+    // src/mips/tests/timers, hardware checked: a counter read right after the MODE write that
+    // resets it reads below 10, the read being the first instruction of a line or not).
+    if constexpr (kLoadShadow) {
+      if (BusT::io_address(addr)) bus_.fill_line_ahead(pc_, load_done_at_);
+    }
     // The whole register goes to the bus: memory takes the low bytes, an I/O register all of it.
     ok = width == 4 ? bus_.write32(addr, v) : width == 2 ? bus_.write16(addr, v) : bus_.write8(addr, v);
   }

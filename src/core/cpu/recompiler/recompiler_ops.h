@@ -152,11 +152,15 @@ u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address) {
   return v;
 }
 
-// What CpuT::store() does past its checks: the whole register to the port (Bus::write(), which
-// lets a narrow store write all of an I/O register); false where the address is no I/O port.
+// What CpuT::store() does past its checks: the refill of the next instruction's line first, then
+// the whole register to the port (Bus::write(), which lets a narrow store write all of an I/O
+// register); false where the address is no I/O port.
 template <class BusT>
 template <NativeOp K>
 bool RecompilerT<BusT>::port_write(Cpu& c, u32 address, u32 value) {
+  if constexpr (Cpu::kLoadShadow) {  // as CpuT::store() (pc_: the next instruction)
+    if (BusT::io_address(address)) c.bus_.fill_line_ahead(c.pc_, c.load_done_at_);
+  }
   return c.bus_.write_io(address, value, access_width(K));
 }
 

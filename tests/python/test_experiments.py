@@ -77,7 +77,7 @@ def test_every_study_has_a_test():
 
 # The full studies as their files state them: configurations, seeds, episodes.
 FULL = {"agents": (10, [0, 1, 2], "1000"), "discount": (2, [0, 1, 2, 3, 4], "300"),
-        "exploration": (2, [0, 1, 2, 3, 4], "300"), "generalisation": (1, [0, 1, 2, 3, 4], "300"), "output-layer": (2, list(range(33)), "100"),
+        "exploration": (2, [0, 1, 2, 3, 4], "300"), "generalisation": (1, [0, 1, 2], "200"), "output-layer": (2, list(range(33)), "100"),
         "stability": (6, [1, 2, 3], "300")}
 
 

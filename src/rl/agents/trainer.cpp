@@ -276,7 +276,7 @@ void Trainer::restore() {
   write_metrics_from_records();
 }
 
-void Trainer::save() const {
+void Trainer::save(bool curve) const {
   Checkpoint c;
   c.meta = meta_;
   ByteWriter agent, trainer;
@@ -286,7 +286,7 @@ void Trainer::save() const {
   c.agent = agent.take_string();
   c.trainer = trainer.take_string();
   write_checkpoint(file(kCheckpointFile), c);
-  write_learning_curve(file("learning_curve.png"), records_);
+  if (curve) write_learning_curve(file("learning_curve.png"), records_);
 }
 
 // The metric files always match the checkpoint's records: a resumed run drops rows written after

@@ -1,7 +1,7 @@
 // `psxrl train` without the command line: the seed's training loop (§4.2.1: nine ε-greedy
 // training episodes, then one greedy test episode), experience from one or K environments
-// stepped in parallel, per-episode metrics (CSV and JSON Lines), a learning-curve PNG and a
-// checkpoint after every episode, and exact resumption from it (one environment).
+// stepped in parallel, per-episode metrics (CSV and JSON Lines) and a checkpoint after every
+// episode, a learning-curve PNG after every test, and exact resumption (one environment).
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -110,7 +110,7 @@ class Trainer {
   void offer_state(Slot& s);
   bool learn_from_move(Slot& s, const Progress& progress);
   bool end_episode(Slot& s, const Progress& progress);
-  void save() const;
+  void save(bool curve) const;  // the checkpoint, and with `curve` learning_curve.png
   void restore();
   void write_metrics_from_records() const;
   void append_metrics(const EpisodeRecord& r) const;

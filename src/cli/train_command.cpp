@@ -93,6 +93,12 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, 
   app.add_option("--lr", o.lr, "dqn: Adam learning rate (default 0.004 visual/multimodal, else 0.0025)")
       ->type_name("LR");
   app.add_option("--hidden", o.hidden, "dqn: width of the 4 hidden layers (default 32)")->type_name("N");
+  app.add_option("--epochs", o.epochs,
+                 "dqn: gradient steps on each replay batch, one batch per training move (default 15, the seed's; "
+                 "the learner's cost per move is proportional)")
+      ->type_name("N")
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--batch", o.batch, "dqn: replay batch size (default 80)")->type_name("N")->check(CLI::Range(1, 100000));
   app.add_option("--epsilon-moves", o.epsilon_moves, "training moves over which epsilon falls 1.0 -> 0.1 (default 10000)")
       ->type_name("N");
   app.add_option("--exploration", exploration,

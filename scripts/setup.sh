@@ -53,6 +53,14 @@ if [ ! -x .venv-sb3/bin/python ] ||
   /usr/bin/python3 -m venv --system-site-packages .venv-sb3
   .venv-sb3/bin/python -m pip install -q --no-deps "stable-baselines3==2.4.1" "gymnasium==1.1.1" farama-notifications
 fi
+# Minari (psxrl.offline, docs/offline.md; ctest python_offline_tests) joins SB3 in .venv-sb3, over
+# Debian's NumPy 1.24: Minari 0.5.4 needs NumPy 2, which torch 1.13 is not built for, and 0.5.1
+# runs on 1.24 with h5py 3.12 (checked 2026-12-07). pytest runs python_offline_tests.
+if ! .venv-sb3/bin/python -c "import minari, h5py, pytest" 2>/dev/null; then
+  echo "setup: pip installing Minari into .venv-sb3"
+  .venv-sb3/bin/python -m pip install -q --no-deps "minari==0.5.1"
+  .venv-sb3/bin/python -m pip install -q "h5py>=3.8,<3.13" "typer>=0.9" pytest
+fi
 
 # Ray and RLlib (psxrl.ray, docs/scaling.md; ctest python_ray_tests) also need PyTorch, so they
 # too live over Debian's python3-torch, in .venv-ray of their own: RLlib pins a newer Gymnasium

@@ -80,11 +80,25 @@ void add_train_options(CLI::App& app, agents::TrainConfig& c, std::string& obs, 
   app.add_option("--start-states", c.start_states,
                  "probability that a training episode starts from a state saved in earlier ones (default 0)")
       ->type_name("P");
+  app.add_option("--start", c.start,
+                 "start every episode here: a walk from the level's start, actions by name or number, comma "
+                 "separated (e.g. LOOKLEFT,JUMPFORWARD); it must collect nothing and end nothing (seed 4.2.6)")
+      ->type_name("MOVES");
+  app.add_option("--test-start", c.test_starts,
+                 "a held-out start (a walk, as --start), never trained from: after every test, one greedy "
+                 "episode from each; repeat for several (needs --envs 1)")
+      ->type_name("MOVES");
   app.add_option("--stop-score", c.stop_score, "stop after a test episode scoring at least S")->type_name("S");
   app.add_option("--alpha", o.alpha, "q: learning rate of the table (default 0.5)")->type_name("A");
   app.add_option("--lr", o.lr, "dqn: Adam learning rate (default 0.004 visual/multimodal, else 0.0025)")
       ->type_name("LR");
   app.add_option("--hidden", o.hidden, "dqn: width of the 4 hidden layers (default 32)")->type_name("N");
+  app.add_option("--epochs", o.epochs,
+                 "dqn: gradient steps on each replay batch, one batch per training move (default 15, the seed's; "
+                 "the learner's cost per move is proportional)")
+      ->type_name("N")
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--batch", o.batch, "dqn: replay batch size (default 80)")->type_name("N")->check(CLI::Range(1, 100000));
   app.add_option("--epsilon-moves", o.epsilon_moves, "training moves over which epsilon falls 1.0 -> 0.1 (default 10000)")
       ->type_name("N");
   app.add_option("--exploration", exploration,
@@ -104,11 +118,14 @@ void print_summary(const agents::Trainer& t, const agents::TrainConfig& c, doubl
   std::optional<std::int64_t> best;
   std::uint64_t best_at = 0;
   for (const agents::EpisodeRecord& r : t.records())
-    if (r.test && (!best || r.score > *best)) best = r.score, best_at = r.episode;
-  std::printf("trained %zu episodes (%llu training moves) in %.1f s; best test score %s", t.records().size(),
+    if (r.test && !r.heldout && (!best || r.score > *best)) best = r.score, best_at = r.episode;
+  size_t heldout = 0;
+  for (const agents::EpisodeRecord& r : t.records()) heldout += r.heldout != 0;
+  std::printf("trained %zu episodes (%llu training moves) in %.1f s; best test score %s", t.records().size() - heldout,
               static_cast<unsigned long long>(t.agent().moves()), seconds, score(best).c_str());
   if (best) std::printf(" (first at episode %llu)", static_cast<unsigned long long>(best_at));
   if (auto w = t.first_win()) std::printf("; first test win at episode %llu", static_cast<unsigned long long>(*w));
+  if (heldout) std::printf("; %zu held-out tests", heldout);
   std::uint64_t moves = 0;
   for (size_t i = resumed_at; i < t.records().size(); ++i) moves += t.records()[i].moves;
   if (seconds > 0)

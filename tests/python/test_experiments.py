@@ -20,6 +20,7 @@ ray = pytest.importorskip("ray", reason="Ray is installed in .venv-ray: ctest py
 
 from psxrl.experiments import load, names  # noqa: E402
 from psxrl.experiments.__main__ import main  # noqa: E402
+from psxrl.ray.report import read_metrics  # noqa: E402
 
 DQN = {"agent": "dqn", "epsilon_moves": "2000"}
 # Per study: configuration name -> what its runs' config.json must hold (psxrl train's keys).
@@ -35,6 +36,14 @@ EXPECTED = {
         "gamma=0.8": {**DQN, "obs": "local", "gamma": "0.80000000000000004"},
         "gamma=0.9": {**DQN, "obs": "local", "gamma": "0.90000000000000002"},
     },
+    "generalisation": {
+        "base": {**DQN, "obs": "local", "level": "1", "start": "level",
+                 "test_starts": "FORWARD;FORWARD,FORWARD;FORWARD,FORWARD,FORWARD;FORWARD,FORWARD,FORWARD,FORWARD;"
+                                "FORWARD,FORWARD,FORWARD,FORWARD,FORWARD;FORWARD,FORWARD,FORWARD,FORWARD,FORWARD,LOOKRIGHT;"
+                                "LOOKLEFT,JUMPFORWARD;LOOKRIGHT,JUMPFORWARD;LOOKLEFT,JUMPFORWARD,LOOKRIGHT;"
+                                "LOOKRIGHT,JUMPFORWARD,LOOKLEFT;LOOKLEFT,JUMPFORWARD,LOOKRIGHT,FORWARD,FORWARD;"
+                                "LOOKRIGHT,JUMPFORWARD,LOOKLEFT,FORWARD,FORWARD"},
+    },
     "exploration": {
         "exploration=epsilon": {**DQN, "obs": "local", "level": "7", "exploration": "epsilon"},
         "exploration=q-weighted": {**DQN, "obs": "local", "level": "7", "exploration": "q-weighted"},
@@ -47,8 +56,8 @@ EXPECTED = {
         "level=1,obs=visual": {**DQN, "obs": "visual", "target_network": "false", "double_dqn": "false"},
         "level=1,obs=visual,target-network=true": {**DQN, "obs": "visual", "target_network": "true",
                                                    "double_dqn": "false"},
-        # --double-dqn implies a target network; config.json records the flags as given.
-        "level=1,obs=visual,double-dqn=true": {**DQN, "obs": "visual", "double_dqn": "true"},
+        # --double-dqn bootstraps from a target network (dqn_agent.cpp): config.json says so.
+        "level=1,obs=visual,double-dqn=true": {**DQN, "obs": "visual", "target_network": "true", "double_dqn": "true"},
     },
 }
 SEEDS = ["0", "1"]
@@ -68,7 +77,7 @@ def test_every_study_has_a_test():
 
 # The full studies as their files state them: configurations, seeds, episodes.
 FULL = {"agents": (10, [0, 1, 2], "1000"), "discount": (2, [0, 1, 2, 3, 4], "300"),
-        "exploration": (2, [0, 1, 2, 3, 4], "300"), "output-layer": (2, list(range(33)), "300"),
+        "exploration": (2, [0, 1, 2, 3, 4], "300"), "generalisation": (1, [0, 1, 2], "200"), "output-layer": (2, list(range(33)), "100"),
         "stability": (6, [1, 2, 3], "300")}
 
 
@@ -111,7 +120,14 @@ def test_tiny_study_writes_its_table_figure_runs_and_commands(study, tmp_path):
         assert {k: config[k] for k in TINY} == TINY and config["seed"] == row["seed"]
         with open(folder / "metrics.csv", newline="") as f:
             metrics = list(csv.DictReader(f))
-        assert [m["kind"] for m in metrics] == ["train", "test"]  # 2 episodes, every 2nd a test
+        heldout = len(EXPECTED[study][row["config"]].get("test_starts", "").split(";")) if study == "generalisation" else 0
+        # 2 episodes, every 2nd a test, then one held-out test per --test-start
+        assert [m["kind"] for m in metrics] == ["train", "test"] + ["heldout"] * heldout
+        assert [m["start"] for m in metrics[2:]] == [f"heldout-{k}" for k in range(1, heldout + 1)]
+        assert row["heldout_tests"] == str(heldout)
+        assert row["heldout_wins"] == str(sum(m["outcome"] == "win" for m in metrics[2:]))
+        losses = [float(m["loss"]) for m in metrics]
+        assert row["diverged"] == str(any(v > 10 or v != v for v in losses)) and float(row["max_loss"]) == max(losses)
         assert row["status"] == "finished" and row["episodes"] == "2" and row["test_episodes"] == "1"
         assert row["last_test_score"] == metrics[1]["score"]
     table = (out / "runs.md").read_text()
@@ -120,6 +136,11 @@ def test_tiny_study_writes_its_table_figure_runs_and_commands(study, tmp_path):
         assert f"| {config} | 2 |" in table  # its per-configuration row: 2 runs
         for seed in SEEDS:
             assert f"| {config} | {seed} | finished | 2 | 1 |" in table
+        assert f"| {config} | 0 of 2 |" in table  # no run diverges in 2 short episodes
+    if study == "generalisation":  # one held-out test per start and run: its win is also the last test's
+        for k in range(1, 13):
+            won = [m["outcome"] == "win" for r in rows for m in read_metrics(r["folder"]) if m["start"] == f"heldout-{k}"]
+            assert len(won) == 2 and f"| base | heldout-{k} | {sum(won)} / 2 | {sum(won)} of 2 |" in table
     assert (out / "learning_curves.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     commands = (out / "commands.sh").read_text().splitlines()
     trains = [c for c in commands if not c.startswith("#") and " train " in c]

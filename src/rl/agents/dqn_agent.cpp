@@ -130,13 +130,17 @@ class DqnAgent : public Agent {
     auto n = static_cast<std::int64_t>(picked.size());
     torch::Tensor s = torch::empty({n, inputs_}), s2 = torch::empty({n, inputs_});
     torch::Tensor a = torch::empty({n}, torch::kLong), r = torch::empty({n}), live = torch::empty({n});
+    // Filled through their data pointers: an indexed assignment (a[i] = ...) is two tensor
+    // operations, 480 a batch, about a fifth of the learner's per-move cost (docs/results.md).
+    std::int64_t* action = a.data_ptr<std::int64_t>();
+    float *reward = r.data_ptr<float>(), *alive = live.data_ptr<float>();
     for (std::int64_t i = 0; i < n; ++i) {
       const Stored& t = memory_[picked[static_cast<size_t>(i)]];
       unpack(t.state, s.data_ptr<float>() + i * inputs_);
       unpack(t.next_state, s2.data_ptr<float>() + i * inputs_);
-      a[i] = t.action;
-      r[i] = static_cast<float>(t.reward);
-      live[i] = t.terminal ? 0.0f : 1.0f;
+      action[i] = t.action;
+      reward[i] = static_cast<float>(t.reward);
+      alive[i] = t.terminal ? 0.0f : 1.0f;
     }
     torch::Tensor y = targets(s2, r, live);
     torch::Tensor taken = a.unsqueeze(1);

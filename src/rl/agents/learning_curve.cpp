@@ -78,7 +78,7 @@ std::string number(double v) { return std::to_string(std::llround(v)); }
 void plot(Canvas& c, const Axes& a, const std::vector<EpisodeRecord>& records, bool test, Rgb colour) {
   std::vector<double> scores, episodes;
   for (const EpisodeRecord& r : records)
-    if (r.test == test) {
+    if (r.test == test && !r.heldout) {  // held-out tests are the generalisation study's (metrics.csv)
       scores.push_back(static_cast<double>(r.score));
       episodes.push_back(static_cast<double>(r.episode));
     }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -21,7 +22,8 @@ std::string flag(bool b) { return b ? "true" : "false"; }
 
 // Settings added after the first checkpoints, with the value every run before them had: an older
 // checkpoint without them still resumes and plays.
-const Settings kLaterSettings = {{"envs", "1"}, {"exploration", "epsilon"}, {"start_states", "0"}};
+const Settings kLaterSettings = {{"envs", "1"},         {"exploration", "epsilon"}, {"start_states", "0"},
+                                  {"start", "level"}, {"test_starts", "none"}};
 
 std::string setting(const Settings& s, const std::string& key) {
   auto it = s.find(key);
@@ -30,20 +32,25 @@ std::string setting(const Settings& s, const std::string& key) {
   return later == kLaterSettings.end() ? "(none)" : later->second;
 }
 
-// `start` is "level" or, for a --start-states episode, "saved".
+// `start` is "level" (the run's start: the level's own, or --start's), "saved" for a --start-states
+// episode, "heldout-N" for a held-out test from the N-th --test-start (kind "heldout").
 const char* kCsvHeader = "episode,kind,score,reward,moves,frames,outcome,epsilon,loss,total_moves,seconds,start\n";
 
-const char* start_name(const EpisodeRecord& r) { return r.saved_start ? "saved" : "level"; }
+std::string start_name(const EpisodeRecord& r) {
+  return r.heldout ? "heldout-" + std::to_string(r.heldout) : r.saved_start ? "saved" : "level";
+}
+
+const char* kind_name(const EpisodeRecord& r) { return r.heldout ? "heldout" : r.test ? "test" : "train"; }
 
 std::string csv_row(const EpisodeRecord& r) {
-  return std::to_string(r.episode) + "," + (r.test ? "test" : "train") + "," + std::to_string(r.score) + "," +
+  return std::to_string(r.episode) + "," + kind_name(r) + "," + std::to_string(r.score) + "," +
          format_double(r.reward) + "," + std::to_string(r.moves) + "," + std::to_string(r.frames) + "," + r.outcome +
          "," + format_double(r.epsilon) + "," + format_double(r.loss) + "," + std::to_string(r.total_moves) + "," +
          format_double(r.seconds) + "," + start_name(r) + "\n";
 }
 
 std::string json_row(const EpisodeRecord& r) {
-  return "{\"episode\":" + std::to_string(r.episode) + ",\"kind\":\"" + (r.test ? "test" : "train") +
+  return "{\"episode\":" + std::to_string(r.episode) + ",\"kind\":\"" + kind_name(r) +
          "\",\"score\":" + std::to_string(r.score) + ",\"reward\":" + format_double(r.reward) +
          ",\"moves\":" + std::to_string(r.moves) + ",\"frames\":" + std::to_string(r.frames) + ",\"outcome\":\"" +
          r.outcome + "\",\"epsilon\":" + format_double(r.epsilon) + ",\"loss\":" + format_double(r.loss) +
@@ -85,6 +92,12 @@ EpisodeRecord load_record(ByteReader& r) {
   return e;
 }
 
+std::string test_starts_setting(const std::vector<std::string>& starts) {
+  std::string s;
+  for (const std::string& t : starts) s += (s.empty() ? "" : ";") + t;
+  return starts.empty() ? "none" : s;
+}
+
 }  // namespace
 
 Settings run_settings(const TrainConfig& c) {
@@ -101,6 +114,8 @@ Settings run_settings(const TrainConfig& c) {
           {"test_every", std::to_string(c.test_every)},
           {"envs", std::to_string(c.envs)},
           {"start_states", format_double(c.start_states)},
+          {"start", c.start.empty() ? "level" : c.start},
+          {"test_starts", test_starts_setting(c.test_starts)},
           {"alpha", format_double(o.alpha)},
           {"lr", format_double(o.lr)},
           {"hidden", std::to_string(o.hidden)},
@@ -111,7 +126,8 @@ Settings run_settings(const TrainConfig& c) {
           {"epsilon_end", format_double(o.epsilon_end)},
           {"epsilon_moves", std::to_string(o.epsilon_moves)},
           {"linear_output", flag(o.linear_output)},
-          {"target_network", flag(o.target_network)},
+          // --double-dqn bootstraps from a target network whether or not --target-network was given
+          {"target_network", flag(o.target_network || o.double_dqn)},
           {"target_sync", std::to_string(o.target_sync)},
           {"double_dqn", flag(o.double_dqn)},
           {"exploration", exploration_name(o.exploration)}};
@@ -136,6 +152,11 @@ void apply_settings(const Settings& s, TrainConfig& c) {
     c.test_every = std::stoi(get("test_every"));
     c.envs = std::stoi(get("envs"));
     c.start_states = std::stod(get("start_states"));
+    c.start = get("start") == "level" ? "" : get("start");
+    c.test_starts.clear();
+    std::istringstream starts(get("test_starts"));
+    for (std::string t; std::getline(starts, t, ';');)
+      if (t != "none") c.test_starts.push_back(t);
     AgentOptions& o = c.options;
     o.alpha = std::stod(get("alpha"));
     o.lr = std::stod(get("lr"));
@@ -184,10 +205,12 @@ Trainer::Trainer(const TrainConfig& config) : config_(config), start_rng_(rl::ep
     throw std::invalid_argument("game '" + config_.env.game + "' has levels 1 to " +
                                 std::to_string(env.game().level_count) + ", not " + std::to_string(config_.level));
   bool needs_position = env.obs_kind() == rl::ObsKind::Simple || env.obs_kind() == rl::ObsKind::Local;
-  if (config_.start_states > 0 && needs_position && env.game().position_x.empty())
+  bool walks = !config_.start.empty() || !config_.test_starts.empty();
+  if ((config_.start_states > 0 || walks) && needs_position && env.game().position_x.empty())
     throw std::invalid_argument("game '" + config_.env.game + "' follows the ball's position in its script, which a " +
-                                "saved state does not hold: --start-states needs an observation without the position "
-                                "(visual, multimodal, episode, audio)");
+                                "saved state does not hold: --start-states, --start and --test-start need an "
+                                "observation without the position (visual, multimodal, episode, audio)");
+  check_start_positions();
   agent_ = make_agent(config_.agent, env.obs_kind(), env.observation_spaces(), env.action_count(), config_.options);
   meta_ = run_settings(config_);
   meta_["format"] = std::to_string(kCheckpointFormat);
@@ -215,8 +238,26 @@ Trainer::~Trainer() = default;
 
 std::string Trainer::file(const char* name) const { return (fs::path(config_.out) / name).string(); }
 
+// Parses --start and --test-start and walks each once (seed 0), so that a walk that scores or
+// ends the episode is refused before the run folder is made.
+void Trainer::check_start_positions() {
+  if (!config_.test_starts.empty() && (config_.envs > 1 || config_.resume))
+    throw std::invalid_argument("--test-start needs --envs 1 and no --resume: the held-out tests follow each test of "
+                                "the one environment, and the checkpoint does not hold them");
+  rl::Env& env = *slots_[0].env;
+  start_ = parse_start_position(config_.start, env.actions());
+  for (const std::string& t : config_.test_starts) {
+    if (t.empty()) throw std::invalid_argument("--test-start needs a walk (the level's own start is --start's default)");
+    test_starts_.push_back(parse_start_position(t, env.actions()));
+  }
+  if (!start_.moves.empty()) begin_at(env, config_.level, start_, 0, nullptr);
+  for (const StartPosition& p : test_starts_) begin_at(env, config_.level, p, 0, nullptr);
+}
+
 void Trainer::restore() {
   Checkpoint c = read_checkpoint(file(kCheckpointFile));
+  // Checkpoints from before config.json recorded --double-dqn's own target network.
+  if (setting(c.meta, "double_dqn") == "true") c.meta["target_network"] = "true";
   for (const auto& [k, v] : meta_) {
     std::string had = setting(c.meta, k);
     if (had != v)
@@ -231,10 +272,11 @@ void Trainer::restore() {
   for (std::uint64_t i = 0; i < n; ++i) records_.push_back(load_record(t));
   if (!t.done()) t.fail("unexpected bytes after the metrics");
   slots_[0].episodes = records_.size();  // one environment played them all
+  counted_ = records_.size();            // a resumed run has no held-out tests
   write_metrics_from_records();
 }
 
-void Trainer::save() const {
+void Trainer::save(bool curve) const {
   Checkpoint c;
   c.meta = meta_;
   ByteWriter agent, trainer;
@@ -244,7 +286,7 @@ void Trainer::save() const {
   c.agent = agent.take_string();
   c.trainer = trainer.take_string();
   write_checkpoint(file(kCheckpointFile), c);
-  write_learning_curve(file("learning_curve.png"), records_);
+  if (curve) write_learning_curve(file("learning_curve.png"), records_);
 }
 
 // The metric files always match the checkpoint's records: a resumed run drops rows written after

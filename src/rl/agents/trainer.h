@@ -1,7 +1,7 @@
 // `psxrl train` without the command line: the seed's training loop (§4.2.1: nine ε-greedy
 // training episodes, then one greedy test episode), experience from one or K environments
-// stepped in parallel, per-episode metrics (CSV and JSON Lines), a learning-curve PNG and a
-// checkpoint after every episode, and exact resumption from it (one environment).
+// stepped in parallel, per-episode metrics (CSV and JSON Lines) and a checkpoint after every
+// episode, a learning-curve PNG after every test, and exact resumption (one environment).
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -13,6 +13,7 @@
 
 #include "rl/agents/agent.h"
 #include "rl/agents/checkpoint.h"
+#include "rl/agents/start_position.h"
 #include "rl/env.h"
 #include "rl/thread_pool.h"
 
@@ -32,6 +33,11 @@ struct TrainConfig {
   int test_every = 10;  // every test_every-th episode of each environment is a greedy test
   int envs = 1;         // environments stepped in parallel (docs/agents.md: how episodes count)
   double start_states = 0;  // probability that a training episode starts from a saved state
+  // Where episodes start (seed §4.2.6, start_position.h): a walk from the level's start, "" for
+  // the level's own; and held-out starts, never trained from: after every greedy test, one greedy
+  // episode from each (kind "heldout" in the metrics; they do not count towards `episodes`).
+  std::string start;
+  std::vector<std::string> test_starts;
   std::optional<std::int64_t> stop_score;  // stop after a test episode scoring at least this
   std::string out;
   bool resume = false;
@@ -44,7 +50,7 @@ Settings run_settings(const TrainConfig& c);
 void apply_settings(const Settings& s, TrainConfig& c);
 
 struct EpisodeRecord {
-  std::uint64_t episode = 0;  // 1-based, in the order episodes end (environment index on ties)
+  std::uint64_t episode = 0;  // 1-based, in the order episodes end (environment index on ties); held-out: below
   bool test = false;
   std::int64_t score = 0;
   double reward = 0;
@@ -56,6 +62,8 @@ struct EpisodeRecord {
   std::uint64_t total_moves = 0;  // training moves so far
   double seconds = 0;         // host time from the episode's start to its end; runs do not reproduce it
   bool saved_start = false;   // started from a saved state (--start-states); not in the metric files
+  int heldout = 0;            // 1-based --test-start of a held-out greedy episode (test is true), 0: none;
+                              // it shares the episode number of the test it follows
 };
 
 struct TrainStatus {
@@ -86,7 +94,8 @@ class Trainer {
     std::unique_ptr<rl::Env> env;
     std::uint64_t episodes = 0;  // episodes this environment has started
     bool test = false;
-    std::ptrdiff_t from = -1;    // the saved state the next episode starts from, -1: the level's start
+    std::ptrdiff_t from = -1;    // the saved state the next episode starts from, -1: the run's start
+    int heldout = 0;             // the held-out start the episode plays from (1-based), 0: none
     std::vector<float> state, next;
     int action = 0;
     rl::StepResult result;
@@ -95,12 +104,13 @@ class Trainer {
   };
   using Progress = std::function<void(const TrainStatus&)>;
 
+  void check_start_positions();
   void plan_episode(size_t i);
   void begin_episode(size_t i);
   void offer_state(Slot& s);
   bool learn_from_move(Slot& s, const Progress& progress);
   bool end_episode(Slot& s, const Progress& progress);
-  void save() const;
+  void save(bool curve) const;  // the checkpoint, and with `curve` learning_curve.png
   void restore();
   void write_metrics_from_records() const;
   void append_metrics(const EpisodeRecord& r) const;
@@ -118,6 +128,13 @@ class Trainer {
   Rng start_rng_;                            // which states are kept and which episodes use them
   std::vector<rl::Env::Snapshot> saved_;     // at most kSavedStates
   std::uint64_t offered_ = 0;                // training moves offered to saved_
+  StartPosition start_;                      // config_.start parsed
+  std::vector<StartPosition> test_starts_;   // config_.test_starts parsed
+  std::vector<int> pending_;                 // held-out starts still to play after the last test
+  std::uint64_t counted_ = 0;                // records that count towards `episodes` (not held-out)
+  std::uint64_t last_test_ = 0;              // the last test's episode number (held-out episodes share it)
+  std::uint64_t heldout_played_ = 0;         // held-out episodes begun: their seeds' sequence
+  bool stopping_ = false;                    // the budget or stop score is reached; held-out tests finish
 };
 
 }  // namespace psxrl::agents

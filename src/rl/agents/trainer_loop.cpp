@@ -23,9 +23,18 @@
 namespace psxrl::agents {
 
 // Whether the slot's next episode is a test and where it starts; on the calling thread, as it
-// draws from the trainer's generator. Test episodes always start at the level's start.
+// draws from the trainer's generator. Test episodes start at the run's start; held-out tests
+// waiting after the last test come first.
 void Trainer::plan_episode(size_t i) {
   Slot& s = slots_[i];
+  s.heldout = 0;
+  if (!pending_.empty()) {
+    s.heldout = pending_.front();
+    pending_.erase(pending_.begin());
+    s.test = true;
+    s.from = -1;
+    return;
+  }
   s.test = (s.episodes + 1) % static_cast<std::uint64_t>(config_.test_every) == 0;
   s.from = -1;
   if (!s.test && config_.start_states > 0 && !saved_.empty() && start_rng_.uniform() < config_.start_states)
@@ -33,14 +42,18 @@ void Trainer::plan_episode(size_t i) {
 }
 
 // Starts the planned episode; slots start in parallel.
+// Held-out tests draw their seeds from a sequence of their own (environment index -2), so the
+// training and test episodes' seeds are those of a run without them.
 void Trainer::begin_episode(size_t i) {
   Slot& s = slots_[i];
-  std::uint64_t seed = rl::episode_seed(config_.seed, static_cast<int>(i), s.episodes++);
+  std::uint64_t seed = s.heldout ? rl::episode_seed(config_.seed, -2, heldout_played_++)
+                                 : rl::episode_seed(config_.seed, static_cast<int>(i), s.episodes++);
   s.start = std::chrono::steady_clock::now();
-  // An episode's frames are all the console ran for it, its level's start included.
+  // An episode's frames are all the console ran for it, its level's start (and walk) included.
   rl::StepInfo info;
   if (s.from >= 0) s.state = features(s.env->reset_to(saved_[static_cast<size_t>(s.from)], seed, &info));
-  else s.state = features(s.env->reset(config_.level, seed, &info));
+  else if (s.heldout) s.state = features(begin_at(*s.env, config_.level, test_starts_[s.heldout - 1], seed, &info));
+  else s.state = features(begin_at(*s.env, config_.level, start_, seed, &info));
   s.frames = info.game_frames;
 }
 
@@ -68,7 +81,7 @@ bool Trainer::learn_from_move(Slot& s, const Progress& progress) {
   s.state = std::move(s.next);
   s.frames += r.info.game_frames;
   ++session_moves_;
-  if (progress) progress(status(records_.size() + 1, false));
+  if (progress) progress(status(counted_ + 1, false));
   return over;
 }
 
@@ -76,7 +89,7 @@ bool Trainer::learn_from_move(Slot& s, const Progress& progress) {
 bool Trainer::end_episode(Slot& s, const Progress& progress) {
   const rl::StepResult& r = s.result;
   EpisodeRecord rec;
-  rec.episode = records_.size() + 1;
+  rec.episode = s.heldout ? last_test_ : counted_ + 1;
   rec.test = s.test;
   rec.score = r.info.score;
   rec.reward = r.info.episode_reward;
@@ -88,18 +101,28 @@ bool Trainer::end_episode(Slot& s, const Progress& progress) {
   rec.total_moves = agent_->moves();
   rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();
   rec.saved_start = s.from >= 0;
+  rec.heldout = s.heldout;
   records_.push_back(rec);
+  if (!rec.heldout) ++counted_;
+  if (rec.test && !rec.heldout) {
+    last_test_ = rec.episode;
+    for (size_t k = 1; k <= test_starts_.size(); ++k) pending_.push_back(static_cast<int>(k));
+  }
   ++session_episodes_;
   append_metrics(rec);
-  save();
+  bool stop = rec.test && !rec.heldout && config_.stop_score && rec.score >= *config_.stop_score;
+  stopping_ = stopping_ || stop || counted_ >= config_.episodes;
+  bool over = stopping_ && pending_.empty();
+  // The curve after each test and at the end: drawn after every episode it took 7% of a short
+  // DQN run's CPU time (docs/results.md, "Speed of learning").
+  save(rec.test || over);
   if (progress) progress(status(rec.episode, true));
-  bool stop = rec.test && config_.stop_score && rec.score >= *config_.stop_score;
-  return stop || records_.size() >= config_.episodes;
+  return over;
 }
 
 void Trainer::run(const Progress& progress) {
   run_start_ = std::chrono::steady_clock::now();
-  if (records_.size() >= config_.episodes) return;
+  if (counted_ >= config_.episodes) return;
   size_t k = slots_.size();
   for (size_t i = 0; i < k; ++i) plan_episode(i);
   pool_->parallel_for(k, [&](size_t i) { begin_episode(i); });
@@ -123,7 +146,7 @@ void Trainer::run(const Progress& progress) {
 
 std::optional<std::uint64_t> Trainer::first_win() const {
   for (const EpisodeRecord& r : records_)
-    if (r.test && r.outcome == "win") return r.episode;
+    if (r.test && !r.heldout && r.outcome == "win") return r.episode;
   return std::nullopt;
 }
 
@@ -134,6 +157,7 @@ TrainStatus Trainer::status(std::uint64_t episode, bool episode_end) const {
   s.episodes = config_.episodes;
   s.moves = agent_->moves();
   for (const EpisodeRecord& r : records_) {
+    if (r.heldout) continue;
     if (r.test) {
       s.last_test = r.score;
       s.best_test = std::max(s.best_test.value_or(r.score), r.score);
@@ -145,7 +169,7 @@ TrainStatus Trainer::status(std::uint64_t episode, bool episode_end) const {
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start_).count();
   s.moves_per_second = seconds > 0 ? static_cast<double>(session_moves_) / seconds : 0;
   double per_episode = seconds / std::max<double>(1.0, static_cast<double>(session_episodes_));
-  s.eta_seconds = per_episode * static_cast<double>(config_.episodes - std::min(config_.episodes, records_.size()));
+  s.eta_seconds = per_episode * static_cast<double>(config_.episodes - std::min(config_.episodes, counted_));
   return s;
 }
 

@@ -20,7 +20,8 @@ instead, each crossed with the grid:
     agent = "dqn"
     obs = "local"
 
-A value true is a flag (`--double-dqn`), false leaves it out; everything else is passed as text.
+A value true is a flag (`--double-dqn`), false leaves it out; everything else is passed as text. A
+repeatable option (--test-start) may be a list of strings in [train]: one --test-start per string.
 """
 import itertools
 import re
@@ -35,6 +36,8 @@ except ImportError:  # Python before 3.11
 # Options the sweep sets itself for each run.
 RESERVED = {"out", "seed", "resume", "quiet"}
 TOP_LEVEL = {"out", "seeds", "train", "grid", "configs"}
+# Options psxrl train takes several times; [train] may give them as a list of strings.
+REPEATABLE = {"test-start"}
 
 
 class SweepConfigError(ValueError):
@@ -54,15 +57,19 @@ class Run:
         """The `psxrl train` arguments of this run, less --resume."""
         args = []
         for key, value in self.options.items():
-            if value is True:
+            if isinstance(value, list):  # a repeatable option (REPEATABLE), once per value
+                for v in value:
+                    args += ["--" + key, _text(v)]
+            elif value is True:
                 args.append("--" + key)
             elif value is not False:
                 args += ["--" + key, _text(value)]
         return args + ["--seed", str(self.seed), "--out", str(self.folder), "--quiet"]
 
     def resumable(self):
-        """`psxrl train --resume` needs one environment and no saved start states."""
-        return int(self.options.get("envs", 1)) == 1 and float(self.options.get("start-states", 0)) == 0
+        """`psxrl train --resume` needs one environment, no saved start states and no held-out starts."""
+        return int(self.options.get("envs", 1)) == 1 and float(self.options.get("start-states", 0)) == 0 \
+            and not self.options.get("test-start")
 
 
 @dataclass
@@ -94,7 +101,8 @@ def _check_options(path, table, name):
         if not re.fullmatch(r"[a-z][a-z0-9-]*", key):
             raise SweepConfigError(f"{path}: [{name}] {key}: expected a psxrl train long option without '--' "
                                    "(such as episodes or max-moves)")
-        if isinstance(value, (dict, list)) and name == "train":
+        repeated = key in REPEATABLE and isinstance(value, list) and all(isinstance(v, str) for v in value)
+        if isinstance(value, (dict, list)) and name == "train" and not repeated:
             raise SweepConfigError(f"{path}: [train] {key}: expected one value (lists of values go in [grid])")
 
 

@@ -1,0 +1,85 @@
+"""psxrl.offline: a `psxrl record` session and a policy's rollouts as Minari datasets, read back with
+minari.load_dataset (ctest python_offline_tests, in .venv-sb3 where scripts/setup.sh installs Minari).
+
+Expected values come from the session's input script and the game's rules, not from the module:
+games/tumble/demo/level1.txt presses each of its 30 moves once (its comments: all 8 coins, 2 fruit
+and the key, then the exit: 4000 points), and Tumble's Table 3.3 rewards are 0.5 a coin, 0.7 a
+fruit, 0.8 the key and 1.0 the win, in units of 1 - gamma: 7.2 x 0.1 = 0.72 for the whole level.
+"""
+import os
+import re
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+minari = pytest.importorskip("minari", reason="Minari is installed in .venv-sb3: ctest python_offline_tests")
+
+from psxrl import Env, Session, offline  # noqa: E402
+
+ROOT = Path(__file__).parents[2]
+DEMO = ROOT / "games" / "tumble" / "demo" / "level1.txt"
+# The demo's pad presses as the seed's actions (games/tumble/game.toml [[actions]]).
+PRESSES = {"up": 0, "right": 1, "left": 2, "cross+up": 3}
+
+
+def demo_actions():
+    """The moves the demo presses once level 1 has started (after the Cross that starts it)."""
+    presses = [line.split()[1] for line in DEMO.read_text().splitlines() if re.match(r"\d+ ", line)]
+    return [PRESSES[p] for p in presses[presses.index("cross") + 1:]]
+
+
+@pytest.fixture(scope="module")
+def session(tmp_path_factory):
+    out = tmp_path_factory.mktemp("offline") / "session"
+    exe = Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"
+    subprocess.run([str(exe), "record", "--game", "tumble", "--input", str(DEMO), "--frames", "700", "--out", str(out)],
+                   check=True, capture_output=True)
+    return out
+
+
+@pytest.fixture(autouse=True)
+def datasets(tmp_path, monkeypatch):
+    monkeypatch.setenv("MINARI_DATASETS_PATH", str(tmp_path / "datasets"))
+
+
+def test_session_becomes_the_moves_pressed(session):
+    assert offline.session_actions(session, games_dir=ROOT / "games") == [(1, demo_actions())]
+
+
+@pytest.mark.parametrize("obs", ["local", "multimodal"])
+def test_session_dataset_round_trip(session, obs):
+    env, episodes = offline.session_episodes(session, games_dir=ROOT / "games", obs=obs)
+    offline.write_dataset(f"psxrl/tumble-demo-{obs}-v0", env, episodes)
+    data = minari.load_dataset(f"psxrl/tumble-demo-{obs}-v0")
+    assert data.total_episodes == 1 and data.total_steps == len(demo_actions()) == 30
+    (episode,) = list(data.iterate_episodes())
+    assert episode.actions.tolist() == demo_actions()
+    assert episode.rewards.sum() == pytest.approx(0.72)
+    assert episode.terminations.tolist() == [False] * 29 + [True] and not episode.truncations.any()
+    # The environment's episode: the session's final score, and the rewards it reports.
+    _, info = episodes[0]
+    assert info["outcome"] == "win" and info["score"] == 4000 == Session(str(session)).values(0x8001000C)[-1]
+    assert info["episode_reward"] == pytest.approx(episode.rewards.sum())
+    for space in Env(obs=obs).observation_spaces:
+        parts = episode.observations if obs == "local" else episode.observations[space["name"]]
+        assert parts.shape == (31, *space["shape"]) and parts.dtype == np.dtype(space["dtype"])
+
+
+def test_policy_rollouts_round_trip():
+    # LOOK RIGHT only: the ball stays on the start tile, so nothing is collected until the cap.
+    env, episodes = offline.rollouts(lambda obs: 1, episodes=3, max_moves=4, obs="simple")
+    offline.write_dataset("psxrl/tumble-look-v0", env, episodes)
+    data = minari.load_dataset("psxrl/tumble-look-v0")
+    assert data.total_episodes == 3 and data.total_steps == 12
+    for episode in data.iterate_episodes():
+        assert episode.actions.tolist() == [1] * 4 and episode.rewards.tolist() == [0.0] * 4
+        assert episode.truncations.tolist() == [False] * 3 + [True] and not episode.terminations.any()
+        assert episode.observations.shape == (5, *Env(obs="simple").observation_spaces[0]["shape"])
+
+
+def test_a_session_of_another_program_is_refused(tmp_path):
+    (tmp_path / "session.toml").write_text("format = 1\n[source]\nexe = ''\ndisc = 'x.cue'\n")
+    with pytest.raises(ValueError, match="session.toml: the session must have booted an executable"):
+        offline.session_actions(tmp_path, games_dir=ROOT / "games")

@@ -58,6 +58,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bios/hle_io.h"
 #include "core/cpu/cpu.h"
 #include "core/state.h"
 #include "core/types.h"
@@ -65,7 +66,11 @@
 namespace psx {
 
 class Bus;
+class MemoryCard;
 class SioDevice;
+namespace disc {
+class Disc;
+}
 
 class HleBios {
  public:
@@ -85,6 +90,9 @@ class HleBios {
   std::function<void(const std::string&)> on_fatal;
   // The controller in port 0/1 for the kernel's pad handler (nullptr when none is plugged).
   std::function<SioDevice*(int port)> pad_at;
+  // The disc in the drive and the memory card in slot 0/1 for the file functions (nullptr: none).
+  std::function<disc::Disc*()> disc_in_drive;
+  std::function<MemoryCard*(int slot)> card_at;
 
   void do_state(StateIO& s);
 
@@ -184,6 +192,40 @@ class HleBios {
   // printf formatting (hle_printf.cpp).
   std::string format(u32 fmt_addr) const;
 
+  // File functions (hle_files.cpp): handles, the TTY, firstfile/nextfile; the cdrom: device
+  // (hle_cdfs.cpp) and the memory cards (hle_memcard.cpp). State in io_ (hle_io.h).
+  struct DirEntry {
+    std::string name;
+    u32 attr, size, sector;
+  };
+  bool io_call(u32 table, u32 fn);
+  bool file_call(u32 fn);
+  bool file_call_b0(u32 fn);
+  u32 file_open(u32 path, u32 mode);
+  u32 file_read(u32 fd, u32 dst, u32 len);
+  u32 file_write(u32 fd, u32 src, u32 len);
+  u32 file_lseek(u32 fd, u32 offset, u32 whence);
+  u32 file_close(u32 fd);
+  u32 file_fail(HleFile* f, u32 err);
+  HleFile* file_at(u32 fd);
+  u32 first_file(u32 path, u32 entry);
+  u32 next_file(u32 entry);
+  std::vector<DirEntry> device_entries();
+  void return_after_events(u32 v0);
+  bool cd_call(u32 fn);
+  u32 cd_open(const std::string& path, HleFile& f);
+  u32 cd_read(HleFile& f, u32 dst, u32 len);
+  bool cd_read_blocks(u32 lba, u32 count, u32 dst);
+  std::string cd_full_path(const std::string& path) const;
+  std::vector<DirEntry> cd_entries(const std::string& dir);
+  bool card_call(u32 table, u32 fn);
+  u32 card_open(u32 port, const std::string& name, u32 mode, HleFile& f);
+  u32 card_transfer(HleFile& f, u32 addr, u32 len, bool write);
+  bool card_erase(u32 port, const std::string& name);
+  std::vector<DirEntry> card_entries(u32 port);
+  bool card_sector(u32 port, u32 sector, u32 addr, bool write);
+  void card_deliver(u32 port, bool info);
+
   u8 peek8(u32 addr) const;
   u32 peek32(u32 addr) const;
   void poke8(u32 addr, u8 v);
@@ -213,6 +255,7 @@ class HleBios {
   u32 strtok_next_ = 0;
   std::array<u32, 3> conf_{};  // SetConf: EvCB count, TCB count, stack top
   std::set<u32> warned_;
+  HleIoState io_;
 };
 
 }  // namespace psx

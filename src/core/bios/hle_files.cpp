@@ -109,6 +109,14 @@ bool HleBios::file_call(u32 fn) {
     case 0x02: return_after_events(file_read(a0, a1, a2)); return true;
     case 0x03: return_after_events(file_write(a0, a1, a2)); return true;
     case 0x04: return_to_caller(file_close(a0)); return true;
+    case 0x05: {  // ioctl(fd, cmd, arg): only the TTY takes commands, and this one has no settings
+      HleFile* f = file_at(a0);
+      return_to_caller(!f ? file_fail(nullptr, kEBadF) : f->device == kDevTty ? 0 : file_fail(f, kEInval));
+      return true;
+    }
+    case 0x07:  // isatty(fd): DCB flag bit 1, set only for the DUART TTY, which no console has here
+      return_to_caller(0);
+      return true;
     case 0x08: {  // getc(fd): read(fd, tmp, 1); no TTY input, and one byte is never a whole sector
       HleFile* f = file_at(a0);
       return_to_caller(!f ? file_fail(nullptr, kEBadF) : f->device == kDevTty ? kFail : file_fail(f, kEInval));
@@ -130,7 +138,7 @@ bool HleBios::file_call(u32 fn) {
 
 bool HleBios::file_call_b0(u32 fn) {
   const u32 a0 = cpu_.reg(kRegA0), a1 = cpu_.reg(kRegA1);
-  if (fn >= 0x32 && fn <= 0x36) return file_call(fn - 0x32);
+  if ((fn >= 0x32 && fn <= 0x37) || fn == 0x39) return file_call(fn - 0x32);
   switch (fn) {
     case 0x3A: return file_call(0x08);
     case 0x3B: return file_call(0x09);

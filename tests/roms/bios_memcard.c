@@ -86,6 +86,16 @@ static void files(void) {
   CHECK_EQ("read past the file's end fails", file_read(fd, back, 128), -1);
   CHECK_EQ("putc on a card: not a whole sector", file_putc('x', fd), -1);
   file_close(fd);
+
+  /* Access mode bit 15: read returns at once and completion is the SwCARD done event. */
+  bios_memset(back, 0, sizeof back);
+  fd = file_open(NAME, O_READ | 0x8000);
+  CHECK_EQ("asynchronous read returns 0", file_read(fd, back, 128), 0);
+  uint32_t done = 0;
+  for (uint32_t n = 0; n < 2000000 && !done; ++n) done = test_event(events[2]);
+  CHECK_EQ("asynchronous read: SwCARD done", done, 1);
+  CHECK_EQ("asynchronous read's bytes", differ(data, back, 128), 0);
+  file_close(fd);
 }
 
 static void listing(void) {

@@ -78,7 +78,9 @@ bool HleBios::cd_read_blocks(u32 lba, u32 count, u32 dst) {
   for (u32 i = 0; i < count; ++i) {
     if (!d->read_sector(lba + i + disc::kLeadInSectors, raw)) return false;
     const u8* data = raw.data() + (raw[15] == 1 ? disc::kMode1DataOffset : disc::kMode2DataOffset);
-    u32 at = dst + i * kSector;
+    // The BIOS moves sectors by DMA, which reaches only RAM (and its mirrors).
+    const u32 at = dst + i * kSector;
+    if (Bus::physical(at) >= 0x00800000) return false;
     for (u32 k = 0; k < kSector; ++k) bus_.ram()[Bus::physical(at + k) & (Bus::kRamSize - 1)] = data[k];
     bus_.host_wrote_ram(Bus::physical(at) & (Bus::kRamSize - 1), kSector);
   }

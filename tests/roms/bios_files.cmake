@@ -6,7 +6,3 @@ psx_add_rom_test(bios_files SOURCES bios_files.c bios_file_calls.S bios_calls.S 
                  ARGS --disc ${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue)
 psx_add_rom_test(bios_memcard SOURCES bios_memcard.c bios_file_calls.S bios_calls.S CHECKS 62
                  ARGS --memcard1 ${CMAKE_CURRENT_BINARY_DIR}/bios_memcard.mcd)
-# SetRCnt/StartRCnt/StopRCnt with the F200000xh class values SDKs pass (8 checks, each run once).
-psx_add_rom_test(bios_rcnt_class SOURCES bios_rcnt_class.c bios_calls.S CHECKS 8)
-# Interrupts taken in a load delay slot keep the loaded value (3 checks).
-psx_add_rom_test(bios_irq_load SOURCES bios_irq_load.c bios_calls.S CHECKS 3)

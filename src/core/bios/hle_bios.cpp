@@ -71,16 +71,6 @@ void HleBios::install() {
 bool HleBios::handle(u32 pc) {
   u32 p = Bus::physical(pc) & (Bus::kRamSize - 1);
   if (peek32(p) != kMarker) return false;
-  // A load issued just before the jump or the exception lands after the vector's first
-  // instruction (the R3000's load delay); the kernel reads and saves registers in its place, so
-  // the value lands now. Else an interrupt right after a load saved the register's old value in
-  // the TCB, and ReturnFromException brought it back.
-  Cpu::Pending pending = cpu_.pending();
-  if (pending.load_reg) {
-    cpu_.set_reg(pending.load_reg, pending.load_value);
-    pending.load_reg = 0;
-    cpu_.set_pending(pending);
-  }
   if (p != kExceptionVector && via_table(p, pc)) return true;
   switch (p) {
     case kA0: call_a0(cpu_.reg(kT1) & 0xFF); break;

@@ -340,10 +340,7 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
       default: return false;
     }
   }
-  // The BIOS takes the timer number from the low halfword (but not in GetRCnt), so the event
-  // classes F2000000h-F2000003h that Sony's and PSn00bSDK's libraries pass name timers 0-3, as
-  // in OpenBIOS's copy of the retail code (pcsx-redux src/mips/openbios/handlers/irq.c).
-  const u32 t = fn == 0x03 ? a0 : a0 & 0xFFFF, base = 0xBF801100 + 16 * t;
+  const u32 t = a0, base = 0xBF801100 + 16 * a0;
   switch (fn) {
     case 0x02: {  // SetRCnt (init_timer): mode from the flags, psx-spx "BIOS Timer Functions"
       if (t > 2) {

@@ -71,6 +71,7 @@ void HleBios::install() {
 bool HleBios::handle(u32 pc) {
   u32 p = Bus::physical(pc) & (Bus::kRamSize - 1);
   if (peek32(p) != kMarker) return false;
+  land_pending_load();
   if (p != kExceptionVector && via_table(p, pc)) return true;
   switch (p) {
     case kA0: call_a0(cpu_.reg(kT1) & 0xFF); break;
@@ -80,6 +81,19 @@ bool HleBios::handle(u32 pc) {
     default: return false;
   }
   return true;
+}
+
+// A load issued just before the CPU reached a vector (in the delay slot of the jump there, or by
+// the instruction an interrupt came after) lands when the kernel's first instruction completes
+// (psx-spx "CPU Load/Store Opcodes": the load delay); the kernel's code is not run here, so it lands now, before the
+// registers are read, saved in the TCB or the pc is set (which would drop it).
+void HleBios::land_pending_load() {
+  Cpu::Pending p = cpu_.pending();
+  if (!p.load_reg) return;
+  cpu_.set_reg(p.load_reg, p.load_value);
+  p.load_reg = 0;
+  p.load_value = 0;
+  cpu_.set_pending(p);
 }
 
 void HleBios::return_to_caller(u32 v0) {

@@ -145,6 +145,7 @@ class HleBios {
   void call_a0(u32 fn);
   void call_b0(u32 fn);
   void call_c0(u32 fn);
+  void land_pending_load();
   void return_to_caller(u32 v0);
   void unsupported(const char* table, u32 fn);
   bool tty_call(u32 table, u32 fn);

@@ -340,7 +340,10 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
       default: return false;
     }
   }
-  const u32 t = a0, base = 0xBF801100 + 16 * a0;
+  // The SDKs pass a counter's event class (F200000xh, "RCntCNTx"); the kernel uses its low 16
+  // bits (OpenBIOS handlers/irq.c: initTimer, enableTimerIRQ, disableTimerIRQ, restartTimer;
+  // its getTimer takes the number as it is).
+  const u32 t = a0 & 0xFFFF, base = 0xBF801100 + 16 * t;
   switch (fn) {
     case 0x02: {  // SetRCnt (init_timer): mode from the flags, psx-spx "BIOS Timer Functions"
       if (t > 2) {
@@ -356,7 +359,7 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
       return_to_caller(1);
       return true;
     }
-    case 0x03: return_to_caller(t <= 2 ? io_read(base, 2) : 0); return true;  // GetRCnt
+    case 0x03: return_to_caller(a0 <= 2 ? io_read(base, 2) : 0); return true;  // GetRCnt
     case 0x04:                                                                 // StartRCnt
       io_write(kIMask, io_read(kIMask, 4) | (t == 3 ? 1u : 1u << (4 + (t & 3))), 4);
       return_to_caller(t <= 2 ? 1 : 0);

@@ -68,6 +68,8 @@ Console::Console()
   hle_.on_log = bus_.on_log;
   hle_.on_fatal = [this](const std::string& m) { fatal_error_ = m; };
   hle_.pad_at = [this](int port) -> SioDevice* { return sio0_.pad(port); };
+  hle_.disc_in_drive = [this] { return cdrom_.disc(); };
+  hle_.card_at = [this](int slot) { return sio0_.memory_card(slot); };
   cpu_.reset();
   idle_skip_.set_spu(&spu_);
   set_idle_skip(true);

@@ -1,7 +1,7 @@
 // HLE kernel save states: the kernel's interrupt dispatch, events, pad and heap state all go
 // through do_state, so saving anywhere in a program that lives on kernel interrupt chains, events
 // and callbacks (tests/roms/bios_interrupts.c) and loading into a fresh console gives the same
-// result as not saving.
+// result as not saving; the same for the file functions' handles.
 #include <gtest/gtest.h>
 
 #include "core/console.h"
@@ -39,6 +39,35 @@ TEST(HleBiosState, SaveAnywhereLoadInFreshConsoleSameOutcome) {
     std::vector<u8> blob = a.save_state();
     Console b;
     b.boot_exe(kProgram);
+    b.load_state(blob);
+    Outcome got = finish(b);
+    EXPECT_EQ(got.exit_code, expected.exit_code) << "save point " << point << ": " << b.fatal_error();
+    EXPECT_EQ(got.ram_hash, expected.ram_hash) << "save point " << point;
+  }
+}
+
+// The file functions' handles and positions are kernel state too: saving inside
+// tests/roms/bios_files.c (cdrom: files open, seeks, TTY handles closed and reopened) and loading
+// into a fresh console with the same disc ends as the uninterrupted run.
+TEST(HleBiosState, FileHandlesSurviveSaveAndLoad) {
+  const std::string program = PSXRL_BUILD_DIR "/tests/roms/bios_files.exe";
+  const std::string disc = PSXRL_BUILD_DIR "/tests/roms/cdrom_test.cue";
+  auto boot = [&](Console& c) {
+    c.insert_disc(disc);
+    c.boot_exe(program);
+  };
+  Console ref;
+  boot(ref);
+  Outcome expected = finish(ref);
+  ASSERT_EQ(expected.exit_code, std::optional<u32>(0)) << ref.fatal_error();
+  for (int point = 0; point < 12; ++point) {
+    Console a;
+    boot(a);
+    a.run_cycles(1009 + 79999 * point);  // the program runs about 900,000 cycles
+    if (a.stopped()) break;
+    std::vector<u8> blob = a.save_state();
+    Console b;
+    boot(b);
     b.load_state(blob);
     Outcome got = finish(b);
     EXPECT_EQ(got.exit_code, expected.exit_code) << "save point " << point << ": " << b.fatal_error();

@@ -64,6 +64,8 @@ void HleBios::install() {
   rand_seed_ = 0x24040001;
   strtok_next_ = 0;
   conf_ = {kMaxEvents, kMaxThreads, 0x801FFF00};
+  io_ = {};
+  io_.files[0].device = io_.files[1].device = kDevTty;  // stdin and stdout, as Exec() leaves them
 }
 
 bool HleBios::handle(u32 pc) {
@@ -110,14 +112,14 @@ void HleBios::unsupported(const char* table, u32 fn) {
 }
 
 void HleBios::call_a0(u32 fn) {
-  if (string_call(fn) || memory_fill_call(fn) || memory_call(kA0, fn) || tty_call(kA0, fn) ||
+  if (string_call(fn) || memory_fill_call(fn) || memory_call(kA0, fn) || io_call(kA0, fn) || tty_call(kA0, fn) ||
       system_call(kA0, fn))
     return;
   unsupported("A0h", fn);
 }
 
 void HleBios::call_b0(u32 fn) {
-  if (event_call(fn) || interrupt_call(kB0, fn) || thread_call(fn) || table_call(kB0, fn) || memory_call(kB0, fn) || tty_call(kB0, fn) ||
+  if (event_call(fn) || interrupt_call(kB0, fn) || thread_call(fn) || table_call(kB0, fn) || memory_call(kB0, fn) || io_call(kB0, fn) || tty_call(kB0, fn) ||
       system_call(kB0, fn))
     return;
   unsupported("B0h", fn);
@@ -128,25 +130,17 @@ void HleBios::call_c0(u32 fn) {
   unsupported("C0h", fn);
 }
 
-// putchar/puts/printf and the file calls on the TTY (fd 0 and 1 are the console, "tty:").
+// putchar/puts/printf: the console's output, whichever handles are open (the file calls are in
+// hle_files.cpp).
 bool HleBios::tty_call(u32 table, u32 fn) {
-  const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1), a2 = cpu_.reg(kA2);
-  auto write_fd = [&](u32 fd, u32 src, u32 len) {
-    if (fd > 1) return 0xFFFFFFFFu;
-    std::string s;
-    for (u32 i = 0; i < len; ++i) s += static_cast<char>(peek8(src + i));
-    print(s);
-    return len;
-  };
-  auto putc_fd = [&](u32 c, u32 fd) {
-    if (fd <= 1) print(std::string(1, static_cast<char>(c)));
-    return fd <= 1 ? c : 0xFFFFFFFFu;
+  const u32 a0 = cpu_.reg(kA0r);
+  auto putchar = [&](u32 c) {
+    print(std::string(1, static_cast<char>(c)));
+    return c;
   };
   if (table == kA0) {
     switch (fn) {
-      case 0x03: return_to_caller(write_fd(a0, a1, a2)); return true;
-      case 0x09: return_to_caller(putc_fd(a0, a1)); return true;
-      case 0x3C: return_to_caller(putc_fd(a0, 1)); return true;
+      case 0x3C: return_to_caller(putchar(a0)); return true;
       case 0x3E: print(read_string(a0) + "\n"); return_to_caller(1); return true;
       case 0x3F: {
         std::string s = format(a0);
@@ -158,9 +152,7 @@ bool HleBios::tty_call(u32 table, u32 fn) {
     }
   }
   switch (fn) {
-    case 0x35: return_to_caller(write_fd(a0, a1, a2)); return true;
-    case 0x3B: return_to_caller(putc_fd(a0, a1)); return true;
-    case 0x3D: return_to_caller(putc_fd(a0, 1)); return true;
+    case 0x3D: return_to_caller(putchar(a0)); return true;
     case 0x3F: print(read_string(a0) + "\n"); return_to_caller(1); return true;
     default: return false;
   }
@@ -189,10 +181,7 @@ bool HleBios::system_call(u32 table, u32 fn) {
       return true;
     case 0x4D: return_to_caller(io_read(kGp1, 4)); return true;
     case 0x4E: return_to_caller(0); return true;  // gpu_sync: commands complete at once here
-    // No BIOS CD-ROM handlers and no TTY device driver exist to remove or add.
-    case 0x72:
-    case 0x99:
-    case 0xA3: return_to_caller(0); return true;
+    case 0x99: return_to_caller(0); return true;  // AddDummyTty: the TTY device is always there
     case 0x9C: conf_ = {a0, a1, a2}; return_to_caller(0); return true;  // SetConf
     case 0x9D:                                                          // GetConf
       poke32(a0, conf_[0]), poke32(a1, conf_[1]), poke32(a2, conf_[2]);
@@ -258,7 +247,7 @@ void HleBios::print(const std::string& s) {
 }
 
 void HleBios::do_state(StateIO& s) {
-  const u32 version = s.section("HLEK", 3, 2);
+  const u32 version = s.section("HLEK", 4, 2);
   if (version == 2) {
     load_v2_state(s);
   } else {
@@ -272,6 +261,10 @@ void HleBios::do_state(StateIO& s) {
     s.pod(heap_), s.pod(kernel_heap_);
     s.pod(rand_seed_), s.pod(strtok_next_), s.pod(conf_);
   }
+  // Version 4 added the file functions' state; older states had no file open but stdin/stdout.
+  HleIoState boot_io;
+  boot_io.files[0].device = boot_io.files[1].device = kDevTty;
+  s.pod_since(version, 4, io_, boot_io);
   s.end_section("HLEK");
 }
 

@@ -2,31 +2,40 @@
 // state, lays out the kernel's RAM as a BIOS leaves it, owns the exception vector, and services
 // the BIOS calls programs make through the A0h/B0h/C0h vectors and SYSCALL (psx-spx "Kernel
 // (BIOS)"). Every call not listed here stops the console with a message naming it. Supported:
-//   A0h:03h write (fd 0/1 = TTY)  09h putc (fd 0/1)  0Ch strtol  0Dh strtoul  0Eh abs  0Fh labs
+//   A0h:00h open  01h lseek  02h read  03h write  04h close  05h ioctl  07h isatty  08h getc
+//       09h putc  0Ch strtol  0Dh strtoul  0Eh abs  0Fh labs
 //       10h atoi  11h atol  13h setjmp  14h longjmp  15h strcat  16h strncat  17h strcmp
 //       18h strncmp  19h strcpy  1Ah strncpy  1Bh strlen  1Ch index  1Dh rindex  1Eh strchr
 //       1Fh strrchr  20h strpbrk  21h strspn  22h strcspn  23h strtok  24h strstr  25h toupper
 //       26h tolower  27h bcopy  28h bzero  29h bcmp  2Ah memcpy  2Bh memset  2Ch memmove
 //       2Dh memcmp  2Eh memchr  2Fh rand  30h srand  33h malloc  34h free  37h calloc
-//       38h realloc  39h InitHeap  3Ch putchar  3Eh puts  3Fh printf  44h FlushCache
+//       38h realloc  39h InitHeap  3Bh getchar  3Ch putchar  3Eh puts  3Fh printf  44h FlushCache
 //       48h SendGP1Command  49h GPU_cw  4Ah GPU_cwp  4Dh GetGPUStatus  4Eh gpu_sync
-//       72h _96_remove  99h AddDummyTty  9Ch SetConf  9Dh GetConf  A3h DequeueCdIntr
-//       B4h GetSystemInfo
+//       54h/71h _96_init  55h/70h _bu_init  56h/72h _96_remove  95h CdInitSubFunc  99h AddDummyTty
+//       9Ch SetConf  9Dh GetConf  9Eh SetCdromIrqAutoAbort  A2h EnqueueCdIntr  A3h DequeueCdIntr
+//       A4h CdGetLbn  A5h CdReadSector  A6h CdGetStatus  ABh _card_info  ACh _card_load
+//       ADh _card_auto  AFh card_write_test  B4h GetSystemInfo
 //   B0h:00h alloc_kernel_memory  01h free_kernel_memory  02h SetRCnt  03h GetRCnt  04h StartRCnt
 //       05h StopRCnt  06h ResetRCnt  07h DeliverEvent  08h OpenEvent  09h CloseEvent
 //       0Ah WaitEvent  0Bh TestEvent  0Ch EnableEvent  0Dh DisableEvent  0Eh OpenTh  0Fh CloseTh
 //       10h ChangeTh  12h InitPad  13h StartPad  14h StopPad  17h ReturnFromException
 //       18h ResetEntryInt (SetDefaultExitFromException)  19h HookEntryInt (SetCustomExitFrom-
-//       Exception)  20h UnDeliverEvent  35h write  3Bh putc  3Dh putchar  3Fh puts
-//       51h Krom2RawAdd (always -1: no ROM font)  56h GetC0Table  57h GetB0Table
-//       5Bh ChangeClearPad
+//       Exception)  20h UnDeliverEvent  32h-37h, 39h-3Ch as A0h:00h-05h, 07h-09h, 3Bh
+//       3Dh putchar  3Fh puts  40h cd  42h firstfile2  43h nextfile  45h erase  47h AddDevice
+//       48h RemoveDevice (both accepted, no effect)  4Ah InitCARD2  4Bh StartCARD2  4Ch StopCARD2
+//       4Dh _card_info_subfunc  4Eh _card_write  4Fh _card_read  50h _new_card
+//       51h Krom2RawAdd (always -1: no ROM font)  54h _get_errno  55h _get_error
+//       56h GetC0Table  57h GetB0Table  5Bh ChangeClearPad  5Ch _card_status  5Dh _card_wait
 //   C0h:00h EnqueueTimerAndVblankIrqs  01h EnqueueSyscallHandler  02h SysEnqIntRP
 //       03h SysDeqIntRP  0Ah ChangeClearRCnt  0Ch InitDefInt  0Dh SetIrqAutoAck
 //   SYSCALL a0=0 NoFunction, 1 EnterCriticalSection, 2 ExitCriticalSection, 3 ChangeThread-
 //       SubFunction; other values deliver event F0000010h/4000h
-// Not supported (they stop the console): the BIOS CD-ROM and memory-card file system (open/read
-// on "cdrom:"/"bu00:", _96_init, _bu_init, _card_*), Exec/LoadExec/_boot, getchar/gets (no TTY
-// input), qsort/bsearch/lsearch (callbacks into comparison functions), and atof.
+// Files (hle_files.cpp): "tty:" (output to the host TTY, no input: getchar returns 0),
+// "cdrom:" (hle_cdfs.cpp: the disc's ISO 9660 files, sectors read from the image at once) and
+// "bu00:"/"bu10:" (hle_memcard.cpp: the emulated cards' directory and sectors, accessed at once,
+// completion events delivered before the call returns). Not supported (they stop the console):
+// Exec/LoadExec/_boot, gets, rename/undelete/format, the asynchronous CD calls (CdAsync*),
+// qsort/bsearch/lsearch (callbacks into comparison functions), and atof.
 //
 // Kernel RAM (psx-spx "BIOS Memory Map"), laid out at install(): the vectors at 80h (exception)
 // and A0h/B0h/C0h, the table of tables at 100h (ExCB, PCB, TCB, EvCB pointers and sizes), the
@@ -60,6 +69,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bios/hle_io.h"
 #include "core/cpu/cpu.h"
 #include "core/state.h"
 #include "core/types.h"
@@ -67,7 +77,11 @@
 namespace psx {
 
 class Bus;
+class MemoryCard;
 class SioDevice;
+namespace disc {
+class Disc;
+}
 
 class HleBios {
  public:
@@ -87,6 +101,9 @@ class HleBios {
   std::function<void(const std::string&)> on_fatal;
   // The controller in port 0/1 for the kernel's pad handler (nullptr when none is plugged).
   std::function<SioDevice*(int port)> pad_at;
+  // The disc in the drive and the memory card in slot 0/1 for the file functions (nullptr: none).
+  std::function<disc::Disc*()> disc_in_drive;
+  std::function<MemoryCard*(int slot)> card_at;
 
   void do_state(StateIO& s);
 
@@ -188,6 +205,40 @@ class HleBios {
   // printf formatting (hle_printf.cpp).
   std::string format(u32 fmt_addr) const;
 
+  // File functions (hle_files.cpp): handles, the TTY, firstfile/nextfile; the cdrom: device
+  // (hle_cdfs.cpp) and the memory cards (hle_memcard.cpp). State in io_ (hle_io.h).
+  struct DirEntry {
+    std::string name;
+    u32 attr, size, sector;
+  };
+  bool io_call(u32 table, u32 fn);
+  bool file_call(u32 fn);
+  bool file_call_b0(u32 fn);
+  u32 file_open(u32 path, u32 mode);
+  u32 file_read(u32 fd, u32 dst, u32 len);
+  u32 file_write(u32 fd, u32 src, u32 len);
+  u32 file_lseek(u32 fd, u32 offset, u32 whence);
+  u32 file_close(u32 fd);
+  u32 file_fail(HleFile* f, u32 err);
+  HleFile* file_at(u32 fd);
+  u32 first_file(u32 path, u32 entry);
+  u32 next_file(u32 entry);
+  std::vector<DirEntry> device_entries();
+  void return_after_events(u32 v0);
+  bool cd_call(u32 fn);
+  u32 cd_open(const std::string& path, HleFile& f);
+  u32 cd_read(HleFile& f, u32 dst, u32 len);
+  bool cd_read_blocks(u32 lba, u32 count, u32 dst);
+  std::string cd_full_path(const std::string& path) const;
+  std::vector<DirEntry> cd_entries(const std::string& dir);
+  bool card_call(u32 table, u32 fn);
+  u32 card_open(u32 port, const std::string& name, u32 mode, HleFile& f);
+  u32 card_transfer(HleFile& f, u32 addr, u32 len, bool write);
+  bool card_erase(u32 port, const std::string& name);
+  std::vector<DirEntry> card_entries(u32 port);
+  bool card_sector(u32 port, u32 sector, u32 addr, bool write);
+  void card_deliver(u32 port, bool info);
+
   u8 peek8(u32 addr) const;
   u32 peek32(u32 addr) const;
   void poke8(u32 addr, u8 v);
@@ -217,6 +268,7 @@ class HleBios {
   u32 strtok_next_ = 0;
   std::array<u32, 3> conf_{};  // SetConf: EvCB count, TCB count, stack top
   std::set<u32> warned_;
+  HleIoState io_;
 };
 
 }  // namespace psx

@@ -195,10 +195,14 @@ void MemoryCard::commit_write(u8 received_checksum) {
     end_status_ = kEndBadChecksum;
     return;
   }
-  std::memcpy(&data_[sector_ * kSectorSize], sector_buf_.data(), kSectorSize);
+  end_status_ = kEndGood;
+  write_sector(sector_, sector_buf_.data());
+}
+
+void MemoryCard::write_sector(u32 sector, const u8* src) {
+  std::memcpy(&data_[sector * kSectorSize], src, kSectorSize);
   flag_ &= static_cast<u8>(~kFlagFresh);
   dirty_ = true;
-  end_status_ = kEndGood;
   // Each written sector reaches the file at once, so a host crash loses at most the sectors of
   // the write in flight. A failing file never stops the emulated card.
   try {

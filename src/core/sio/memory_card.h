@@ -55,6 +55,9 @@ class MemoryCard final : public SioDevice {
   bool dirty() const { return dirty_; }
   const std::filesystem::path& path() const { return path_; }
   const std::vector<u8>& data() const { return data_; }
+  // Stores one sector (sector < kSectors) as a completed write command does: clears FLAG bit 3
+  // and saves the file. Used by the HLE kernel's card functions, which bypass the serial port.
+  void write_sector(u32 sector, const u8* src);
   u8 flag() const { return flag_; }
 
   void do_state(StateIO& s);

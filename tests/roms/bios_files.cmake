@@ -1,0 +1,8 @@
+# The HLE kernel's file functions: cdrom: files on cdrom.cmake's disc (DATA.BIN) and tty: handles,
+# and the memory card functions on a card in slot 1 (a card file in the build tree, created on the
+# first write; the program erases its own file from an earlier run first). CHECKS: one per
+# CHECK_EQ call site, each run once.
+psx_add_rom_test(bios_files SOURCES bios_files.c bios_file_calls.S bios_calls.S CHECKS 48
+                 ARGS --disc ${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue)
+psx_add_rom_test(bios_memcard SOURCES bios_memcard.c bios_file_calls.S bios_calls.S CHECKS 62
+                 ARGS --memcard1 ${CMAKE_CURRENT_BINARY_DIR}/bios_memcard.mcd)

@@ -49,8 +49,12 @@ u32 Gpu::gpustat() const {
   s |= u32{irq_flag_} << 24;
   const bool ready_cmd = gp0_mode_ != Gp0Mode::CpuToVram && !download_.active;
   s |= u32{ready_cmd} << 26;
-  s |= u32{download_.active} << 27;   // ready to send VRAM to the CPU
-  s |= u32{!download_.active} << 28;  // ready to receive a DMA block
+  s |= u32{download_.active} << 27;  // ready to send VRAM to the CPU
+  // 28: ready for a DMA block: the command FIFO is empty, as it always is here (commands run as
+  // they arrive), a VRAM-to-CPU transfer waiting to be read included: on a console DrawSync's
+  // wait for bit 28 after GP0(C0) ends (ps1-tests gpu/bandwidth; DuckStation's
+  // GPU::UpdateDMARequest agrees).
+  s |= 1u << 28;
   s |= u32{dma_request()} << 25;
   s |= dma_direction_ << 29;
   s |= u32{field_line_odd()} << 31;
@@ -66,13 +70,13 @@ bool Gpu::field_line_odd() const {
 }
 
 // GPUSTAT.25, which the DMA controller polls once per linked-list node: its meaning follows
-// GP1(04): off 0, FIFO not full (always, here), then bit 28 (ready for a DMA block), bit 27
-// (ready to send VRAM). Computed alone, without the rest of GPUSTAT.
+// GP1(04): off 0, FIFO not full (always, here), then bit 28 (ready for a DMA block: always), bit
+// 27 (ready to send VRAM). Computed alone, without the rest of GPUSTAT.
 bool Gpu::dma_request() const {
   switch (dma_direction_) {
     case 0: return false;
-    case 1: return true;
-    case 2: return !download_.active;
+    case 1:
+    case 2: return true;
     default: return download_.active;
   }
 }

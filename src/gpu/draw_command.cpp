@@ -108,6 +108,7 @@ Rect DrawCommand::write_rect() const {
     case Kind::Fill:
     case Kind::Copy: return wrapped_block(block.x, block.y, block.width, block.height);
     case Kind::Row: return wrapped_block(block.x, block.y, block.width, 1);
+    case Kind::ClutLoad: return {};
   }
   return {};
 }
@@ -132,8 +133,28 @@ u32 DrawCommand::read_rects(Rect out[3]) const {
     case Kind::Row:
       if (block.mask.check) out[n++] = write;
       return n;
+    case Kind::ClutLoad:
+      out[n++] = wrapped_block(block.x, block.y, block.width, 1);
+      return n;
   }
   return n;
+}
+
+bool DrawCommand::textured() const {
+  switch (kind) {
+    case Kind::Triangle: return triangle.textured;
+    case Kind::Quad: return quad.first.textured;
+    case Kind::Rectangle: return rectangle.textured;
+    default: return false;
+  }
+}
+
+u32 DrawCommand::clut_x() const {
+  return kind == Kind::Rectangle ? rectangle.clut_x : kind == Kind::Quad ? quad.first.clut_x : triangle.clut_x;
+}
+
+u32 DrawCommand::clut_y() const {
+  return kind == Kind::Rectangle ? rectangle.clut_y : kind == Kind::Quad ? quad.first.clut_y : triangle.clut_y;
 }
 
 Rect DrawCommand::overwrite_rect() const {

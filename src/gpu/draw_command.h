@@ -52,8 +52,13 @@ struct Quad {
 };
 
 struct DrawCommand {
-  enum class Kind : u8 { Triangle, Quad, Line, Rectangle, Fill, Copy, Row };
+  // ClutLoad: only the CLUT cache load of a textured call the queue dropped (block: x, y and the
+  // entry count as width), kept where a later kept call draws with what it loads.
+  enum class Kind : u8 { Triangle, Quad, Line, Rectangle, Fill, Copy, Row, ClutLoad };
   Kind kind = Kind::Fill;
+  // Triangle, Quad, Rectangle: CLUT cache entries loaded before drawing (Renderer::load_clut()
+  // from the call's CLUT position): 0, 16 or 256.
+  u16 clut_load = 0;
   DrawState ds;  // Triangle, Quad, Line, Rectangle
   // The call's parameters, by kind: queued calls are copied a lot (kept, compacted), so only one
   // kind's take room, and every reader checks `kind` first.
@@ -84,6 +89,11 @@ struct DrawCommand {
   // the mask check); triangles and quads are handled as pairs of triangles by
   // triangle_pair_cover.
   Rect overwrite_rect() const;
+  // A textured call: it may draw with the CLUT cache as earlier calls left it.
+  bool textured() const;
+  // The CLUT position of a textured call.
+  u32 clut_x() const;
+  u32 clut_y() const;
 };
 
 // One of a pair of triangles drawn one after the other, with its drawing state.

@@ -103,15 +103,15 @@ void DrawQueue::set_deferred(bool on) {
   deferred_ = on;
 }
 
-void DrawQueue::triangle(const Triangle& t, const DrawState& ds) {
+void DrawQueue::triangle(const Triangle& t, const DrawState& ds, u16 clut_load) {
   DrawCommand c;
-  c.kind = DrawCommand::Kind::Triangle, c.triangle = t, c.ds = ds;
+  c.kind = DrawCommand::Kind::Triangle, c.triangle = t, c.ds = ds, c.clut_load = clut_load;
   push(c);
 }
 
-void DrawQueue::quad(const Quad& q, const DrawState& ds) {
+void DrawQueue::quad(const Quad& q, const DrawState& ds, u16 clut_load) {
   DrawCommand c;
-  c.kind = DrawCommand::Kind::Quad, c.quad = q, c.ds = ds;
+  c.kind = DrawCommand::Kind::Quad, c.quad = q, c.ds = ds, c.clut_load = clut_load;
   push(c);
 }
 
@@ -121,9 +121,9 @@ void DrawQueue::line(const Line& l, const DrawState& ds) {
   push(c);
 }
 
-void DrawQueue::rectangle(const Rectangle& r, const DrawState& ds) {
+void DrawQueue::rectangle(const Rectangle& r, const DrawState& ds, u16 clut_load) {
   DrawCommand c;
-  c.kind = DrawCommand::Kind::Rectangle, c.rectangle = r, c.ds = ds;
+  c.kind = DrawCommand::Kind::Rectangle, c.rectangle = r, c.ds = ds, c.clut_load = clut_load;
   push(c);
 }
 
@@ -214,6 +214,7 @@ void DrawQueue::execute(const DrawCommand& c, bool after_frame) {
   using Kind = DrawCommand::Kind;
   const VramBlock& b = c.block;  // read only for the kinds that have one
   ++executed_;
+  if (c.clut_load) target_->load_clut(c.clut_x(), c.clut_y(), c.clut_load);
   switch (c.kind) {
     case Kind::Triangle: return target_->draw_triangle(c.triangle, c.ds);
     case Kind::Quad:
@@ -225,6 +226,7 @@ void DrawQueue::execute(const DrawCommand& c, bool after_frame) {
     case Kind::Fill: return target_->fill(b.x, b.y, b.width, b.height, b.pixel);
     case Kind::Copy: return target_->copy(b.sx, b.sy, b.x, b.y, b.width, b.height, b.mask);
     case Kind::Row: return target_->write_row(b.x, b.y, pixels_.data() + b.pixels, b.width, b.mask);
+    case Kind::ClutLoad: return target_->load_clut(b.x, b.y, b.width);
   }
 }
 
@@ -274,19 +276,32 @@ void DrawQueue::drop() {
 // it, since calls before it are seen through its pixels there. A cover inside another one already
 // gathering decides nothing the bigger one does not (their reads inside it are the same), and a
 // cover around one drops all it would.
+//
+// The CLUT cache: walking back, `replaced_entries` counts the cache entries (0, 16 or 256) that
+// later loads replace before any kept textured call draws with what was there (a textured call
+// without a load may draw with all of them). An earlier load of no more entries is dead, and is
+// dropped; a dropped call whose load is not leaves it behind, kept (keep_ 2: kept, but no longer
+// the call it was), so the cache ends as it would have (save states hold it).
 void DrawQueue::prune() {
   keep_.assign(queue_.size(), 1);  // reuses its storage: no allocation per frame
   Covers covers;
   bool frame_added = !frame_pending_;
   bool any_dropped = false;
+  u32 replaced_entries = 0;
   for (size_t i = queue_.size(); i-- > 0;) {
     if (!frame_added && i < frame_position_) covers.add_read(frame_rect_), frame_added = true;
     DrawCommand& c = queue_[i];
-    if (covers.replaced(c.write)) {
+    const bool load_only = c.kind == DrawCommand::Kind::ClutLoad;
+    const u32 load = load_only ? c.block.width : c.clut_load;
+    if (load_only ? load <= replaced_entries : covers.replaced(c.write)) {
       keep_[i] = 0, any_dropped = true;
+      if (load > replaced_entries) keep_[i] = 2, leave_clut_load(c), covers.add_read(c.reads[0]);
+      replaced_entries = std::max(replaced_entries, load);
       continue;
     }
-    const bool covering = !c.cover.empty() && (!c.cover_with_next || keep_[i + 1]);
+    if (load_only) replaced_entries = std::max(replaced_entries, load);
+    if (c.textured()) replaced_entries = load ? std::max(replaced_entries, load) : 0;
+    const bool covering = !c.cover.empty() && (!c.cover_with_next || keep_[i + 1] == 1);
     if (covering) covers.hide(c.cover);
     // A kept call is walked again by every later prune: its reads are worked out once.
     if (c.read_count == DrawCommand::kReadsUnknown) c.read_count = static_cast<u8>(c.read_rects(c.reads));
@@ -305,7 +320,7 @@ void DrawQueue::compact() {
     if (!keep_[i]) continue;
     if (i < frame_position_) ++position;
     DrawCommand& c = queue_[i];  // changed in place, then copied once, only if it moves
-    if (c.cover_with_next && !keep_[i + 1]) c.cover = {}, c.cover_with_next = false;
+    if (c.cover_with_next && keep_[i + 1] != 1) c.cover = {}, c.cover_with_next = false;
     if (c.kind == DrawCommand::Kind::Row) {
       VramBlock& b = c.block;
       std::copy(pixels_.begin() + b.pixels, pixels_.begin() + b.pixels + b.width, pixels_.begin() + pixels_out);
@@ -318,6 +333,15 @@ void DrawQueue::compact() {
   queue_.resize(out);
   pixels_.resize(pixels_out);
   frame_position_ = position;
+}
+
+// Turns a dropped call into the CLUT cache load it made, which reads the CLUT row as it was then.
+void DrawQueue::leave_clut_load(DrawCommand& c) {
+  VramBlock load;
+  load.x = c.clut_x(), load.y = c.clut_y(), load.width = c.clut_load;
+  c.kind = DrawCommand::Kind::ClutLoad, c.block = load, c.clut_load = 0;
+  c.write = c.cover = {}, c.cover_with_next = false;
+  c.read_count = static_cast<u8>(c.read_rects(c.reads));
 }
 
 }  // namespace psx::gpu

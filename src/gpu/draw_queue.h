@@ -10,7 +10,8 @@
 // rectangle (a GP0(02) fill, an opaque untextured rectangle, or an opaque untextured quad or two
 // such triangles in a row that together cover a rectangle, like a full-screen background quad)
 // drops every earlier call that writes only inside it, unless a later kept call, or the frame
-// due, may read what it wrote.
+// due, may read what it wrote. A dropped call that loads the CLUT cache leaves that load behind
+// (DrawCommand::Kind::ClutLoad) unless a later kept call loads it again before drawing with it.
 // The queue is pruned so in batches, once it has grown by as many calls as the last prune kept
 // (at least kPruneAt), and before it is drawn. Past a size cap the queue is drawn.
 #pragma once
@@ -49,12 +50,14 @@ class DrawQueue {
   // The calls made to the renderer so far, each of which may have changed VRAM.
   u64 executed() const { return executed_; }
 
-  void triangle(const Triangle& t, const DrawState& ds);
+  // `clut_load`: the CLUT cache entries loaded from the primitive's CLUT before it is drawn (0,
+  // 16 or 256; Renderer::load_clut()).
+  void triangle(const Triangle& t, const DrawState& ds, u16 clut_load);
   // A four-point polygon: the renderer draws the triangles q.first and q.second(). Queued as one
   // call, which the queue's walks meet once (three quarters of Tumble's polygons are quads).
-  void quad(const Quad& q, const DrawState& ds);
+  void quad(const Quad& q, const DrawState& ds, u16 clut_load);
   void line(const Line& l, const DrawState& ds);
-  void rectangle(const Rectangle& r, const DrawState& ds);
+  void rectangle(const Rectangle& r, const DrawState& ds, u16 clut_load);
   void fill(u32 x, u32 y, u32 width, u32 height, u16 pixel);
   void copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 height, MaskMode m);
   void write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m);
@@ -74,6 +77,7 @@ class DrawQueue {
   void draw_all();  // flush() without the prune
   void convert_frame();
   void prune();
+  void leave_clut_load(DrawCommand& c);
   void compact();
   // triangle_pair_cover() for the pairs may_pair_cover() lets through (a large quad's halves, or
   // two large triangles in a row), through a memo of the last 32 met, by all it depends on (the

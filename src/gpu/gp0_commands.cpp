@@ -74,11 +74,11 @@ void Gpu::gp0_execute(const u32* w) {
     default: break;
   }
   switch (c) {
+    case 0x01: return clear_cache();
     case 0x02: return gp0_fill_rectangle(w);
     case 0x1F: return gp0_irq();
     case 0xE1: case 0xE2: case 0xE3: case 0xE4: case 0xE5: case 0xE6: return gp0_environment(w[0]);
-    // 00h NOP, 01h clear texture cache (no cache is modelled: texels are always read from
-    // VRAM), 03h-1Eh and E0h/E7h-FFh: no effect.
+    // 00h NOP, 03h-1Eh and E0h/E7h-FFh: no effect.
     default: return;
   }
 }
@@ -114,8 +114,9 @@ void Gpu::gp0_polygon(const u32* w) {
   t.clut_y = static_cast<u16>((clut >> 6) & 0x1FF);
   t.shaded = shaded, t.textured = textured, t.semi = c & 0x02, t.raw = c & 0x01;
   t.v[0] = v[0], t.v[1] = v[1], t.v[2] = v[2];
-  if (corners == 4) draw_.quad({t, v[3]}, draw_state());
-  else draw_.triangle(t, draw_state());
+  const u16 load = textured ? clut_load(clut) : 0;
+  if (corners == 4) draw_.quad({t, v[3]}, draw_state(), load);
+  else draw_.triangle(t, draw_state(), load);
 }
 
 // A textured polygon's texpage attribute replaces GP0(E1) bits 0-8 and 11.
@@ -177,8 +178,10 @@ void Gpu::gp0_rectangle(const u32* w) {
   r.r = static_cast<u8>(w[0]), r.g = static_cast<u8>(w[0] >> 8), r.b = static_cast<u8>(w[0] >> 16);
   r.textured = c & 0x04, r.semi = c & 0x02, r.raw = c & 0x01;
   u32 i = 2;
+  u16 load = 0;
   if (r.textured) {
     u32 uv = w[i++];
+    load = clut_load(uv >> 16);
     r.u = static_cast<u8>(uv), r.v = static_cast<u8>(uv >> 8);
     r.clut_x = static_cast<u16>(((uv >> 16) & 0x3F) * 16);
     r.clut_y = static_cast<u16>((uv >> 22) & 0x1FF);
@@ -190,8 +193,28 @@ void Gpu::gp0_rectangle(const u32* w) {
   } else {
     r.width = r.height = kSizes[size];
   }
-  draw_.rectangle(r, draw_state());
+  draw_.rectangle(r, draw_state(), load);
 }
+
+// The CLUT cache entries a textured primitive with CLUT attribute `clut` (a polygon's or
+// rectangle's texcoord word, bits 16-31) loads before drawing: 16 (4-bit texels) or 256 (8-bit)
+// when the cache holds another CLUT, or only 16 entries where 256 are needed; 0 for 15-bit
+// texels and when the cache already holds what is needed. The hardware capture of ps1-tests
+// gpu/clut-cache shows each case (a palette rewritten in VRAM is not seen until a reload; a
+// change of texture depth by GP0(E1) alone reloads nothing); DuckStation's
+// GPU::UpdateCLUTIfNeeded keeps the same rule.
+u16 Gpu::clut_load(u32 clut) {
+  if (ds_.texture_disable || ds_.tex_depth >= 2) return 0;
+  const u32 position = clut & 0x7FFF;  // bit 15 is not part of the attribute
+  const bool wide = ds_.tex_depth == 1;
+  if (position == clut_tag_ && (clut_wide_ || !wide)) return 0;
+  clut_tag_ = position, clut_wide_ = wide;
+  return wide ? 256 : 16;
+}
+
+// GP0(01) clears the texture cache, the CLUT cache with it: the next CLUT primitive reloads
+// (psx-spx "GP0(01h) - Clear Cache").
+void Gpu::clear_cache() { clut_tag_ = kNoClut; }
 
 // GP0(02): X rounded down and width rounded up to 16 pixels; Y and height as given (9 bits).
 void Gpu::gp0_fill_rectangle(const u32* w) {

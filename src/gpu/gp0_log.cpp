@@ -31,7 +31,9 @@ bool Gpu::log_command(const u32* w) {
   const u32 c = w[0] >> 24;
   const bool draws = (c >> 5) >= 1 && (c >> 5) <= 4;  // polygons, lines, rectangles, VRAM copies
   const bool environment = c >= 0xE1 && c <= 0xE6;
-  if (!draws && !environment && c != 0x02) {
+  // GP0(01) is logged for its place among the logged commands: it clears the CLUT cache between
+  // them (Gpu::clear_cache()).
+  if (!draws && !environment && c != 0x02 && c != 0x01) {
     // Transfers to and from VRAM stream words or read it; NOPs and GP0(1F) draw nothing.
     if ((c >> 5) == 5 || (c >> 5) == 6) replay_log();
     return false;

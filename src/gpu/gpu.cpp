@@ -49,8 +49,12 @@ u32 Gpu::gpustat() const {
   s |= u32{irq_flag_} << 24;
   const bool ready_cmd = gp0_mode_ != Gp0Mode::CpuToVram && !download_.active;
   s |= u32{ready_cmd} << 26;
-  s |= u32{download_.active} << 27;   // ready to send VRAM to the CPU
-  s |= u32{!download_.active} << 28;  // ready to receive a DMA block
+  s |= u32{download_.active} << 27;  // ready to send VRAM to the CPU
+  // 28: ready for a DMA block: the command FIFO is empty, as it always is here (commands run as
+  // they arrive), a VRAM-to-CPU transfer waiting to be read included: on a console DrawSync's
+  // wait for bit 28 after GP0(C0) ends (ps1-tests gpu/bandwidth; DuckStation's
+  // GPU::UpdateDMARequest agrees).
+  s |= 1u << 28;
   s |= u32{dma_request()} << 25;
   s |= dma_direction_ << 29;
   s |= u32{field_line_odd()} << 31;
@@ -66,13 +70,13 @@ bool Gpu::field_line_odd() const {
 }
 
 // GPUSTAT.25, which the DMA controller polls once per linked-list node: its meaning follows
-// GP1(04): off 0, FIFO not full (always, here), then bit 28 (ready for a DMA block), bit 27
-// (ready to send VRAM). Computed alone, without the rest of GPUSTAT.
+// GP1(04): off 0, FIFO not full (always, here), then bit 28 (ready for a DMA block: always), bit
+// 27 (ready to send VRAM). Computed alone, without the rest of GPUSTAT.
 bool Gpu::dma_request() const {
   switch (dma_direction_) {
     case 0: return false;
-    case 1: return true;
-    case 2: return !download_.active;
+    case 1:
+    case 2: return true;
     default: return download_.active;
   }
 }
@@ -156,6 +160,7 @@ void Gpu::gp1_reset() {
   gp1_reset_command_buffer();
   download_.active = false;
   irq_flag_ = false;
+  clear_cache();
   display_disabled_ = true;
   dma_direction_ = 0;
   display_start_ = 0;
@@ -220,6 +225,7 @@ std::shared_ptr<const void> Gpu::vram_token() {
 // The picture is taken again from the new renderer, at its scale, from VRAM as it is now.
 void Gpu::set_renderer(std::unique_ptr<gpu::Renderer> renderer) {
   renderer->load_vram(vram());
+  renderer->set_clut_cache(renderer_->clut_cache());
   renderer_ = std::move(renderer);
   draw_.set_target(renderer_.get());
   draw_.frame_due(display_area());
@@ -266,8 +272,9 @@ bool Gpu::write_vram_png(const std::string& path, std::string& error) {
 
 void Gpu::do_state(StateIO& s) {
   // Version 2 saves the polyline vertex field by field; version 1 saved the struct whole, with
-  // its padding bytes, which made equal consoles give unequal states.
-  const u32 version = s.section("GPU ", 2, 1);
+  // its padding bytes, which made equal consoles give unequal states. Version 3 adds the CLUT
+  // cache (older states load with it empty, to be reloaded by the next CLUT primitive).
+  const u32 version = s.section("GPU ", 3, 1);
   // A state holds what eager drawing would have: everything drawn, the last VBlank's picture.
   if (s.loading()) {
     drop_log();
@@ -323,6 +330,16 @@ void Gpu::do_state(StateIO& s) {
     s.boolean(t->active);
   }
   s.pod(gpuread_latch_);
+  if (version >= 3) {
+    s.pod(clut_tag_);
+    s.boolean(clut_wide_);
+    u16 entries[gpu::Renderer::kClutEntries];
+    std::copy_n(renderer_->clut_cache(), gpu::Renderer::kClutEntries, entries);
+    s.pod(entries);
+    if (s.loading()) renderer_->set_clut_cache(entries);
+  } else {
+    clut_tag_ = kNoClut;
+  }
   for (u32* r : {&draw_mode_, &texture_window_, &area_top_left_, &area_bottom_right_, &draw_offset_, &mask_bits_})
     s.pod(*r);
   s.boolean(irq_flag_);

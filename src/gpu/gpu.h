@@ -128,6 +128,8 @@ class Gpu final : public IoDevice, public DmaPort {
   void gp0_draw_offset(u32 word);
   void gp0_mask_bit(u32 word);
   void gp0_irq();
+  u16 clut_load(u32 clut);
+  void clear_cache();
   void upload_pixels(const u16* pixels, u32 count);
   void set_position(gpu::Vertex& v, u32 xy) const;
   void update_draw_state();
@@ -195,6 +197,11 @@ class Gpu final : public IoDevice, public DmaPort {
   Transfer upload_;    // GP0(A0)
   Transfer download_;  // GP0(C0)
   u32 gpuread_latch_ = 0;
+  // The CLUT cache's contents (clut_load()): the CLUT attribute it was loaded from (kNoClut
+  // after GP0(01) or a reset) and whether it holds 256 entries; the entries are the renderer's.
+  static constexpr u32 kNoClut = 0xFFFFFFFF;
+  u32 clut_tag_ = kNoClut;
+  bool clut_wide_ = false;
 
   // Drawing environment registers (raw values for GPUSTAT and GP1(10)).
   u32 draw_mode_ = 0;        // E1 bits 0-13

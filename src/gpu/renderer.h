@@ -4,6 +4,8 @@
 // the same interface later without touching command processing. Calls are per primitive, never
 // per pixel.
 #pragma once
+#include <algorithm>
+
 #include "core/types.h"
 #include "gpu/vram.h"
 
@@ -82,6 +84,15 @@ class Renderer {
   virtual void copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 height, MaskMode m) = 0;
   // Part of a GP0(A0) transfer: `count` pixels into one row starting at (x, y), wrapping in x.
   virtual void write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m) = 0;
+  // The CLUT cache (psx-spx "GP0(01h) Clear Cache"; ps1-tests gpu/clut-cache): 4- and 8-bit
+  // textured primitives take their palette from this cache, not from VRAM. The GPU loads it
+  // (`count` = 16 or 256 entries from (x, y), wrapping in x) only when a primitive's CLUT or
+  // texture depth asks for entries it does not hold (Gpu::clut_load()), before drawing it.
+  virtual void load_clut(u32 x, u32 y, u32 count) = 0;
+  // The cache's 256 entries, for save states and a change of backend.
+  static constexpr u32 kClutEntries = 256;
+  const u16* clut_cache() const { return clut_; }
+  void set_clut_cache(const u16* entries) { std::copy_n(entries, kClutEntries, clut_); }
 
   // The current 1024x512 contents (a hardware backend downloads before answering).
   virtual const u16* vram() const = 0;
@@ -97,6 +108,9 @@ class Renderer {
   // The native rectangle (x, y, width, height), wrapping at the VRAM edges, at the internal
   // resolution: (width * scale) x (height * scale) pixels into `out`, row by row.
   virtual void read_scaled(u32 x, u32 y, u32 width, u32 height, u16* out) const;
+
+ protected:
+  u16 clut_[kClutEntries] = {};
 };
 
 }  // namespace psx::gpu

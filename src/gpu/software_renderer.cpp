@@ -1,4 +1,5 @@
-// Software rasterizer: the VRAM block operations (fill, VRAM->VRAM copy, CPU->VRAM rows).
+// Software rasterizer: the VRAM block operations (fill, VRAM->VRAM copy, CPU->VRAM rows) and
+// the CLUT cache's load.
 #include "gpu/software_renderer.h"
 
 #include <algorithm>
@@ -41,6 +42,11 @@ void SoftwareRenderer::copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 widt
 void SoftwareRenderer::write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m) {
   u16* d = &vram_[(y & (kVramHeight - 1)) * kVramWidth];
   for (u32 i = 0; i < count; ++i) store_masked(d[(x + i) & (kVramWidth - 1)], pixels[i], m);
+}
+
+void SoftwareRenderer::load_clut(u32 x, u32 y, u32 count) {
+  const u16* row = &vram_[(y & (kVramHeight - 1)) * kVramWidth];
+  for (u32 i = 0; i < count; ++i) clut_[i] = row[(x + i) & (kVramWidth - 1)];
 }
 
 }  // namespace psx::gpu

@@ -20,6 +20,7 @@ class SoftwareRenderer final : public Renderer {
   void fill(u32 x, u32 y, u32 width, u32 height, u16 pixel) override;
   void copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 height, MaskMode m) override;
   void write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m) override;
+  void load_clut(u32 x, u32 y, u32 count) override;
 
   const u16* vram() const override { return vram_.data(); }
   void load_vram(const u16* pixels) override;

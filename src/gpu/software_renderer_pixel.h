@@ -22,15 +22,15 @@ inline constexpr s8 kNoDither[4] = {0, 0, 0, 0};
 struct PixelContext {
   u16* vram = nullptr;
   u32 page_x = 0, page_y = 0;  // texture page base in VRAM pixels
-  u32 clut_x = 0, clut_y = 0;
+  const u16* clut = nullptr;  // the renderer's CLUT cache (Renderer::load_clut())
   u8 win_and_u = 0xFF, win_or_u = 0, win_and_v = 0xFF, win_or_v = 0;
   u8 semi_mode = 0;
   bool dither = false;
   bool check_mask = false;
   u16 mask_or = 0;
 
-  PixelContext(u16* v, const DrawState& ds, u32 cx, u32 cy, bool dithered)
-      : vram(v), page_x(ds.texpage_x), page_y(ds.texpage_y), clut_x(cx), clut_y(cy),
+  PixelContext(u16* v, const DrawState& ds, const u16* palette, bool dithered)
+      : vram(v), page_x(ds.texpage_x), page_y(ds.texpage_y), clut(palette),
         win_and_u(ds.win_and_u), win_or_u(ds.win_or_u), win_and_v(ds.win_and_v), win_or_v(ds.win_or_v),
         semi_mode(ds.semi_mode), dither(dithered && ds.dither), check_mask(ds.check_mask),
         mask_or(ds.set_mask ? kMaskBit : 0) {}
@@ -38,7 +38,8 @@ struct PixelContext {
   const s8* dither_row(s32 y) const { return dither ? kDitherMatrix[y & 3] : kNoDither; }
 };
 
-// Texel at texture coordinate (u, v): window applied, then the page/CLUT lookup with VRAM wrap.
+// Texel at texture coordinate (u, v): window applied, then the page lookup with VRAM wrap and
+// the CLUT cache's entry.
 template <int kTex>
 inline u16 fetch_texel(const PixelContext& c, u32 u, u32 v) {
   u = (u & c.win_and_u) | c.win_or_u;
@@ -46,12 +47,10 @@ inline u16 fetch_texel(const PixelContext& c, u32 u, u32 v) {
   const u16* row = c.vram + ((c.page_y + v) & (kVramHeight - 1)) * kVramWidth;
   if constexpr (kTex == kClut4) {
     u32 word = row[(c.page_x + (u >> 2)) & (kVramWidth - 1)];
-    u32 index = (word >> ((u & 3) * 4)) & 0xF;
-    return c.vram[vram_index(c.clut_x + index, c.clut_y)];
+    return c.clut[(word >> ((u & 3) * 4)) & 0xF];
   } else if constexpr (kTex == kClut8) {
     u32 word = row[(c.page_x + (u >> 1)) & (kVramWidth - 1)];
-    u32 index = (word >> ((u & 1) * 8)) & 0xFF;
-    return c.vram[vram_index(c.clut_x + index, c.clut_y)];
+    return c.clut[(word >> ((u & 1) * 8)) & 0xFF];
   } else {
     return row[(c.page_x + u) & (kVramWidth - 1)];
   }

@@ -37,7 +37,7 @@ struct LineAxis {
 
 template <int kTex, bool kRaw, bool kSemi>
 void SoftwareRenderer::rasterize_rectangle(const Rectangle& r, const DrawState& ds) {
-  PixelContext ctx(vram_.data(), ds, r.clut_x, r.clut_y, false);
+  PixelContext ctx(vram_.data(), ds, clut_, false);
   s32 y_begin = std::max(r.y, ds.area_top), y_end = std::min(r.y + static_cast<s32>(r.height) - 1, ds.area_bottom);
   s32 x_begin = std::max(r.x, ds.area_left), x_end = std::min(r.x + static_cast<s32>(r.width) - 1, ds.area_right);
   const s32 du = ds.flip_x ? -1 : 1, dv = ds.flip_y ? -1 : 1;
@@ -81,7 +81,7 @@ void SoftwareRenderer::rasterize_line(const Line& l, const DrawState& ds) {
   s32 steps = std::max(std::abs(dx), std::abs(dy));
   // Lines are dithered whenever GP0(E1).9 is set, flat ones too (ps1-tests gpu/lines captures:
   // flat 0xAA lines come out 20 and 21 in the dither pattern).
-  PixelContext ctx(vram_.data(), ds, 0, 0, true);
+  PixelContext ctx(vram_.data(), ds, clut_, true);
 
   // At an exact half step x rounds down (toward the start) and y toward the right end point.
   LineAxis x(p0.x, dx, steps, false), y(p0.y, dy, steps, true);

@@ -48,7 +48,7 @@ void SoftwareRenderer::rasterize_triangle(const Triangle& t, const DrawState& ds
   }
 
   // Dither applies to Gouraud-shaded and texture-modulated polygons (psx-spx GP0(E1).9).
-  PixelContext ctx(vram_.data(), ds, t.clut_x, t.clut_y, kGouraud || (kTex != kUntextured && !kRaw));
+  PixelContext ctx(vram_.data(), ds, clut_, kGouraud || (kTex != kUntextured && !kRaw));
   s32 y_begin = std::max(a.y, ds.area_top);
   s32 y_end = std::min(c.y - 1, ds.area_bottom);
   if (y_begin > y_end) return;

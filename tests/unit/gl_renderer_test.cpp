@@ -80,6 +80,12 @@ bool samples_itself(const DrawState& ds, u16 clut_x, u16 clut_y, s32 x0, s32 y0,
   return overlaps(ds.texpage_x, ds.texpage_y, 256, 256) || overlaps(clut_x, clut_y, 256, 1);
 }
 
+// The GPU loads the CLUT cache before a textured primitive that needs another palette
+// (Gpu::clut_load()); here before each one, all 256 entries, on both renderers.
+void load_palette(Renderer& a, Renderer& b, u32 clut_x, u32 clut_y) {
+  a.load_clut(clut_x, clut_y, 256), b.load_clut(clut_x, clut_y, 256);
+}
+
 // One random operation of any kind, applied to both renderers.
 void random_operation(Rng& rng, Renderer& a, Renderer& b) {
   const DrawState ds = random_state(rng, true);
@@ -95,6 +101,7 @@ void random_operation(Rng& rng, Renderer& a, Renderer& b) {
       s32 x0 = std::min({t.v[0].x, t.v[1].x, t.v[2].x}), x1 = std::max({t.v[0].x, t.v[1].x, t.v[2].x});
       s32 y0 = std::min({t.v[0].y, t.v[1].y, t.v[2].y}), y1 = std::max({t.v[0].y, t.v[1].y, t.v[2].y});
       if (samples_itself(ds, t.clut_x, t.clut_y, x0, y0, x1, y1)) t.textured = false;
+      if (t.textured) load_palette(a, b, t.clut_x, t.clut_y);
       a.draw_triangle(t, ds), b.draw_triangle(t, ds);
       break;
     }
@@ -108,6 +115,7 @@ void random_operation(Rng& rng, Renderer& a, Renderer& b) {
       r.textured = rng.below(2), r.raw = rng.below(3) == 0, r.semi = rng.below(3) == 0;
       const s32 right = r.x + static_cast<s32>(r.width), bottom = r.y + static_cast<s32>(r.height);
       if (samples_itself(ds, r.clut_x, r.clut_y, r.x, r.y, right, bottom)) r.textured = false;
+      if (r.textured) load_palette(a, b, r.clut_x, r.clut_y);
       a.draw_rectangle(r, ds), b.draw_rectangle(r, ds);
       break;
     }

@@ -135,6 +135,22 @@ TEST_F(GpuTest, StatusReflectsDrawModeDisplayModeAndDma) {
   EXPECT_TRUE(gpu.dma_request());
 }
 
+// GP0(C0) leaves the command FIFO empty: bit 28 stays set (a program's DrawSync waits for it
+// after the command: ps1-tests gpu/bandwidth, which passes on a console), 27 and the DMA
+// request in direction 3 until the last word is read, 26 clear until then.
+TEST_F(GpuTest, VramToCpuTransferLeavesTheFifoReady) {
+  constexpr u32 kRequest = 1u << 25, kCmd = 1u << 26, kVram = 1u << 27, kBlock = 1u << 28;
+  gp1(0x04000003);
+  gp0({0xC0000000, 0, 0x00010004});  // 4x1 pixels: two words
+  EXPECT_EQ(stat() & (kRequest | kCmd | kVram | kBlock), kRequest | kVram | kBlock);
+  gpu.io_read(0, 4), gpu.io_read(0, 4);
+  EXPECT_EQ(stat() & (kRequest | kCmd | kVram | kBlock), kCmd | kBlock);
+  gp1(0x04000002);
+  gp0({0xC0000000, 0, 0x00010002});
+  EXPECT_EQ(stat() & (kRequest | kBlock), kRequest | kBlock);
+  EXPECT_TRUE(gpu.dma_request());
+}
+
 TEST_F(GpuTest, Irq1SetAndAcknowledge) {
   gp0({0x1F000000});
   EXPECT_NE(stat() & (1u << 24), 0u);

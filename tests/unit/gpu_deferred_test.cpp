@@ -1,7 +1,7 @@
 // Deferred drawing and on-demand frames (gpu/draw_queue.h) must be invisible: a GPU that queues
 // its drawing ends with the same VRAM, pictures, GPUREAD words and save state as one that draws
-// at once (the reference), on random GP0/GP1 streams and on Tumble playing; a queue no one
-// reads stays small; a GPUREAD sees exactly the pixels drawn before it.
+// at once (the reference), on random GP0/GP1 streams (the CLUT cache included) and on Tumble
+// playing; a queue no one reads stays small; a GPUREAD sees exactly the pixels drawn before it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -82,7 +82,7 @@ class Stream {
     if (kind < 10) return t.gp0(0xE2000000 | pick(1u << 20));
     if (kind < 13) return area(t);
     if (kind < 15) return t.gp0(0xE5000000 | pick(64) | pick(64) << 11);
-    if (kind < 17) return t.gp0(0xE6000000 | (pick(4) == 0 ? pick(4) : 0));
+    if (kind < 17) return t.gp0(pick(3) == 0 ? 0x01000000 : 0xE6000000 | (pick(4) == 0 ? pick(4) : 0));
     if (kind < 40) return polygon(t);
     if (kind < 46) return cover(t);
     if (kind < 56) return rectangle(t);
@@ -103,6 +103,9 @@ class Stream {
   u32 pick(u32 n) { return std::uniform_int_distribution<u32>(0, n - 1)(rng_); }
   u32 colour() { return pick(1u << 24); }
   u32 vertex() { return xy(static_cast<int>(pick(420)) - 40, static_cast<int>(pick(300)) - 30); }
+  // A CLUT attribute: mostly one of a few, as games reuse palettes, so that the CLUT cache is
+  // drawn with after fills and uploads rewrote it, across calls the queue drops.
+  u32 clut() { return pick(4) == 0 ? pick(1u << 16) : pick(4) * 0x1041; }
 
   void area(Twins& t) {
     if (pick(2)) {  // a full screen buffer, as games set it
@@ -119,7 +122,7 @@ class Stream {
     for (u32 k = 0; k < corners; ++k) {
       if ((c & 0x10) && k > 0) t.gp0(colour());
       t.gp0(vertex());
-      if (c & 4) t.gp0(pick(1u << 16) | (k == 0 ? pick(1u << 16) : k == 1 ? pick(0x1000) : 0) << 16);
+      if (c & 4) t.gp0(pick(1u << 16) | (k == 0 ? clut() : k == 1 ? pick(0x1000) : 0) << 16);
     }
   }
   // An opaque untextured cover of the drawing area's usual buffer: a background quad, as
@@ -149,7 +152,7 @@ class Stream {
   void rectangle(Twins& t) {
     const u32 c = 0x60 | pick(32);
     t.gp0(c << 24 | colour()), t.gp0(vertex());
-    if (c & 4) t.gp0(pick(1u << 16) | pick(1u << 16) << 16);
+    if (c & 4) t.gp0(pick(1u << 16) | clut() << 16);
     if (((c >> 3) & 3) == 0) t.gp0(xy(pick(200), pick(200)));
   }
   void line(Twins& t) {

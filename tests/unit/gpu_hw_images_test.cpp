@@ -111,5 +111,74 @@ TEST_F(GpuHardwareImage, GouraudTrianglesMatchTheConsoleCapture) {
   EXPECT_EQ(n, 0);
 }
 
+// ps1-tests gpu/clut-cache: 8-bit textured 256x1 rectangles whose palette is rewritten in VRAM
+// (by a fill, a line, or the rectangle itself drawn over it) with and without GP0(01), a change
+// of CLUT position, and changes of texture depth between the draws. The capture shows which
+// draws saw the palette cached before the rewrite.
+class GpuClutCacheImage : public GpuHardwareImage {
+ protected:
+  // uploadToGPU(): a GP0(A0) row of `count` halfwords at (x, y), two per word.
+  void upload(u32 x, u32 y, const std::vector<u16>& row) {
+    gp0({0xA0000000, xy(static_cast<s32>(x), static_cast<s32>(y)), 0x00010000u | static_cast<u32>(row.size())});
+    for (size_t n = 0; n < row.size(); n += 2) gp0({row[n] | u32{row[n + 1]} << 16});
+  }
+  // writeTestClut(): palette entry n = n.
+  void test_clut(u32 x, u32 y) {
+    std::vector<u16> row(256);
+    for (u32 n = 0; n < 256; ++n) row[n] = static_cast<u16>(n);
+    upload(x, y, row);
+  }
+  // 128 halfwords of 8-bit texel indices, index(i) | index(i + 1) << 8 for texels i and i + 1,
+  // each a 16-bit value, not masked (as the program computes them).
+  template <typename Index>
+  void texture(u32 y, Index index) {
+    std::vector<u16> row(128);
+    for (u32 i = 0; i < 256; i += 2) row[i / 2] = static_cast<u16>(index(i) | index(i + 1) << 8);
+    upload(0, y, row);
+  }
+  // rectangle(): GP0(64) 256x1 at (x, y), texcoord (0, v), colour 0x808080, CLUT at (cx, cy).
+  void sprite(s32 x, s32 y, u32 v, u32 cx, u32 cy) {
+    gp0({0x64808080, xy(x, y), (cy << 6 | cx >> 4) << 16 | v << 8, xy(256, 1)});
+  }
+  void white_fill(u32 y) { gp0({0x02FFFFFF, xy(0, static_cast<s32>(y)), xy(256, 1)}); }
+  // setE1(mode, 0, 0): texture depth, drawing to the display area allowed.
+  void depth(u32 mode) { gp0({0xE1000400u | mode << 7}); }
+  void clear_cache() { gp0({0x01000000}); }
+};
+
+TEST_F(GpuClutCacheImage, PalettesMatchTheConsoleCapture) {
+  clear(0);
+  depth(1);
+  s32 y = 20;
+  const u32 cx = 0;
+  auto row = [&y] { return static_cast<u32>(y); };
+  test_clut(0, row()), clear_cache(), y += 16;  // testDummy
+  texture(1, [](u32 i) { return i; });
+  test_clut(0, row()), clear_cache(), sprite(0, y, 1, cx, row()), y += 16;
+  texture(2, [](u32 i) { return 255 - i; });
+  test_clut(0, row()), clear_cache(), sprite(0, y, 2, cx, row()), y += 16;
+  texture(3, [](u32 i) { return u32{static_cast<u16>(i * (i << 3))}; });
+  test_clut(0, row()), clear_cache(), sprite(0, y, 3, cx, row()), y += 16;
+  // Reuse without and with GP0(01), then another CLUT position.
+  test_clut(0, row()), sprite(0, y + 2, 1, cx, row()), white_fill(row()), sprite(0, y + 4, 1, cx, row()), y += 16;
+  test_clut(0, row()), sprite(0, y + 2, 1, cx, row());
+  line(0xFFFFFF, 0, y, 256, y), clear_cache(), sprite(0, y + 4, 1, cx, row()), y += 16;
+  test_clut(0, row()), sprite(0, y + 2, 1, cx, row()), white_fill(row()), sprite(0, y + 4, 1, 16, row()), y += 16;
+  // Texture depth changes between the two draws: 4->8, 8->4, 15->4, reserved->8, and 4->8->4
+  // by GP0(E1) alone.
+  const u32 changes[5][3] = {{0, 1, 1}, {1, 0, 0}, {2, 0, 0}, {3, 1, 1}, {0, 1, 0}};
+  for (const auto& c : changes) {
+    test_clut(0, row()), depth(c[0]), sprite(0, y + 2, 1, cx, row()), white_fill(row());
+    depth(c[1]), depth(c[2]), sprite(0, y + 4, 1, cx, row()), y += 16;
+  }
+  // A 256-entry CLUT at x = 960 runs past the VRAM edge.
+  y += 32;
+  test_clut(960, row()), depth(1), sprite(0, y + 2, 1, 960, row());
+  std::vector<u16> want = vram_image("clut-cache-vram.png");
+  const int n = differing(want, 0, 0, 1024, 512, [](u32, u32) { return false; });
+  RecordProperty("differing_pixels", n);
+  EXPECT_EQ(n, 0);
+}
+
 }  // namespace
 }  // namespace psx::test

@@ -38,6 +38,11 @@ class GlRenderer final : public Renderer {
   void fill(u32 x, u32 y, u32 width, u32 height, u16 pixel) override;
   void copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 height, MaskMode m) override;
   void write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m) override;
+  // The draw program reads each primitive's palette from VRAM as the primitive finds it, not
+  // from the cache, which differs from the console (and the software renderer) only where a
+  // palette in use is rewritten without a reload (docs/fidelity.md). The entries are still read
+  // back into the cache, so that save states and a change of backend carry the same cache.
+  void load_clut(u32 x, u32 y, u32 count) override;
   const u16* vram() const override;
   void load_vram(const u16* pixels) override;
   u32 scale() const override { return scale_; }

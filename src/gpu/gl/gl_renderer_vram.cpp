@@ -157,4 +157,11 @@ void GlRenderer::read_scaled(u32 x, u32 y, u32 width, u32 height, u16* out) cons
   gl_.PixelStorei(GL_PACK_ROW_LENGTH, 0);
 }
 
+// The native samples (each scale x scale block's top-left) of the CLUT row.
+void GlRenderer::load_clut(u32 x, u32 y, u32 count) {
+  std::vector<u16> row(size_t{count} * scale_ * scale_);
+  read_scaled(x, y, count, 1, row.data());
+  for (u32 i = 0; i < count; ++i) clut_[i] = row[size_t{i} * scale_];
+}
+
 }  // namespace psx::gpu::gl

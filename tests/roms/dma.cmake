@@ -25,3 +25,6 @@ psx_add_run_test(rom.timers_reset_recompiler CODE 0 CHECKS 6
 # the 3 the console's program could not time and 2 not matched; SPU sync mode 1, 4:
 # 65 + 1 + 59 + 4 = 129.
 psx_add_rom_test(dma_timing SOURCES dma_timing.c CHECKS 129)
+# The same timings with the recompiler: its deadline checks decide when the DMA's turns come.
+psx_add_run_test(rom.dma_timing_recompiler CODE 0 CHECKS 129
+  RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/dma_timing.exe --frames 600 --expect-exit --cpu recompiler)

@@ -23,9 +23,9 @@ constexpr Cycles kRequestPollCycles = 64;
 // Sync mode 1 and chopping hand the bus back to the CPU between blocks and windows. The figures
 // below are fitted to ps1-tests `dma/chopping`, GPU DMA timed on two consoles
 // (tests/data/ps1-tests/dma-chopping*.log): 8192 bytes take 2196 cycles in one burst, 22,819 in
-// 1-word blocks, 2471 in 128-word blocks; every row of both runs lies within 4.5% (blocks) and
-// 5.5% (windows, bar two of the 1-clock ones) of these rules, the runs differ from each other by
-// up to 6.1%.
+// 1-word blocks, 2471 in 128-word blocks. With these rules that program, run here, comes within
+// 4.4% of both runs for every block size and 6.2% for every window pair but two (docs/fidelity.md);
+// the two runs differ from each other by up to 6.1%.
 // Sync mode 1: after each block the controller releases the bus for 10 cycles before it serves
 // the device's next request (the CPU runs meanwhile), and a block's words cost 0x120 clocks per
 // 0x100 (one more clock per 16 words than a burst at the GPU's 0x110).

@@ -3,7 +3,9 @@
 // Channels 0-4 move words between main RAM and a device (MDECin, MDECout, GPU, CD-ROM, SPU)
 // through its DmaPort; channel 5 (PIO) has no device here; channel 6 (OTC) builds the GPU's
 // reversed ordering table in RAM. The CPU is held while the controller owns the bus: every moved
-// word is charged to the scheduler at the documented per-channel rate.
+// word is charged to the scheduler at the documented per-channel rate. Between sync mode 1 blocks
+// and chopping windows the bus goes back to the CPU; the channel's next turn is booked on the
+// scheduler (Channel::resume_at, the "dma" event).
 #pragma once
 #include <array>
 #include <vector>
@@ -59,7 +61,7 @@ class Dma : public IoDevice {
     u32 chcr = 0;
     // Sync mode 0 with chopping: the transfer has begun and continues after each CPU window.
     bool chopping_started = false;
-    // Earliest time the channel may move its next window (chopping gives the CPU its window).
+    // Earliest time the channel may move its next block or window (the CPU runs until then).
     Cycles resume_at = 0;
 
     u32 sync_mode() const { return (chcr >> 9) & 3; }
@@ -79,7 +81,7 @@ class Dma : public IoDevice {
 
   // Runs every channel that may run, highest priority first, within one bounded slice of words,
   // then books the event that continues or polls the ones still waiting.
-  void service();
+  void service(Cycles late = 0);
   // One unit of work on a channel; returns the words moved.
   u32 run_burst(u32 ch);
   u32 run_block(u32 ch);
@@ -92,7 +94,8 @@ class Dma : public IoDevice {
   // RAM <-> device word movement (addresses step by +-4 and wrap in RAM).
   void to_device(u32 ch, u32 addr, u32 count, bool backward);
   void from_device(u32 ch, u32 addr, u32 count, bool backward);
-  void charge(u32 ch, u32 words);
+  // Holds the CPU for `words` at the channel's rate plus `extra_per256` clocks per 0x100 words.
+  void charge(u32 ch, u32 words, u32 extra_per256 = 0);
 
   Scheduler& sched_;
   InterruptController& irq_;
@@ -106,6 +109,9 @@ class Dma : public IoDevice {
   std::vector<u32> words_;
   // Charge remainder in 1/256 cycles, so rates such as 0x110 clocks per 0x100 words stay exact.
   u32 charge_frac_ = 0;
+  // Cycles the CPU ran past the event's booking, not yet set against a charge (not state: zero
+  // outside service()).
+  Cycles late_credit_ = 0;
 };
 
 }  // namespace psx

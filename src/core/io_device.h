@@ -18,13 +18,15 @@ class IoDevice {
 
 // The device side of a DMA channel (MDECin/out, GPU, CD-ROM, SPU). The DMA controller moves
 // words between RAM and the device in blocks; `dma_request` is the device's DRQ line, which
-// sync mode 1 (block) transfers wait on.
+// sync mode 1 (block) transfers wait on; `dma_block_cycles` is how long the device itself takes
+// to consume (or refill) a block of `words` through its FIFO before it asks for the next one.
 class DmaPort {
  public:
   virtual ~DmaPort() = default;
   virtual void dma_write(const u32* words, u32 count) = 0;  // RAM -> device
   virtual void dma_read(u32* words, u32 count) = 0;         // device -> RAM
   virtual bool dma_request() const { return true; }
+  virtual Cycles dma_block_cycles(u32 /*words*/) const { return 0; }
 };
 
 // Video timing edges the GPU exports to the root counters (timers 0 and 1 count dots and

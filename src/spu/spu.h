@@ -72,6 +72,7 @@ class Spu final : public IoDevice, public DmaPort {
   void dma_write(const u32* words, u32 count) override;
   void dma_read(u32* words, u32 count) override;
   bool dma_request() const override;
+  Cycles dma_block_cycles(u32 words) const override;
 
   // --- Output ----------------------------------------------------------------------------
   // Moves the samples produced since the last call into `out` (cleared first; the two vectors

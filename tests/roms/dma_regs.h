@@ -7,6 +7,7 @@
 #define IO16(a) (*(volatile uint16_t *)(a))
 
 #define I_STAT IO32(0xBF801070)
+#define I_MASK IO32(0xBF801074)
 #define D_MADR(n) IO32(0xBF801080 + (n)*0x10)
 #define D_BCR(n) IO32(0xBF801084 + (n)*0x10)
 #define D_CHCR(n) IO32(0xBF801088 + (n)*0x10)

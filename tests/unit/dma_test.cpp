@@ -31,6 +31,8 @@ struct FakePort : DmaPort {
     if (order) order->push_back(id);
   }
   bool dma_request() const override { return request; }
+  Cycles block_cycles_per_word = 0;  // the device's own time per word of a block (SPU FIFO)
+  Cycles dma_block_cycles(u32 words) const override { return block_cycles_per_word * words; }
 };
 
 constexpr u32 reg(u32 ch, u32 r) { return ch * 0x10 + r; }
@@ -233,11 +235,13 @@ TEST_F(DmaTest, BurstChoppingGivesCpuWindows) {
   EXPECT_EQ(r(reg(3, kMadr)), 0x1010u);
   EXPECT_EQ(r(reg(3, kBcr)), 6u);
   EXPECT_NE(r(reg(3, kChcr)) & Dma::kChcrBusy, 0u);
-  run_for(31);
+  // The CPU window, then 6 clocks more before the next DMA window (fitted to ps1-tests
+  // dma/chopping: a window pair takes its words, its clocks and 6 more on the console).
+  run_for(32 + 5);
   EXPECT_EQ(cdrom.next_out, 0x104u);  // CPU window not over
   run_for(1);
   EXPECT_EQ(cdrom.next_out, 0x108u);
-  run_for(32 + 4 * 24);
+  run_for(32 + 6 + 4 * 24);
   EXPECT_EQ(cdrom.next_out, 0x10Au);  // 10 words in all
   EXPECT_EQ(r(reg(3, kBcr)), 0u);
   EXPECT_EQ(r(reg(3, kMadr)), 0x1028u);
@@ -276,14 +280,39 @@ TEST_F(DmaTest, SyncMode1TriggerForcesFirstBlockOnly) {
   EXPECT_EQ(r(reg(2, kChcr)), 0x01000201u);  // trigger cleared at begin
 }
 
+// Sync mode 1 (fitted to ps1-tests dma/chopping, GPU): a block's words cost 0x120 clocks per
+// 0x100 with the CPU held, then the CPU has the bus for 10 cycles before the next block.
 TEST_F(DmaTest, SyncMode1Timing) {
   w(kDpcr, 0x00000800);
   w(reg(2, kMadr), 0);
   w(reg(2, kBcr), 0x00100010);  // 16 blocks x 16 words = 256 words
   Cycles t0 = sched.now();
   w(reg(2, kChcr), 0x01000201);
+  EXPECT_EQ(gpu.received.size(), 16u);  // the first block, then the CPU runs
+  EXPECT_EQ(sched.now() - t0, 18u);     // 16 x 0x120 / 0x100
+  run_for(9);
+  EXPECT_EQ(gpu.received.size(), 16u);
+  run_for(1);
+  EXPECT_EQ(gpu.received.size(), 32u);
+  while (r(reg(2, kChcr)) & Dma::kChcrBusy) run_for(1);
   EXPECT_EQ(gpu.received.size(), 256u);
-  EXPECT_EQ(sched.now() - t0, 0x110u);  // psx-spx: 0110h clocks per 100h words
+  EXPECT_EQ(sched.now() - t0, 16u * 18 + 15 * 10);
+}
+
+// A device that takes longer than the controller's gap over a block (the SPU draining its FIFO)
+// is asked for the next one only when it is done; the CPU runs meanwhile.
+TEST_F(DmaTest, SyncMode1WaitsForTheDeviceBetweenBlocks) {
+  w(kDpcr, 0x00080000);
+  spu.block_cycles_per_word = 32;
+  w(reg(4, kMadr), 0);
+  w(reg(4, kBcr), 0x00020010);  // 2 blocks of 16 words
+  w(reg(4, kChcr), 0x01000201);
+  EXPECT_EQ(spu.received.size(), 16u);
+  run_for(16 * 32 - 1);
+  EXPECT_EQ(spu.received.size(), 16u);
+  run_for(1);
+  EXPECT_EQ(spu.received.size(), 32u);
+  EXPECT_EQ(r(reg(4, kChcr)) & Dma::kChcrBusy, 0u);
 }
 
 TEST_F(DmaTest, LinkedListSendsNodePayloads) {

@@ -6,6 +6,7 @@ games/tumble/demo/level1.txt presses each of its 30 moves once (its comments: al
 and the key, then the exit: 4000 points), and Tumble's Table 3.3 rewards are 0.5 a coin, 0.7 a
 fruit, 0.8 the key and 1.0 the win, in units of 1 - gamma: 7.2 x 0.1 = 0.72 for the whole level.
 """
+import json
 import os
 import re
 import subprocess
@@ -77,6 +78,56 @@ def test_policy_rollouts_round_trip():
         assert episode.actions.tolist() == [1] * 4 and episode.rewards.tolist() == [0.0] * 4
         assert episode.truncations.tolist() == [False] * 3 + [True] and not episode.terminations.any()
         assert episode.observations.shape == (5, *Env(obs="simple").observation_spaces[0]["shape"])
+
+
+# Five FORWARDs from level 1's start climb column 2 (all floor) to row 0, facing north: simple
+# state 4*5*0 + 4*2 + 0 = 8 (tests/python/test_env.py), where the trained run's episodes start.
+WALK = "FORWARD,FORWARD,FORWARD,FORWARD,FORWARD"
+
+
+def train(out, agent, obs):
+    exe = Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"
+    subprocess.run([str(exe), "train", "--agent", agent, "--obs", obs, "--episodes", "4", "--test-every", "2",
+                    "--max-moves", "5", "--seed", "2", "--start", WALK, "--quiet", "--out", str(out)],
+                   check=True, capture_output=True)
+    return out
+
+
+def play(run, episodes, rollout):
+    exe = Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"
+    done = subprocess.run([str(exe), "play", "--policy", str(run), "--headless", "--episodes", str(episodes),
+                           "--max-moves", "5", "--rollout", str(rollout)], check=True, capture_output=True, text=True)
+    return done.stdout, [json.loads(line) for line in rollout.read_text().splitlines()]
+
+
+@pytest.mark.parametrize("agent,obs", [("q", "simple"), ("dqn", "local")])
+def test_trained_policy_round_trip(tmp_path, agent, obs):
+    run = train(tmp_path / "run", agent, obs)
+    # The player's own account of its episodes, the metrics the dataset must reproduce.
+    stdout, played = play(run, 2, tmp_path / "played.jsonl")
+    assert f"each episode starts after the walk {WALK} (the policy's training start)" in stdout
+    ends = re.findall(r"episode \d+: score (\d+), (\w+), (\d+) moves", stdout)
+    assert offline.main(["export-policy", str(run), "--episodes", "2", "--max-moves", "5",
+                         "--dataset", f"psxrl/trained-{agent}-v0"]) == 0
+    data = minari.load_dataset(f"psxrl/trained-{agent}-v0")
+    assert data.total_episodes == 2 == len(played) == len(ends)
+    (space,) = Env(obs=obs).observation_spaces
+    for episode, line, (score, outcome, moves) in zip(data.iterate_episodes(), played, ends):
+        assert line["start"] == [0] * 5 and int(score) == line["score"] and outcome == line["outcome"]
+        assert episode.actions.tolist() == line["actions"] and len(line["actions"]) == int(moves)
+        assert episode.rewards.tolist() == line["rewards"]
+        assert episode.rewards.sum() == pytest.approx(line["episode_reward"])
+        assert episode.terminations[-1] == (outcome in ("win", "lose"))
+        assert episode.truncations[-1] == (outcome == "truncated")
+        assert episode.observations.shape == (int(moves) + 1, *space["shape"])
+        assert episode.observations.dtype == np.dtype(space["dtype"])
+    if obs == "simple":
+        assert episode.observations[0].tolist() == [8]
+
+
+def test_export_policy_refuses_a_folder_without_a_run(tmp_path, capsys):
+    assert offline.main(["export-policy", str(tmp_path), "--dataset", "psxrl/none-v0"]) == 2
+    assert "not a psxrl train run folder (no config.json)" in capsys.readouterr().err
 
 
 def test_a_session_of_another_program_is_refused(tmp_path):

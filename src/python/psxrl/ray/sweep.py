@@ -21,6 +21,7 @@ from pathlib import Path
 
 import ray
 
+from ..executable import find_executable
 from . import report
 from .sweep_config import load
 
@@ -28,28 +29,6 @@ DONE = "done.json"
 CHECKPOINT = "checkpoint.psxrl"
 LOG = "train.log"
 _PR_SET_PDEATHSIG = 1
-
-
-def find_executable():
-    """The `psxrl` executable: $PSXRL_EXE, else $PSXRL_BUILD_DIR/psxrl, else the build tree's beside
-    a module imported from build/python, else `psxrl` on PATH."""
-    if os.environ.get("PSXRL_EXE"):
-        exe = Path(os.environ["PSXRL_EXE"])
-        if not exe.is_file():
-            raise FileNotFoundError(f"PSXRL_EXE={exe}: no such file")
-        return str(exe.resolve())
-    import psxrl
-
-    candidates = [Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"] if os.environ.get("PSXRL_BUILD_DIR") else []
-    candidates.append(Path(psxrl.__file__).resolve().parents[2] / "psxrl")  # build/python/psxrl/__init__.py
-    for exe in candidates:
-        if exe.is_file():
-            return str(exe.resolve())
-    on_path = shutil.which("psxrl")
-    if on_path:
-        return on_path
-    raise FileNotFoundError("cannot find the psxrl executable: set PSXRL_EXE or PSXRL_BUILD_DIR, or put psxrl "
-                            "on PATH")
 
 
 def finished(folder):

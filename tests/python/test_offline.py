@@ -80,6 +80,30 @@ def test_policy_rollouts_round_trip():
         assert episode.observations.shape == (5, *Env(obs="simple").observation_spaces[0]["shape"])
 
 
+def test_typed_play_is_recorded_like_any_session(tmp_path):
+    # The demo's 30 moves typed on standard input (names, numbers, lower case, several a line, a
+    # comment and a typing error between them): the game sees exactly those moves, so the session
+    # holds them, replays bit for bit, and wins level 1 with all 4000 points.
+    exe = Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"
+    names = ["FORWARD", "LOOKRIGHT", "lookleft", "3"]
+    moves = demo_actions()
+    typed = "# level 1\n" + "\n".join(names[m] for m in moves[:10]) + "\nBACK\n"
+    typed += ",".join(names[m] for m in moves[10:]) + "\n"
+    out, frames = tmp_path / "typed", tmp_path / "frames"
+    done = subprocess.run([str(exe), "record", "--game", "tumble", "--stdin", "--out", str(out), "--frames-dir",
+                           str(frames)], input=typed, capture_output=True, text=True, check=True)
+    assert "line 12: 'BACK' is not a move; the actions are FORWARD (0)" in done.stdout
+    assert "episode over: win after 30 moves, score 4000" in done.stdout
+    assert sorted(p.name for p in frames.iterdir()) == [f"move{i:04d}.png" for i in range(31)]
+    # The last text view: the ball on the exit, top left (games/tumble/levels/level01.txt), every
+    # item taken.
+    last_map = done.stdout.split("move 30:")[1].splitlines()[2:8]
+    assert [row.strip() for row in last_map] == ["@####", "#####", "#####", "#####", "#####", "##S##"]
+    assert offline.session_actions(out, games_dir=ROOT / "games") == [(1, moves)]
+    verify = subprocess.run([str(exe), "memsearch", str(out), "--verify"], capture_output=True, text=True)
+    assert verify.returncode == 0 and "snapshots identical" in verify.stdout
+
+
 # Five FORWARDs from level 1's start climb column 2 (all floor) to row 0, facing north: simple
 # state 4*5*0 + 4*2 + 0 = 8 (tests/python/test_env.py), where the trained run's episodes start.
 WALK = "FORWARD,FORWARD,FORWARD,FORWARD,FORWARD"

@@ -152,6 +152,8 @@ py::dict delimiter_dict(const rl::DelimiterSettings& s) {
 }  // namespace
 
 void bind_env(py::module_& m) {
+  m.def("default_games_dir", &rl::default_games_dir,
+        "The integrations' folder an Env uses without games_dir: $PSXRL_GAMES, else the source tree's games/.");
   m.def("episode_seed", &rl::episode_seed, py::arg("seed"), py::arg("env_index"), py::arg("episode"),
         "The seed VecEnv gives environment `env_index`'s `episode`-th episode (0 = the one reset() starts).");
 

@@ -104,6 +104,21 @@ def test_typed_play_is_recorded_like_any_session(tmp_path):
     assert verify.returncode == 0 and "snapshots identical" in verify.stdout
 
 
+def test_the_hand_played_example_session_still_wins(tmp_path):
+    # examples/data/tumble_level1_typed.txt, played by looking at the pictures: its 28 moves
+    # collect all 8 coins, 2 fruit and the key (3000 + 1000 points) and end on the exit.
+    exe = Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"
+    typed = ROOT / "examples" / "data" / "tumble_level1_typed.txt"
+    moves = [line for line in typed.read_text().splitlines() if line and not line.startswith("#")]
+    out = tmp_path / "session"
+    subprocess.run([str(exe), "record", "--game", "tumble", "--stdin", "--interval", "0", "--out", str(out)],
+                   input=typed.read_text(), text=True, check=True, capture_output=True)
+    names = ["FORWARD", "LOOKRIGHT", "LOOKLEFT", "JUMPFORWARD"]
+    assert offline.session_actions(out, games_dir=ROOT / "games") == [(1, [names.index(m) for m in moves])]
+    _, [(episode, info)] = offline.session_episodes(out, games_dir=ROOT / "games", obs="local")
+    assert len(episode["actions"]) == 28 and info["outcome"] == "win" and info["score"] == 4000
+
+
 # Five FORWARDs from level 1's start climb column 2 (all floor) to row 0, facing north: simple
 # state 4*5*0 + 4*2 + 0 = 8 (tests/python/test_env.py), where the trained run's episodes start.
 WALK = "FORWARD,FORWARD,FORWARD,FORWARD,FORWARD"

@@ -27,13 +27,15 @@ import tomllib
 from pathlib import Path
 
 def _games_dir(games_dir):
-    from . import _PACKAGED_GAMES
+    """The folder an Env finds the integration in: an installed module's psxrl/games, else (a module
+    of the build tree) $PSXRL_GAMES or the source tree's games/."""
+    from . import _PACKAGED_GAMES, _psxrl
 
     if games_dir is not None:
         return Path(games_dir)
-    if "PSXRL_GAMES" in os.environ:
-        return Path(os.environ["PSXRL_GAMES"])
-    return _PACKAGED_GAMES
+    if "PSXRL_GAMES" not in os.environ and _PACKAGED_GAMES.is_dir():
+        return _PACKAGED_GAMES
+    return Path(_psxrl.default_games_dir())
 
 
 def _addresses(game, games_dir):

@@ -69,15 +69,17 @@ def train(exe, folder, args, resumable):
 train_run = ray.remote(max_retries=3)(train)
 
 
-def run(sweep, address=None, log=print):
+def run(sweep, address=None, log=print, cpus=None):
     """Runs what is left of `sweep` (psxrl.ray.sweep_config.Sweep) on the cluster at `address`
-    (None: the one this process is connected to, else a new local one) and writes the report.
-    Returns the runs that failed, as (run, error) pairs."""
+    (None: the one this process is connected to, else a new local one of `cpus` CPUs, default all
+    the machine's) and writes the report. Returns the runs that failed, as (run, error) pairs."""
     if not ray.is_initialized():
         if address:
             ray.init(address=address, log_to_driver=False)
         else:
-            ray.init(address="local", include_dashboard=False, log_to_driver=False)
+            # A local instance of its own, never one found running: every local instance has its
+            # own session folder and ports, so sweeps side by side do not meet (docs/scaling.md).
+            ray.init(address="local", num_cpus=cpus, include_dashboard=False, log_to_driver=False)
     exe = find_executable()
     sweep.out.mkdir(parents=True, exist_ok=True)
     pending = {}
@@ -116,10 +118,14 @@ def main(argv=None):
     p.add_argument("config", help="the sweep file (TOML)")
     p.add_argument("--address", help="an existing Ray cluster (host:port, or auto); default: a local one")
     p.add_argument("--out", help="sweep folder (default: the file's out, else runs/ + the file's name)")
+    p.add_argument("--cpus", type=int, help="CPUs of the local Ray instance, so runs at once (default: the "
+                   "machine's); give each of two sweeps side by side its share")
     a = p.parse_args(argv)
+    if a.cpus is not None and (a.cpus < 1 or a.address):
+        p.error("--cpus sizes a local Ray instance: a whole number of at least 1, and no --address")
     try:
         sweep = load(a.config, a.out)
-        failed = run(sweep, a.address)
+        failed = run(sweep, a.address, cpus=a.cpus)
     except (ValueError, FileNotFoundError, ConnectionError) as e:  # the file, the executable, the cluster
         print(f"psxrl sweep: {e}", file=sys.stderr)
         return 2

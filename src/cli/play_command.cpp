@@ -79,8 +79,7 @@ std::string frame_path(const std::string& dir, std::uint64_t episode, std::uint3
 
 // Greedy episodes of the policy, every emulated frame going through the view; an episode ends
 // early when the view stops (the player closed the window, or --frames was reached).
-int play_policy(LoadedPolicy& l, const PlayOptions& p, PlayView& view) {
-  RolloutWriter rollout(p.rollout);
+int play_policy(LoadedPolicy& l, const PlayOptions& p, PlayView& view, RolloutWriter& rollout) {
   // Frames after the view stopped (the rest of the move under way) are emulated, not shown.
   l.env->on_frame = [&view](std::span<const psx::StereoSample> audio) {
     if (!view.stopped()) view.frame(audio);
@@ -213,6 +212,7 @@ int play_command(const std::vector<std::string>& args) {
 
   LoadedPolicy l;
   std::unique_ptr<PlayView> view;
+  std::unique_ptr<RolloutWriter> rollout;
   try {
     if (!p.frames_dir.empty()) std::filesystem::create_directories(p.frames_dir);
     l = p.policy.empty() ? load_game(p, files) : load_policy(p, files);
@@ -220,6 +220,7 @@ int play_command(const std::vector<std::string>& args) {
       throw std::invalid_argument("game '" + l.env->game().name + "' has levels 1 to " +
                                   std::to_string(l.env->game().level_count) + ", not " + std::to_string(p.level));
     l.start = agents::parse_start_position(p.start.value_or(l.trained_start), l.env->actions());
+    rollout = std::make_unique<RolloutWriter>(p.rollout);
     if (!l.start.moves.empty())
       std::printf("each episode starts after the walk %s (%s)\n", l.start.text.c_str(),
                   p.start ? "--start" : "the policy's training start");
@@ -235,7 +236,7 @@ int play_command(const std::vector<std::string>& args) {
     return kBadInput;
   }
   try {
-    int code = p.policy.empty() ? play_human(*l.env, p, l.start, *view) : play_policy(l, p, *view);
+    int code = p.policy.empty() ? play_human(*l.env, p, l.start, *view) : play_policy(l, p, *view, *rollout);
     for (const std::string& line : view->finish()) std::printf("%s\n", line.c_str());
     return code;
   } catch (const psx::InputError& e) {

@@ -6,6 +6,7 @@ games/tumble/demo/level1.txt presses each of its 30 moves once (its comments: al
 and the key, then the exit: 4000 points), and Tumble's Table 3.3 rewards are 0.5 a coin, 0.7 a
 fruit, 0.8 the key and 1.0 the win, in units of 1 - gamma: 7.2 x 0.1 = 0.72 for the whole level.
 """
+import csv
 import json
 import os
 import re
@@ -150,6 +151,16 @@ def test_trained_policy_round_trip(tmp_path, agent, obs):
                          "--dataset", f"psxrl/trained-{agent}-v0"]) == 0
     data = minari.load_dataset(f"psxrl/trained-{agent}-v0")
     assert data.total_episodes == 2 == len(played) == len(ends)
+    # The run's own metrics: its last episode (the 4th, a greedy test, after which the policy did
+    # not change) had the seed play gives its 4th episode with the run's seed (episode_seed(2, 0, 3)).
+    with open(run / "metrics.csv", newline="") as f:
+        last = list(csv.DictReader(f))[-1]
+    assert offline.main(["export-policy", str(run), "--episodes", "4", "--seed", "2", "--max-moves", "5",
+                         "--dataset", f"psxrl/trained-{agent}-seed2-v0"]) == 0
+    fourth = list(minari.load_dataset(f"psxrl/trained-{agent}-seed2-v0").iterate_episodes())[3]
+    assert last["kind"] == "test" and len(fourth.actions) == int(last["moves"])
+    assert fourth.rewards.sum() == pytest.approx(float(last["reward"]))
+    assert fourth.terminations[-1] == (last["outcome"] in ("win", "lose"))
     (space,) = Env(obs=obs).observation_spaces
     for episode, line, (score, outcome, moves) in zip(data.iterate_episodes(), played, ends):
         assert line["start"] == [0] * 5 and int(score) == line["score"] and outcome == line["outcome"]

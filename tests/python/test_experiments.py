@@ -172,6 +172,7 @@ def test_two_studies_side_by_side(tmp_path):
     outputs = [r.communicate(timeout=400)[0] for r in runs]
     for run, output, name in zip(runs, outputs, "ab"):
         assert run.returncode == 0 and "4 of 4 runs finished" in output, output
+        assert "queued 4 runs on Ray's 1 CPU (" in output  # --cpus 1: its own instance, one run at a time
         assert "| gamma=0.9 | 1 | finished | 2 | 1 |" in (tmp_path / name / "runs.md").read_text()
 
 

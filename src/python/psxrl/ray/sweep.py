@@ -87,9 +87,14 @@ def run(sweep, address=None, log=print, cpus=None):
         if finished(r.folder):
             log(f"skip   {r.config} seed {r.seed}: finished")
             continue
-        cpus = int(r.options.get("envs", 1))
-        ref = train_run.options(num_cpus=cpus).remote(exe, str(r.folder), r.train_args(), r.resumable())
+        envs = int(r.options.get("envs", 1))  # one CPU per environment the trainer steps
+        ref = train_run.options(num_cpus=envs).remote(exe, str(r.folder), r.train_args(), r.resumable())
         pending[ref] = r
+    # Nothing else is printed until a run ends, which on a loaded machine can take minutes: say
+    # how many wait and how many can run at once, so a queue does not look like a stall.
+    cpus = int(ray.cluster_resources().get("CPU", 0))
+    log(f"queued {len(pending)} runs on Ray's {cpus} CPU{'' if cpus == 1 else 's'} (one CPU per environment of a "
+        "run); a line as each run ends")
     failed = []
     while pending:
         [ref], _ = ray.wait(list(pending), num_returns=1)

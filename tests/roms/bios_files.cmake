@@ -6,3 +6,7 @@ psx_add_rom_test(bios_files SOURCES bios_files.c bios_file_calls.S bios_calls.S 
                  ARGS --disc ${CMAKE_CURRENT_BINARY_DIR}/cdrom_test.cue)
 psx_add_rom_test(bios_memcard SOURCES bios_memcard.c bios_file_calls.S bios_calls.S CHECKS 62
                  ARGS --memcard1 ${CMAKE_CURRENT_BINARY_DIR}/bios_memcard.mcd)
+# format, rename, undelete, the card find mode, _card_chan and bufs_cb_* on a card in slot 1 (its
+# own card file; the program formats it first).
+psx_add_rom_test(bios_card_dir SOURCES bios_card_dir.c bios_file_calls.S bios_calls.S CHECKS 41
+                 ARGS --memcard1 ${CMAKE_CURRENT_BINARY_DIR}/bios_card_dir.mcd)

@@ -27,10 +27,11 @@ void HleBios::install() {
   }
   const u32 stubs[] = {kSyscall, 0, j(kA0), 0, j(kB0), 0, j(kB0), li_t1(0x17), kSyscall, 0};
   for (u32 i = 0; i < 10; ++i) poke32(kReturnStub + 4 * i, stubs[i]);
-  // Where Exec's program returns, s0 = its headerbuf: the caller's ra, sp, fp, gp back from it,
-  // v0 = 1, and s0 itself in the delay slot (hle_exec.cpp).
+  // Where Exec's program returns, s0 = its headerbuf: the caller's ra, sp, fp, gp and s0 back from
+  // it (s0 last, and not in the delay slot: the caller's first instruction may use s0, and a load
+  // lands one instruction late), v0 = 1 (hle_exec.cpp).
   const u32 exec_return[7] = {lw(kRa, 0x34, kS0), lw(kSp, 0x28, kS0), lw(kFp, 0x2C, kS0), lw(kGp, 0x30, kS0),
-                              0x24020001, kJrRa, lw(kS0, 0x38, kS0)};
+                              lw(kS0, 0x38, kS0), kJrRa, 0x24020001};
   for (u32 i = 0; i < 7; ++i) poke32(kExecReturn + 4 * i, exec_return[i]);
   // ResetEntryInt's exit buffer: ra = ReturnFromException, sp = the exception stack, rest zero.
   for (u32 i = 0; i < 12; ++i) poke32(kDefaultExit + 4 * i, 0);

@@ -39,11 +39,11 @@ static void boot_once(void) {
 }
 
 static void load_calls(void) {
-  struct dir_entry e;
-  first_file(CHILD, &e);
-  CHECK_EQ("CHILD.EXE: header and text, fits the buffer", e.size > 0x800 && e.size <= sizeof file, 1);
   int32_t fd = file_open(CHILD, O_READ);
-  file_read(fd, file, (e.size + 0x7FF) & ~0x7FFu);
+  file_read(fd, file, 0x800);
+  uint32_t size = 0x800 + le32(file + 0x1C); /* header + text size (a multiple of 800h) */
+  CHECK_EQ("CHILD.EXE: header and text fit the buffer", size > 0x800 && size <= sizeof file, 1);
+  file_read(fd, file + 0x800, size - 0x800);
   file_close(fd);
   CHECK_EQ("LoadTest: the entry point", load_test(CHILD, &hdr), le32(file + 0x10));
   CHECK_EQ("LoadTest: headerbuf = header bytes 10h-4Bh", bios_memcmp(&hdr, file + 0x10, 0x3C), 0);

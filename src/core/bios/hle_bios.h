@@ -250,6 +250,8 @@ class HleBios {
   bool cd_sectors(u32 lba, u32 count, u32 size, std::vector<u8>& out);
   bool cd_to_ram(u32 lba, u32 count, u32 size, u32 dst);
   bool card_call(u32 table, u32 fn);
+  bool card_call_a0(u32 fn);
+  bool card_call_b0(u32 fn);
   u32 card_rename(u32 port, const std::string& from, const std::string& to);
   u32 card_undelete(u32 port, const std::string& name);
   u32 card_format(u32 port);

@@ -103,7 +103,8 @@ bool HleBios::cd_read_blocks(u32 lba, u32 count, u32 dst) {
 // Sectors to RAM; the BIOS moves them by DMA, which reaches only RAM (and its mirrors).
 bool HleBios::cd_to_ram(u32 lba, u32 count, u32 size, u32 dst) {
   std::vector<u8> data;
-  if (Bus::physical(dst) >= 0x00800000 || !cd_sectors(lba, count, size, data)) return false;
+  if (Bus::physical(dst) >= 0x00800000 || count > Bus::kRamSize / size || !cd_sectors(lba, count, size, data))
+    return false;
   for (u32 k = 0; k < data.size(); ++k) bus_.ram()[Bus::physical(dst + k) & (Bus::kRamSize - 1)] = data[k];
   const u32 p = Bus::physical(dst) & (Bus::kRamSize - 1);
   bus_.host_wrote_ram(p, std::min<u32>(static_cast<u32>(data.size()), Bus::kRamSize - p));

@@ -17,6 +17,7 @@ namespace psx {
 
 namespace {
 constexpr u32 kA0 = 0xA0, kC0 = 0xC0;
+constexpr u32 kIMask = 0xBF801074;
 constexpr u32 kRegV0 = 2, kRegA0 = 4, kRegA1 = 5, kRegA2 = 6, kRegS0 = 16;
 constexpr u32 kRegGp = 28, kRegSp = 29, kRegFp = 30, kRegRa = 31;
 // headerbuf: bytes 10h-4Bh of the EXE header; Exec keeps the caller's registers in the last five
@@ -165,6 +166,7 @@ void HleBios::warm_boot() {
     disc::BootConfig config;
     PsxExe exe = disc::load_boot_exe(*d, config);
     install();
+    io_write(kIMask, 0, 4);  // no interrupt source enabled, as at the first program's entry
     copy_text(exe);
     start(exe, exe.stack_base + exe.stack_offset, 0, 0);
   } catch (const std::exception& e) {

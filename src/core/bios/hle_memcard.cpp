@@ -249,8 +249,7 @@ void HleBios::card_deliver(u32 port, bool info) {
 }
 
 bool HleBios::card_call(u32 table, u32 fn) {
-  const u32 a0 = cpu_.reg(kRegA0), a1 = cpu_.reg(kRegA1), a2 = cpu_.reg(kRegA2);
-  const u32 port = (a0 >> 4) & 1;  // a "port" argument is 00h (slot 1) or 10h (slot 2)
+  const u32 a0 = cpu_.reg(kRegA0);
   if (table == kC0) {
     switch (fn) {
       case 0x1A: io2_.card_find_mode = a0 & 1; return_to_caller(0); return true;  // set_card_find_mode
@@ -258,34 +257,42 @@ bool HleBios::card_call(u32 table, u32 fn) {
       default: return false;
     }
   }
-  if (table == kA0) {
-    switch (fn) {
-      case 0x55:
-      case 0x70: return_to_caller(0); return true;  // _bu_init: the directory is read on use
-      case 0xAB:                                     // _card_info(port)
-      case 0xAC:                                     // _card_load(port)
-        card_deliver(port, true);
-        return_after_events(1);
-        return true;
-      case 0xAD: io_.card_auto_format = a0; return_to_caller(0); return true;  // _card_auto
-      // bufs_cb_0..4: the card driver's completion callbacks move the file functions' pending
-      // access along; every access here completes inside its call, so none is pending and they
-      // do nothing (as a BIOS's do with no operation under way).
-      case 0xA7:
-      case 0xA8:
-      case 0xA9:
-      case 0xAA:
-      case 0xAE: return_to_caller(0); return true;
-      case 0xAF: {  // card_write_test(port): rewrites sector 3Fh, which clears the new-card flag
-        MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
-        if (card) card->write_sector(0x3F, &card->data()[0x3F * kFrame]);
-        card_deliver(port, false);
-        return_after_events(1);
-        return true;
-      }
-      default: return false;
+  return table == kA0 ? card_call_a0(fn) : card_call_b0(fn);
+}
+
+// A "port" argument is 00h (slot 1) or 10h (slot 2).
+bool HleBios::card_call_a0(u32 fn) {
+  const u32 a0 = cpu_.reg(kRegA0), port = (a0 >> 4) & 1;
+  switch (fn) {
+    case 0x55:
+    case 0x70: return_to_caller(0); return true;  // _bu_init: the directory is read on use
+    case 0xAB:                                     // _card_info(port)
+    case 0xAC:                                     // _card_load(port)
+      card_deliver(port, true);
+      return_after_events(1);
+      return true;
+    case 0xAD: io_.card_auto_format = a0; return_to_caller(0); return true;  // _card_auto
+    // bufs_cb_0..4: the card driver's completion callbacks move the file functions' pending
+    // access along; every access here completes inside its call, so none is pending and they
+    // do nothing (as a BIOS's do with no operation under way).
+    case 0xA7:
+    case 0xA8:
+    case 0xA9:
+    case 0xAA:
+    case 0xAE: return_to_caller(0); return true;
+    case 0xAF: {  // card_write_test(port): rewrites sector 3Fh, which clears the new-card flag
+      MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
+      if (card) card->write_sector(0x3F, &card->data()[0x3F * kFrame]);
+      card_deliver(port, false);
+      return_after_events(1);
+      return true;
     }
+    default: return false;
   }
+}
+
+bool HleBios::card_call_b0(u32 fn) {
+  const u32 a0 = cpu_.reg(kRegA0), a1 = cpu_.reg(kRegA1), a2 = cpu_.reg(kRegA2), port = (a0 >> 4) & 1;
   switch (fn) {
     case 0x4A: {  // InitCARD2(pad_enable): returns whether it ran before
       u32 before = io_.card_status[0] != 0;

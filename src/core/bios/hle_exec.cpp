@@ -33,7 +33,8 @@ std::string load_exec_name(const std::string& name) {
   size_t colon = name.find(':');
   size_t rest = colon == std::string::npos ? name.size() : colon;
   out = name.substr(0, rest);
-  for (size_t i = rest; i < name.size(); ++i) out += static_cast<char>(std::toupper(static_cast<unsigned char>(name[i])));
+  for (size_t i = rest; i < name.size(); ++i)
+    out += static_cast<char>(std::toupper(static_cast<unsigned char>(name[i])));
   if (out.find(';') == std::string::npos) out += ";1";
   return out;
 }

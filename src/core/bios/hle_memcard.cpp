@@ -6,8 +6,9 @@
 // find mode and the bufs_cb_* callbacks, and the directory edits of rename, undelete and
 // format. The kernel reads and writes the emulated card's sectors directly
 // (core/sio/memory_card.h), so every access completes within the call; the events it would
-// deliver on completion are delivered before it returns: F0000011h (the hardware I/O) and, for _card_info and asynchronous file
-// reads/writes, F4000001h and the handle's own class (psx-spx "Event Summary").
+// deliver on completion are delivered before it returns: F0000011h (the hardware I/O) and, for
+// _card_info and asynchronous file reads/writes, F4000001h and the handle's own class (psx-spx
+// "Event Summary").
 #include <cstring>
 
 #include "core/bios/hle_bios.h"

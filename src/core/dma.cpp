@@ -140,7 +140,10 @@ void Dma::update_master_flag() {
 }
 
 bool Dma::device_request(u32 ch) const {
-  if (ch == Otc) return true;  // OTC writes RAM only: nothing to wait for
+  // OTC has no device to request: it runs only when started with Start/Trigger (bit 28). On the
+  // console CHCR = 01000002h leaves RAM untouched (ps1-tests dma/otc-test,
+  // testOtcWontStartOnAutomaticMode; Mednafen's notes: "DMA hangs if D28 of CHCR is 0").
+  if (ch == Otc) return false;
   return ports_[ch] && ports_[ch]->dma_request();
 }
 

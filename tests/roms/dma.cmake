@@ -1,7 +1,7 @@
 # DMA, root counter and MDEC test programs (issue 5).
-# dma_modes: OTC 1 + 15 entries + 7, DICR rules 6, OTC time 4, chopping 4, block mode 5 + 1
-# (mdec_idle_check), linked list 3 + 1 = 47.
-psx_add_rom_test(dma_modes SOURCES dma_modes.c CHECKS 47)
+# dma_modes: OTC 1 + 15 entries + 7, OTC without trigger 1, DICR rules 6, OTC time 4, chopping 4,
+# block mode 5 + 1 (mdec_idle_check), linked list 3 + 1 = 48.
+psx_add_rom_test(dma_modes SOURCES dma_modes.c CHECKS 48)
 # timers_counts: 3 check_ratio calls + 2 + 4 + 5 + 2 = 16.
 psx_add_rom_test(timers_counts SOURCES timers_counts.c CHECKS 16)
 # mdec_decode: reset status 1; two table uploads with a send() check each, 2; 4-bit heart block:

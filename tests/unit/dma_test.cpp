@@ -101,6 +101,18 @@ TEST_F(DmaTest, OtcBuildsReversedList) {
   EXPECT_TRUE(dma_irq());
 }
 
+TEST_F(DmaTest, OtcWithoutTriggerNeverStarts) {
+  // ps1-tests dma/otc-test (testOtcWontStartOnAutomaticMode, passed by the console): CHCR
+  // 01000002h leaves the word in RAM as it was.
+  w(kDpcr, 0x08000000);
+  set_ram32(0x2000, 0x11111111);
+  w(reg(6, kMadr), 0x2000);
+  w(reg(6, kBcr), 1);
+  w(reg(6, kChcr), 0x01000002);
+  run_for(1000);
+  EXPECT_EQ(ram32(0x2000), 0x11111111u);
+}
+
 TEST_F(DmaTest, DisabledChannelWaitsForDpcr) {
   w(kDpcr, 0);
   w(reg(6, kMadr), 0x2000);

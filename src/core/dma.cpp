@@ -48,11 +48,12 @@ constexpr Cycles kChopGapCycles = 6;
 constexpr Cycles kListGapCycles = kChopGapCycles;
 constexpr u64 kListHeader256 = 0x398;
 constexpr u64 kListPayloadSetup256 = 5 * 256;
-// Nodes walked before the CPU is given their gaps: 32 empty nodes hold the CPU for 115 cycles, then
-// it runs for 192. The instruction under way when a batch starts finishes beside it (service()'s
-// late credit), so smaller batches give the CPU more than its share (8 nodes: 1.48 times as long
-// instead of 1.60, 32 nodes: 1.57).
-constexpr u32 kListBatchNodes = 32;
+// Nodes walked before the CPU is given their gaps: 128 empty nodes hold the CPU for 460 cycles,
+// then it runs for 768. The instruction under way when a batch starts finishes beside it
+// (service()'s late credit), so smaller batches give the CPU more than its share (chain-looping's
+// loop takes 1.48 times as long with 8 nodes, 1.58 with 32, 1.60 with 128; the console 1.598),
+// and cost more host time (Tumble's demo, recompiler: 32 nodes +17% host instructions, 128 +5%).
+constexpr u32 kListBatchNodes = 128;
 constexpr u32 kAddressMask = 0x00FFFFFC;  // updated addresses are word aligned (psx-spx)
 
 constexpr u32 count_or_max(u32 v) { return v == 0 ? 0x10000 : v; }  // 0 means 0x10000
@@ -259,6 +260,8 @@ u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
   c.chcr &= ~kChcrTrigger;
   u32 moved = 0;
   u32 nodes = 0;
+  u32 headers = 0;       // headers read and not yet charged: charges add up exactly, so the
+                         // empty nodes before the next words (or the batch's end) are charged at once
   bool vouched = false;  // may_run() held after the trigger's clearing, and no words moved since
   for (;;) {
     // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the
@@ -268,26 +271,25 @@ u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
     const u32 count = header >> 24;
     moved += count + 1;
     ++nodes;
+    ++headers;
     c.madr = header & 0x00FFFFFF;
     const bool end = (c.madr & 0x00800000) != 0;  // the hardware tests bit 23 alone
     // An end marker other than 0x00FFFFFF still ends the list, with the bus error flag raised: on
     // hardware 0x800000, 0x800001 and 0xFFFFF0 all leave DICR bit 15 set and MADR on the marker.
     if (end && c.madr != kListEnd) dicr_ |= kDicrBusError;
-    charge_cycles256(kListHeader256);
     if (count) {
+      charge_cycles256(u64{headers} * kListHeader256 + kListPayloadSetup256);
+      headers = 0;
       to_device(ch, addr + 4, count, false);
-      charge_cycles256(kListPayloadSetup256);
       charge(ch, count);
       vouched = false;
     }
-    if (end) {
-      finish(ch);
-      return moved;
-    }
-    if (!alone || moved >= budget || nodes == kListBatchNodes) break;
+    if (end || !alone || moved >= budget || nodes == kListBatchNodes) break;
     if (!vouched && !(vouched = may_run(ch))) break;
   }
-  c.resume_at = sched_.now() - late_credit_ + Cycles{nodes} * kListGapCycles;
+  charge_cycles256(u64{headers} * kListHeader256);
+  if (c.madr & 0x00800000) finish(ch);
+  else c.resume_at = sched_.now() - late_credit_ + Cycles{nodes} * kListGapCycles;
   return moved;
 }
 

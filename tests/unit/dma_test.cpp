@@ -416,29 +416,29 @@ TEST_F(DmaTest, LinkedListTriggerForcesOneEmptyNodeOnly) {
 }
 
 // Linked-list node costs (dma.cpp): a header holds the CPU 0x398/256 cycles, a node with words 5
-// more before them and the GPU's 0x110 clocks per 0x100 words; after a batch of 32 nodes the CPU
-// gets 6 cycles for each. 32 headers: 32 * 0x398 / 256 = 115 cycles held, then 192 for the CPU.
+// more before them and the GPU's 0x110 clocks per 0x100 words; after a batch of 128 nodes the CPU
+// gets 6 cycles for each. 128 headers: 128 * 0x398 / 256 = 460 cycles held, then 768 for the CPU.
 TEST_F(DmaTest, LinkedListNodesHoldTheCpuInBatchesWithItsGapsBetween) {
-  // 100 empty nodes, then one with a word: batches of 32, 32, 32 and 5 nodes. The last holds
-  // (4 * 0x398 + 0x398 + 5 * 256 + 0x110) / 256 = 24.03 cycles: 3 * (115 + 192) + 24 = 945.
+  // 300 empty nodes, then one with a word: batches of 128, 128 and 45 nodes. The last holds
+  // (45 * 0x398 + 5 * 256 + 0x110) / 256 = 167.8 cycles: 2 * (460 + 768) + 167 = 2623.
   w(kDpcr, 0x00000800);
-  for (u32 i = 0; i < 100; ++i) set_ram32(0x1000 + 4 * i, 0x1000 + 4 * (i + 1));
-  set_ram32(0x1000 + 400, 0x01FFFFFF);
-  set_ram32(0x1000 + 404, 0x44444444);
+  for (u32 i = 0; i < 300; ++i) set_ram32(0x1000 + 4 * i, 0x1000 + 4 * (i + 1));
+  set_ram32(0x1000 + 1200, 0x01FFFFFF);
+  set_ram32(0x1000 + 1204, 0x44444444);
   w(reg(2, kMadr), 0x1000);
   const Cycles t0 = sched.now();
   w(reg(2, kChcr), 0x01000401);
-  EXPECT_EQ(sched.now() - t0, 115u);
-  EXPECT_EQ(r(reg(2, kMadr)), 0x1000u + 4 * 32);
+  EXPECT_EQ(sched.now() - t0, 460u);
+  EXPECT_EQ(r(reg(2, kMadr)), 0x1000u + 4 * 128);
   EXPECT_NE(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
   while (r(reg(2, kChcr)) & Dma::kChcrBusy) run_for(1);
-  EXPECT_EQ(sched.now() - t0, 945u);
+  EXPECT_EQ(sched.now() - t0, 2623u);
   EXPECT_EQ(gpu.received, std::vector<u32>{0x44444444});
 }
 
 TEST_F(DmaTest, LinkedListOfEmptyNodesEndingWithAnEmptyOne) {
-  // 101 empty nodes, the last with the end marker: three batches of 32 (307 cycles each), then 5
-  // headers, 5 * 0x398 / 256 = 17.97 -> 17 cycles; then the channel is done and its flag set.
+  // 101 empty nodes, the last with the end marker, within one batch: 101 * 0x398 / 256 = 362.97
+  // -> 362 cycles inside the CHCR write; then the channel is done and its flag set.
   w(kDpcr, 0x00000800);
   w(kDicr, 0x00840000);  // channel 2's interrupt enabled, master enable
   for (u32 i = 0; i < 100; ++i) set_ram32(0x1000 + 4 * i, 0x1000 + 4 * (i + 1));
@@ -446,8 +446,8 @@ TEST_F(DmaTest, LinkedListOfEmptyNodesEndingWithAnEmptyOne) {
   w(reg(2, kMadr), 0x1000);
   const Cycles t0 = sched.now();
   w(reg(2, kChcr), 0x01000401);
-  while (r(reg(2, kChcr)) & Dma::kChcrBusy) run_for(1);
-  EXPECT_EQ(sched.now() - t0, 3 * 307u + 17);
+  EXPECT_EQ(sched.now() - t0, 362u);
+  EXPECT_EQ(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
   EXPECT_TRUE(gpu.received.empty());
   EXPECT_EQ(r(reg(2, kMadr)), 0x00FFFFFFu);
   EXPECT_NE(r(kDicr) & (1u << 26), 0u);
@@ -462,9 +462,9 @@ TEST_F(DmaTest, EndlessListOfEmptyNodesGivesTheCpuItsShare) {
   w(reg(2, kMadr), 0x100);
   const Cycles t0 = sched.now();
   w(reg(2, kChcr), 0x01000401);
-  EXPECT_EQ(sched.now() - t0, 115u);  // the CHCR write returns after the first batch
+  EXPECT_EQ(sched.now() - t0, 460u);  // the CHCR write returns after the first batch
   Cycles cpu = 0;
-  for (; cpu < 100 * 192 - 96; ++cpu) run_for(1);
+  for (; cpu < 100 * 768 - 384; ++cpu) run_for(1);
   EXPECT_NEAR(static_cast<double>(sched.now() - t0) / static_cast<double>(cpu), 25632.0 / 16040.0, 0.025);
   EXPECT_NE(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
   EXPECT_EQ(r(reg(2, kMadr)), 0x100u);
@@ -525,11 +525,11 @@ TEST_F(DmaTest, EndlessLinkedListDoesNotHangHost) {
   EXPECT_NE(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);  // still going: the write returned
   size_t first = gpu.received.size();
   EXPECT_GT(first, 0u);
-  run_for(200);
+  run_for(800);
   EXPECT_GT(gpu.received.size(), first);  // continues after the CPU's gap
   w(reg(2, kChcr), 0);                    // the CPU stops it
   size_t stopped = gpu.received.size();
-  run_for(400);
+  run_for(2000);
   EXPECT_EQ(gpu.received.size(), stopped);
 }
 

@@ -93,17 +93,19 @@ void Gpu::book_drawing(Cycles time) {
   if (time == 0) return;
   fifo_empty_at_ = std::max(busy_until_, sched_.now());  // it waits in the FIFO until then
   busy_until_ = fifo_empty_at_ + time;
-  drawing_changed();
 }
 
-// GPUSTAT's ready bits change when the FIFO empties and when the drawing ends: an event at each,
-// which does nothing but mark the time. Idle-loop skipping (cpu/idle_skip.cpp) takes GPUSTAT to
-// change only at events, so a program polling bit 26 or 28 wakes then, not at the next VBlank.
-void Gpu::drawing_changed() {
+// GPUSTAT's ready bits change when the FIFO empties and when the drawing ends. Idle-loop skipping
+// (cpu/idle_skip.cpp) takes GPUSTAT to change only at events, so once a program reads GPUSTAT
+// while the GPU is busy, an event ('gpu.draw', which does nothing but mark the time) is booked
+// at the next change: a loop polling bit 26 or 28 wakes then, not at the next VBlank, and its
+// next read books the change after. Without a read none is booked: a program that never polls
+// costs no events. A pending booking is never later than the next change (the times only grow).
+void Gpu::watch_drawing() {
+  if (sched_.pending(draw_event_)) return;
   const Cycles now = sched_.now();
   if (fifo_empty_at_ > now) sched_.schedule_at(draw_event_, fifo_empty_at_);
   else if (busy_until_ > now) sched_.schedule_at(draw_event_, busy_until_);
-  else sched_.cancel(draw_event_);
 }
 
 // A VRAM-to-CPU block by DMA (direction 3): the GPU reads the block's pixels out of VRAM at the

@@ -16,13 +16,14 @@ Gpu::Gpu(Scheduler& sched, InterruptController& irq)
       irq_(irq),
       renderer_(std::make_unique<gpu::SoftwareRenderer>()),
       timing_(sched, [this] { vblank_started(); }) {
-  draw_event_ = sched_.add_event("gpu.draw", [this](Cycles) { drawing_changed(); });
+  draw_event_ = sched_.add_event("gpu.draw", [](Cycles) {});  // marks a GPUSTAT change (watch_drawing())
   draw_.set_target(renderer_.get());
   gp1_reset();
 }
 
 // GP0/GPUREAD at +0, GP1/GPUSTAT at +4; +8/+C mirror them. Narrow reads see the addressed bytes.
 u32 Gpu::io_read(u32 offset, u32 width) {
+  if (offset & 4) watch_drawing();
   u32 value = (offset & 4) ? gpustat() : gpuread();
   return value >> ((offset & 3) * 8);
 }

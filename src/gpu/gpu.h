@@ -137,7 +137,7 @@ class Gpu final : public IoDevice, public DmaPort {
   Cycles draw_time(const u32* w) const;
   void book_drawing(Cycles time);
   void book_line(const gpu::Vertex& a, const gpu::Vertex& b);
-  void drawing_changed();
+  void watch_drawing();
   bool drawing() const { return sched_.now() < busy_until_; }
   bool fifo_empty() const { return sched_.now() >= fifo_empty_at_; }
   void set_position(gpu::Vertex& v, u32 xy) const;
@@ -209,7 +209,7 @@ class Gpu final : public IoDevice, public DmaPort {
   // The GPU draws until busy_until_ (GPUSTAT.26); the last command booked waits in the FIFO
   // until fifo_empty_at_ (GPUSTAT.28).
   Cycles busy_until_ = 0, fifo_empty_at_ = 0;
-  Scheduler::Handle draw_event_;  // "gpu.draw", at each of those times (drawing_changed())
+  Scheduler::Handle draw_event_;  // "gpu.draw", at the next of those times once polled (watch_drawing())
   // The CLUT cache's contents (clut_load()): the CLUT attribute it was loaded from (kNoClut
   // after GP0(01) or a reset) and whether it holds 256 entries; the entries are the renderer's.
   static constexpr u32 kNoClut = 0xFFFFFFFF;

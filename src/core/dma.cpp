@@ -243,8 +243,20 @@ u32 Dma::run_block(u32 ch) {
   // The CPU gets the bus until the next block: the controller's gap, or longer while the device
   // still works through this block (the SPU's FIFO, spu/spu_transfer.cpp).
   const Cycles device = ch < Pio && ports_[ch] ? ports_[ch]->dma_block_cycles(size) : 0;
-  c.resume_at = sched_.now() - late_credit_ + std::max(kBlockGapCycles, device);
-  if (blocks == 1) finish(ch);
+  if (blocks == 1) {
+    finish(ch);
+  } else if (device == 0 && device_request(ch)) {
+    // A device that asks for the next block at once does not let the CPU onto the bus in the
+    // gap: on a console a GPUSTAT read right after starting eight 1-word blocks to the GPU finds
+    // all eight delivered (ps1-tests gpu/gpustat, sync mode cases). The gap is the controller's
+    // own time, less what the CPU ran past the booking.
+    const Cycles overlap = std::min(kBlockGapCycles, late_credit_);
+    late_credit_ -= overlap;
+    sched_.advance(kBlockGapCycles - overlap);
+    c.resume_at = sched_.now();
+  } else {
+    c.resume_at = sched_.now() - late_credit_ + std::max(kBlockGapCycles, device);
+  }
   return size;
 }
 

@@ -58,6 +58,7 @@ void Gpu::gp0_write(u32 word) {
   fifo_[fifo_len_++] = word;
   if (fifo_len_ < fifo_needed_) return;
   fifo_len_ = 0;
+  book_drawing(draw_time(fifo_));  // on arrival: a replayed draw log books nothing again
   gp0_execute(fifo_);
 }
 
@@ -164,6 +165,7 @@ void Gpu::gp0_polyline_word(u32 word) {
   l.v[0] = polyline_last_;
   set_position(l.v[1], word);
   set_colour(l.v[1], polyline_colour_);
+  book_line(l.v[0], l.v[1]);
   draw_.line(l, draw_state());
   polyline_last_ = l.v[1];
 }

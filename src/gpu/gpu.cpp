@@ -16,12 +16,14 @@ Gpu::Gpu(Scheduler& sched, InterruptController& irq)
       irq_(irq),
       renderer_(std::make_unique<gpu::SoftwareRenderer>()),
       timing_(sched, [this] { vblank_started(); }) {
+  draw_event_ = sched_.add_event("gpu.draw", [](Cycles) {});  // marks a GPUSTAT change (watch_drawing())
   draw_.set_target(renderer_.get());
   gp1_reset();
 }
 
 // GP0/GPUREAD at +0, GP1/GPUSTAT at +4; +8/+C mirror them. Narrow reads see the addressed bytes.
 u32 Gpu::io_read(u32 offset, u32 width) {
+  if (offset & 4) watch_drawing();
   u32 value = (offset & 4) ? gpustat() : gpuread();
   return value >> ((offset & 3) * 8);
 }
@@ -47,15 +49,19 @@ u32 Gpu::gpustat() const {
   s |= (display_mode_ & 0x3F) << 17;                 // 17-22: hres 1, vres, PAL, 24-bit, interlace
   s |= u32{display_disabled_} << 23;
   s |= u32{irq_flag_} << 24;
-  const bool ready_cmd = gp0_mode_ != Gp0Mode::CpuToVram && !download_.active;
+  // 26: ready for a command word: no transfer under way and nothing drawing (gp0_draw_time.cpp).
+  // 28: ready for a DMA block: the command FIFO is empty, which a VRAM-to-CPU transfer waiting
+  // to be read leaves it (on a console, DrawSync's wait for bit 28 after GP0(C0) ends: ps1-tests
+  // gpu/bandwidth), and a drawing command alone too: only one waiting behind it fills it
+  // (ps1-tests gpu/gpustat: 26 = 0, 28 = 1 while one rectangle sent by the CPU draws; both 0
+  // while a DMA list's second one waits). 25 follows 28 in direction 2 and 27 in direction 3.
+  const bool ready_cmd = gp0_mode_ != Gp0Mode::CpuToVram && !download_.active && !drawing();
+  const bool ready_dma = fifo_empty();
   s |= u32{ready_cmd} << 26;
-  s |= u32{download_.active} << 27;  // ready to send VRAM to the CPU
-  // 28: ready for a DMA block: the command FIFO is empty, as it always is here (commands run as
-  // they arrive), a VRAM-to-CPU transfer waiting to be read included: on a console DrawSync's
-  // wait for bit 28 after GP0(C0) ends (ps1-tests gpu/bandwidth; DuckStation's
-  // GPU::UpdateDMARequest agrees).
-  s |= 1u << 28;
-  s |= u32{dma_request()} << 25;
+  s |= u32{download_.active} << 27;   // ready to send VRAM to the CPU
+  s |= u32{ready_dma} << 28;
+  const bool request[4] = {false, true, ready_dma, download_.active};
+  s |= u32{request[dma_direction_]} << 25;
   s |= dma_direction_ << 29;
   s |= u32{field_line_odd()} << 31;
   return s;
@@ -69,9 +75,9 @@ bool Gpu::field_line_odd() const {
   return timing_.line() & 1;
 }
 
-// GPUSTAT.25, which the DMA controller polls once per linked-list node: its meaning follows
-// GP1(04): off 0, FIFO not full (always, here), then bit 28 (ready for a DMA block: always), bit
-// 27 (ready to send VRAM). Computed alone, without the rest of GPUSTAT.
+// The request the DMA controller polls once per linked-list node, by GP1(04): off never, FIFO
+// not full (always, here), ready for a block (always: commands execute as they arrive, and their
+// drawing time is not made the DMA's), ready to send VRAM. Computed alone, without GPUSTAT.
 bool Gpu::dma_request() const {
   switch (dma_direction_) {
     case 0: return false;
@@ -109,6 +115,7 @@ void Gpu::dma_write(const u32* words, u32 count) {
         fifo_needed_ = needed;
         const u32* command = words + i;
         i += needed;
+        book_drawing(draw_time(command));
         gp0_execute(command);
         continue;
       }
@@ -159,6 +166,8 @@ void Gpu::gp1_write(u32 word) {
 void Gpu::gp1_reset() {
   gp1_reset_command_buffer();
   download_.active = false;
+  busy_until_ = fifo_empty_at_ = 0;  // whatever was drawing stops
+  sched_.cancel(draw_event_);
   irq_flag_ = false;
   clear_cache();
   display_disabled_ = true;
@@ -273,8 +282,9 @@ bool Gpu::write_vram_png(const std::string& path, std::string& error) {
 void Gpu::do_state(StateIO& s) {
   // Version 2 saves the polyline vertex field by field; version 1 saved the struct whole, with
   // its padding bytes, which made equal consoles give unequal states. Version 3 adds the CLUT
-  // cache (older states load with it empty, to be reloaded by the next CLUT primitive).
-  const u32 version = s.section("GPU ", 3, 1);
+  // cache (older states load with it empty, to be reloaded by the next CLUT primitive), version
+  // 4 the drawing in progress (gp0_draw_time.cpp).
+  const u32 version = s.section("GPU ", 4, 1);
   // A state holds what eager drawing would have: everything drawn, the last VBlank's picture.
   if (s.loading()) {
     drop_log();
@@ -340,6 +350,8 @@ void Gpu::do_state(StateIO& s) {
   } else {
     clut_tag_ = kNoClut;
   }
+  s.pod_since(version, 4, busy_until_, Cycles{0});
+  s.pod_since(version, 4, fifo_empty_at_, Cycles{0});
   for (u32* r : {&draw_mode_, &texture_window_, &area_top_left_, &area_bottom_right_, &draw_offset_, &mask_bits_})
     s.pod(*r);
   s.boolean(irq_flag_);

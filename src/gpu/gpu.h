@@ -34,6 +34,7 @@ class Gpu final : public IoDevice, public DmaPort {
   void dma_write(const u32* words, u32 count) override;
   void dma_read(u32* words, u32 count) override;
   bool dma_request() const override;
+  Cycles dma_block_cycles(u32 words) const override;  // gp0_draw_time.cpp
 
   void gp0_write(u32 word);
   void gp1_write(u32 word);
@@ -131,6 +132,14 @@ class Gpu final : public IoDevice, public DmaPort {
   u16 clut_load(u32 clut);
   void clear_cache();
   void upload_pixels(const u16* pixels, u32 count);
+  // Drawing time (gp0_draw_time.cpp): how long a command keeps the GPU busy, booked on the
+  // timeline as it arrives.
+  Cycles draw_time(const u32* w) const;
+  void book_drawing(Cycles time);
+  void book_line(const gpu::Vertex& a, const gpu::Vertex& b);
+  void watch_drawing();
+  bool drawing() const { return sched_.now() < busy_until_; }
+  bool fifo_empty() const { return sched_.now() >= fifo_empty_at_; }
   void set_position(gpu::Vertex& v, u32 xy) const;
   void update_draw_state();
   const gpu::DrawState& draw_state();
@@ -197,6 +206,10 @@ class Gpu final : public IoDevice, public DmaPort {
   Transfer upload_;    // GP0(A0)
   Transfer download_;  // GP0(C0)
   u32 gpuread_latch_ = 0;
+  // The GPU draws until busy_until_ (GPUSTAT.26); the last command booked waits in the FIFO
+  // until fifo_empty_at_ (GPUSTAT.28).
+  Cycles busy_until_ = 0, fifo_empty_at_ = 0;
+  Scheduler::Handle draw_event_;  // "gpu.draw", at the next of those times once polled (watch_drawing())
   // The CLUT cache's contents (clut_load()): the CLUT attribute it was loaded from (kNoClut
   // after GP0(01) or a reset) and whether it holds 256 entries; the entries are the renderer's.
   static constexpr u32 kNoClut = 0xFFFFFFFF;

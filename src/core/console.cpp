@@ -12,7 +12,7 @@ namespace psx {
 Console::Console()
     : bus_(sched_, irq_),
       cpu_(bus_, sched_, irq_, gte_),
-      hle_(cpu_, bus_),
+      hle_(cpu_, bus_, sched_),
       cdrom_(sched_, irq_),
       sio0_(sched_, irq_),
       gpu_(sched_, irq_),

@@ -1,6 +1,7 @@
 // HLE kernel: vector and stub installation, BIOS call dispatch over the A0h/B0h/C0h tables, TTY
 // output calls, system information, and guest memory helpers.
 #include "core/bios/hle_bios.h"
+#include "core/bios/hle_costs.h"
 
 #include <cstdio>
 
@@ -134,17 +135,22 @@ void HleBios::call_c0(u32 fn) {
 // hle_files.cpp).
 bool HleBios::tty_call(u32 table, u32 fn) {
   const u32 a0 = cpu_.reg(kA0r);
+  // Each character takes the time a BIOS's TTY output takes (hle_costs.h).
+  auto out = [&](const std::string& s, u32 cycles_per_char) {
+    sched_.advance(static_cast<Cycles>(cycles_per_char) * s.size());
+    print(s);
+  };
   auto putchar = [&](u32 c) {
-    print(std::string(1, static_cast<char>(c)));
+    out(std::string(1, static_cast<char>(c)), hle_cost::kTtyChar);
     return c;
   };
   if (table == kA0) {
     switch (fn) {
       case 0x3C: return_to_caller(putchar(a0)); return true;
-      case 0x3E: print(read_string(a0) + "\n"); return_to_caller(1); return true;
+      case 0x3E: out(read_string(a0) + "\n", hle_cost::kTtyChar); return_to_caller(1); return true;
       case 0x3F: {
         std::string s = format(a0);
-        print(s);
+        out(s, hle_cost::kPrintfChar);
         return_to_caller(static_cast<u32>(s.size()));
         return true;
       }
@@ -153,7 +159,7 @@ bool HleBios::tty_call(u32 table, u32 fn) {
   }
   switch (fn) {
     case 0x3D: return_to_caller(putchar(a0)); return true;
-    case 0x3F: print(read_string(a0) + "\n"); return_to_caller(1); return true;
+    case 0x3F: out(read_string(a0) + "\n", hle_cost::kTtyChar); return_to_caller(1); return true;
     default: return false;
   }
 }

@@ -71,6 +71,7 @@
 
 #include "core/bios/hle_io.h"
 #include "core/cpu/cpu.h"
+#include "core/scheduler.h"
 #include "core/state.h"
 #include "core/types.h"
 
@@ -85,7 +86,7 @@ class Disc;
 
 class HleBios {
  public:
-  HleBios(Cpu& cpu, Bus& bus) : cpu_(cpu), bus_(bus) {}
+  HleBios(Cpu& cpu, Bus& bus, Scheduler& sched) : cpu_(cpu), bus_(bus), sched_(sched) {}
 
   // Writes the kernel's vectors, tables and stubs into RAM and sets SR/I_MASK as the BIOS leaves
   // them.
@@ -251,6 +252,7 @@ class HleBios {
 
   Cpu& cpu_;
   Bus& bus_;
+  Scheduler& sched_;  // books the emulated time of the kernel's work (hle_costs.h)
   u32 exit_buf_ = kDefaultExit;
   bool dispatching_ = false;
   bool return_now_ = false;

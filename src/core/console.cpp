@@ -180,6 +180,7 @@ void Console::side_load(const PsxExe& exe) {
   // The HLE kernel's Exec() caller: a return from the entry point stops with a message.
   if (hle_mode_) cpu_.set_reg(31, HleBios::kExitStub);
   cpu_.set_pc(exe.pc);
+  if (hle_mode_) hle_.start_program(exe.pc);
 }
 
 void Console::on_reach(u32 pc) {

@@ -25,4 +25,17 @@ constexpr u32 kPadPoll = 13600;
 constexpr u32 kTtyChar = 5645;
 constexpr u32 kPrintfChar = 6400;
 
+// InitPad (B0h:12h: 151,549 and 154,462 cycles, the second with a VBlank inside), StartPad
+// (B0h:13h: 2207-2399) and FlushCache (A0h:44h: 8473). The other calls the examples make take
+// 50-1600 cycles under OpenBIOS and none here.
+constexpr u32 kInitPad = 151549;
+constexpr u32 kStartPad = 2300;
+constexpr u32 kFlushCache = 8473;
+
+// From power-on to the program's entry point: OpenBIOS hands an EXE over 491,100 cycles before
+// the program's first VBlank starts (line 256 of 263, NTSC), 28 lines after the top of the
+// frame, whatever the program; the HLE kernel, starting at line 0, would give the program 28
+// lines more before its first VBlank. 28 lines of 3413 video cycles at 53.693175 MHz.
+constexpr Cycles kBootCycles = Cycles{28} * 3413 * kCpuClockHz / 53693175;
+
 }  // namespace psx::hle_cost

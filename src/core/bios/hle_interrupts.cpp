@@ -399,13 +399,13 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
       pad_buf_ = {a0, cpu_.reg(6)};
       for (u32 i = 0; i < a1 && i < 0x22; ++i) poke8(a0 + i, 0);
       for (u32 i = 0; i < cpu_.reg(7) && i < 0x22; ++i) poke8(cpu_.reg(6) + i, 0);
-      return_to_caller(2);
+      return_after(2, hle_cost::kInitPad);
       return true;
     case 0x13:  // StartPad: enqueue the pad handler, VBlank IRQ on
       if (!pad_started_) enqueue(2, kKernelElems + 16 * kPad);
       pad_started_ = true;
       io_write(kIMask, io_read(kIMask, 4) | 1, 4);
-      return_to_caller(1);
+      return_after(1, hle_cost::kStartPad);
       return true;
     case 0x14:  // StopPad
       if (pad_started_) dequeue(2, kKernelElems + 16 * kPad);

@@ -5,7 +5,9 @@
 // interpreter from the exception (or the jump to the call vector) to the first instruction of
 // the program's code, and from its last one to the return (docs/console.md, "HLE kernel's
 // emulated time"): PSn00bSDK's timer and n00bdemo, psyqo's teapot; medians over 100-900 IRQs.
-// Sony's BIOS takes other times; no figure here claims to be its.
+// Sony's BIOS takes other times; no figure here claims to be its. The interrupt figures pass at
+// once (Scheduler::advance: a BIOS runs them with interrupts off); the calls' figures are spent
+// in a kernel delay loop (HleBios::return_after) that interrupts may enter, as a BIOS's calls.
 #pragma once
 #include "core/types.h"
 

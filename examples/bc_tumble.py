@@ -3,6 +3,8 @@
 for each observation, and the clone then plays the level greedily in the environment.
 
     psxrl record --game tumble --out session/          # play a level in the window, Escape to end
+    psxrl record --game tumble --stdin --out session/ < examples/data/tumble_level1_typed.txt
+                                                       # or typed moves, no display (docs/offline.md)
     python examples/bc_tumble.py session/ [--obs local] [--steps 2000] [--seed 0]
 
 Needs Minari and PyTorch (.venv-sb3 of scripts/setup.sh has both). Prints the clone's accuracy on

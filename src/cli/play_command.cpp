@@ -12,6 +12,7 @@
 #include "cli/game_options.h"
 #include "cli/options.h"
 #include "cli/play.h"
+#include "cli/play_rollout.h"
 #include "core/console.h"
 #include "core/input_error.h"
 #include "frontend/keymap.h"
@@ -27,6 +28,8 @@ namespace {
 struct LoadedPolicy {
   std::unique_ptr<rl::Env> env;
   std::unique_ptr<agents::Agent> agent;
+  std::string trained_start;     // the run's --start ("" for the level's own)
+  agents::StartPosition start;   // where each episode starts
 };
 
 LoadedPolicy load_policy(const PlayOptions& p, const rl::UserFiles& files) {
@@ -52,6 +55,7 @@ LoadedPolicy load_policy(const PlayOptions& p, const rl::UserFiles& files) {
   if (!why.empty()) throw std::invalid_argument("cannot use the policy in " + path + ": " + why);
   agents::ByteReader r(c.agent, path + " (agent)");
   l.agent->load(r);
+  l.trained_start = tc.start;
   return l;
 }
 
@@ -75,7 +79,7 @@ std::string frame_path(const std::string& dir, std::uint64_t episode, std::uint3
 
 // Greedy episodes of the policy, every emulated frame going through the view; an episode ends
 // early when the view stops (the player closed the window, or --frames was reached).
-int play_policy(LoadedPolicy& l, const PlayOptions& p, PlayView& view) {
+int play_policy(LoadedPolicy& l, const PlayOptions& p, PlayView& view, RolloutWriter& rollout) {
   // Frames after the view stopped (the rest of the move under way) are emulated, not shown.
   l.env->on_frame = [&view](std::span<const psx::StereoSample> audio) {
     if (!view.stopped()) view.frame(audio);
@@ -83,15 +87,20 @@ int play_policy(LoadedPolicy& l, const PlayOptions& p, PlayView& view) {
   for (std::uint64_t ep = 1; ep <= p.episodes && !view.stopped(); ++ep) {
     std::uint64_t frames = 0;
     rl::StepResult r;
-    std::vector<float> s = agents::features(l.env->reset(p.level, rl::episode_seed(p.seed, 0, ep - 1)));
+    const std::uint64_t seed = rl::episode_seed(p.seed, 0, ep - 1);
+    std::vector<float> s = agents::features(agents::begin_at(*l.env, p.level, l.start, seed, nullptr));
+    rollout.begin(ep, p.level, seed, l.start.moves);
     if (!p.frames_dir.empty()) l.env->console().save_screenshot(frame_path(p.frames_dir, ep, 0));
     do {
-      r = l.env->step(l.agent->act(s, true));
+      const int action = l.agent->act(s, true);
+      r = l.env->step(action);
+      rollout.move(action, r.reward);
       s = agents::features(l.env->observation());
       frames += r.info.game_frames;
       if (!p.frames_dir.empty()) l.env->console().save_screenshot(frame_path(p.frames_dir, ep, r.info.moves));
     } while (!r.terminated && !r.truncated && !view.stopped());
     std::string out = !r.info.outcome.empty() ? r.info.outcome : r.truncated ? "truncated" : "stopped";
+    rollout.end(r, out);
     print_episode(ep, r.info.score, out, r.info.moves, frames);
   }
   return kSuccess;
@@ -124,6 +133,10 @@ void add_play_options(CLI::App& app, PlayOptions& p) {
   app.add_option("--episodes", p.episodes, "episodes to play (default 1)")->type_name("N");
   app.add_option("--seed", p.seed, "seed of the episodes' randomness (default 0)")->type_name("S");
   app.add_option("--max-moves", p.max_moves, "move cap per episode (default: the game's)")->type_name("N");
+  app.add_option("--start", p.start,
+                 "start every episode after this walk from the level's start, actions by name or number, comma\n"
+                 "separated, as psxrl train --start (default: the policy's training start; \"\": the level's own)")
+      ->type_name("MOVES");
   app.add_flag("--headless", p.headless, "no window and no sound (also chosen when there is no display)");
   app.add_option("--record", v.record, "record what play shows: FILE.mp4 (.mkv, .mov) with sound, or a PNG folder")
       ->type_name("OUT")
@@ -140,6 +153,10 @@ void add_play_options(CLI::App& app, PlayOptions& p) {
   app.add_option("--frames-dir", p.frames_dir, "with --policy: the picture after the reset and every move as PNG")
       ->type_name("DIR")
       ->transform(folder_path());
+  app.add_option("--rollout", p.rollout,
+                 "with --policy: every episode's seed, start, actions, rewards and end as JSON Lines, for\n"
+                 "python -m psxrl.offline export-policy (docs/offline.md)")
+      ->type_name("FILE");
 }
 
 // Checks the options that need no game; returns a usage message or "".
@@ -151,6 +168,7 @@ std::string check_options(const PlayOptions& p) {
     return "--scale must be 1 to 8 with --renderer gl";
   if (p.policy.empty() && p.headless) return "human play (no --policy) needs the window: drop --headless";
   if (p.policy.empty() && !p.frames_dir.empty()) return "--frames-dir counts a policy's moves: use --record DIR";
+  if (p.policy.empty() && !p.rollout.empty()) return "--rollout records a policy's moves: give --policy";
   return "";
 }
 
@@ -194,12 +212,18 @@ int play_command(const std::vector<std::string>& args) {
 
   LoadedPolicy l;
   std::unique_ptr<PlayView> view;
+  std::unique_ptr<RolloutWriter> rollout;
   try {
     if (!p.frames_dir.empty()) std::filesystem::create_directories(p.frames_dir);
     l = p.policy.empty() ? load_game(p, files) : load_policy(p, files);
     if (p.level < 1 || p.level > l.env->game().level_count)
       throw std::invalid_argument("game '" + l.env->game().name + "' has levels 1 to " +
                                   std::to_string(l.env->game().level_count) + ", not " + std::to_string(p.level));
+    l.start = agents::parse_start_position(p.start.value_or(l.trained_start), l.env->actions());
+    rollout = std::make_unique<RolloutWriter>(p.rollout);
+    if (!l.start.moves.empty())
+      std::printf("each episode starts after the walk %s (%s)\n", l.start.text.c_str(),
+                  p.start ? "--start" : "the policy's training start");
     // The OpenGL renderer draws at --scale (default 2, the window's default), on SDL2's OpenGL
     // where there is a display; the window then shows its larger picture as is.
     const bool display = !p.headless && frontend::display_problem().empty();
@@ -212,13 +236,16 @@ int play_command(const std::vector<std::string>& args) {
     return kBadInput;
   }
   try {
-    int code = p.policy.empty() ? play_human(*l.env, p, *view) : play_policy(l, p, *view);
+    int code = p.policy.empty() ? play_human(*l.env, p, l.start, *view) : play_policy(l, p, *view, *rollout);
     for (const std::string& line : view->finish()) std::printf("%s\n", line.c_str());
     return code;
   } catch (const psx::InputError& e) {
     std::fprintf(stderr, "psxrl play: %s\n", e.what());
     return kBadInput;
   } catch (const psx::StateError& e) {  // a corrupt level save state is a bad input file
+    std::fprintf(stderr, "psxrl play: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::invalid_argument& e) {  // a --start walk that scores or ends the episode
     std::fprintf(stderr, "psxrl play: %s\n", e.what());
     return kBadInput;
   } catch (const std::exception& e) {

@@ -70,7 +70,7 @@ std::string play_frames(rl::Env& env, PlayView& view, bool judge, std::uint64_t&
 
 }  // namespace
 
-int play_human(rl::Env& env, const PlayOptions& p, PlayView& view) {
+int play_human(rl::Env& env, const PlayOptions& p, const agents::StartPosition& start, PlayView& view) {
   // The Env's constructor has asked for a --states folder where the levels start from states.
   view.on_save = [&] { save_level_state(env, p.level); };
   for (std::uint64_t ep = 1; ep <= p.episodes && !view.stopped(); ++ep) {
@@ -81,7 +81,7 @@ int play_human(rl::Env& env, const PlayOptions& p, PlayView& view) {
       std::printf("level %d's start state %s does not exist yet: playing from the game's boot; press F5 at the "
                   "level's start to save it\n", p.level, level_state_path(env, p.level).c_str());
     } else {
-      env.reset(p.level, rl::episode_seed(p.seed, 0, ep - 1));
+      agents::begin_at(env, p.level, start, rl::episode_seed(p.seed, 0, ep - 1), nullptr);
     }
     std::fflush(stdout);
     std::uint64_t frames = 0;

@@ -4,6 +4,7 @@
 // input script and the marks from a marks file.
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "cli/input_script.h"
 #include "cli/options.h"
 #include "cli/play_view.h"
+#include "cli/record_typed.h"
 #include "core/console.h"
 #include "core/input_error.h"
 #include "memsearch/marks.h"
@@ -28,6 +30,9 @@ const char* kRecordFooter =
     "start) or a program: --exe, --disc and/or --bios as psxrl run takes them.\n"
     "Without --input and --marks you play in a window (psxrl play's controls); F1 to F4 set marks labelled by\n"
     "--mark-labels; Escape or closing the window ends the recording, which is then written.\n"
+    "With --stdin (and --game) you play without a window: type one move a line (the game's actions);\n"
+    "after each, the picture goes to --frames-dir and a text view of the level is printed; the\n"
+    "episode's end, 'quit' or the end of the input ends the recording (docs/offline.md).\n"
     "\n"
     "exit codes:\n"
     "  0  the session was written\n"
@@ -37,7 +42,8 @@ const char* kRecordFooter =
     "  3  the program failed while recording\n";
 
 struct RecordArgs {
-  std::string game, exe, disc, out, input, marks, mark_labels = "score,died,level_start,event";
+  std::string game, exe, disc, out, input, marks, mark_labels = "score,died,level_start,event", frames_dir;
+  bool typed = false;
   rl::UserFiles files;
   int level = 0;
   unsigned long long frames = 0;
@@ -63,6 +69,11 @@ struct RecordArgs {
         ->type_name("L1,L2,L3,L4");
     app.add_option("--interval", interval, "frames between RAM snapshots (default 60; 0: marks and the end only)")
         ->type_name("N");
+    app.add_flag("--stdin", typed, "with --game: play by typing moves on standard input, no window needed (from\n"
+                                   "--level's start, default 1)");
+    app.add_option("--frames-dir", frames_dir, "with --stdin: the picture at the start and after every move as PNG")
+        ->type_name("DIR")
+        ->transform(folder_path());
   }
 };
 
@@ -156,6 +167,10 @@ int record_command(const std::vector<std::string>& args) {
   if (a.game.empty() == (a.exe.empty() && a.files.disc.empty() && a.files.bios.empty()))
     return usage_error(app, "give either --game or a program (--exe, --disc or --bios)");
   if (a.level && a.game.empty()) return usage_error(app, "--level needs --game");
+  if (a.typed && (a.game.empty() || !a.input.empty() || !a.marks.empty() || a.frames))
+    return usage_error(app, "--stdin plays a --game's moves; it takes no --input, --marks or --frames");
+  if (!a.frames_dir.empty() && !a.typed) return usage_error(app, "--frames-dir needs --stdin");
+  if (a.typed && !a.level) a.level = 1;
   std::vector<std::string> labels = split_labels(a.mark_labels);
   if (labels.size() != 4) return usage_error(app, "--mark-labels needs four labels separated by commas");
   for (const std::string& l : labels) {
@@ -165,7 +180,7 @@ int record_command(const std::vector<std::string>& args) {
       return usage_error(app, std::string("--mark-labels: ") + e.what());
     }
   }
-  const bool window = a.input.empty() && a.marks.empty();
+  const bool window = a.input.empty() && a.marks.empty() && !a.typed;
   std::string no_display = window ? frontend::display_problem() : "";
   if (!no_display.empty()) {
     std::fprintf(stderr, "psxrl record: recording by hand needs a window: %s (record headless with --input)\n",
@@ -184,7 +199,10 @@ int record_command(const std::vector<std::string>& args) {
     Booted booted = boot(a);
     psx::Console& console = booted.get();
     memsearch::Recorder rec(console, booted.source, a.interval);
-    if (window) {
+    if (a.typed) {
+      if (!a.frames_dir.empty()) std::filesystem::create_directories(a.frames_dir);
+      record_typed_moves(*booted.env, rec, a.frames_dir, std::cin);
+    } else if (window) {
       record_in_window(console, rec, a, labels);
     } else {
       std::vector<psx::u16> held = script_buttons(presses, frames);
@@ -210,6 +228,9 @@ int record_command(const std::vector<std::string>& args) {
     std::fprintf(stderr, "psxrl record: %s\n", e.what());
     return kBadInput;
   } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "psxrl record: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::invalid_argument& e) {  // --stdin for a game that steps by frames
     std::fprintf(stderr, "psxrl record: %s\n", e.what());
     return kBadInput;
   }

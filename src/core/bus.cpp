@@ -192,6 +192,27 @@ bool Bus::read(u32 vaddr, u32& v, u32 width, bool time_ram) {
   return false;
 }
 
+bool Bus::read_merged(u32 vaddr, u32& v, u32 first, u32 count) {
+  const u32 p = physical(vaddr);
+  DelayRegion r;
+  if (p >= kBiosBase && p < kBiosBase + kBiosSize) r = kBiosDelay;
+  else if (p >= kExp1Base && p < kExp1End) r = kExp1Delay;
+  else if (p >= kExp3Base && p < kExp3End) r = kExp3Delay;
+  else if (p >= kExp2Base && p < kIoEnd) r = kExp2Delay;
+  else if (p >= kSpuBase && p < kSpuEnd) r = kSpuDelay;
+  else if (p >= kCdromBase && p < kCdromEnd) r = kCdromDelay;
+  else return read32(vaddr, v);
+  const u32 units = memory_bus_units(memctrl_[r], first, count);
+  sched_.advance(memory_read_unit_cycles(memctrl_[r], memctrl_[kComDelay], units) - 1);
+  if (r == kExp1Delay || r == kExp3Delay) {
+    v = 0xFFFFFFFF;  // the open expansion bus, as read()
+    return true;
+  }
+  v = r == kBiosDelay ? load_le32(&bios_[p - kBiosBase]) : io_read(p, 4);
+  if (dcache_mode_) dcache_fill(vaddr, v);  // as read() for a word
+  return true;
+}
+
 bool Bus::peek_data(u32 vaddr, u32 width, u32& v) {
   const u32 p = physical(vaddr);
   if (p < 0x00800000) v = load_width(&ram_[p & (kRamSize - 1)], width);

@@ -110,6 +110,20 @@ class Bus {
   bool read32(u32 vaddr, u32& v) { return read(vaddr, v, 4); }
   bool read16(u32 vaddr, u32& v) { return read(vaddr, v, 2); }
   bool read8(u32 vaddr, u32& v) { return read(vaddr, v, 1); }
+  // LWL/LWR's read of the word at vaddr (aligned) that merges only its bytes first..first+count-1:
+  // on a region timed by a Delay/Size register (BIOS, expansion, SPU, CD-ROM) it takes only the
+  // 8/16-bit bus units holding those bytes (Mednafen's cpu.cpp reads 8, 16 or 24 bits for them; ps1-tests
+  // cpu/access-time: an unaligned SPU word read by LWL+LWR costs what an aligned one does, not
+  // twice that). Elsewhere it is read32().
+  bool read_merged(u32 vaddr, u32& v, u32 first, u32 count);
+  // Whether a load from vaddr uses the CPU's bus interface: not RAM (timed by the CPU's load
+  // shadow when cached code makes it), the scratchpad or the cache control register.
+  static bool bus_load(u32 vaddr) {
+    const u32 p = physical(vaddr);
+    return p >= 0x1F000000 && p < 0x1FC80000 && (p >= 0x1F800400 || p < 0x1F800000);
+  }
+  // Whether the CPU's fetch at vaddr would go to memory (an i-cache miss or uncached code).
+  bool fetch_misses(u32 vaddr) const { return !cached_code(vaddr) || !icache_.hit(vaddr, physical(vaddr)); }
   // The value a load of `width` bytes at vaddr would read now, without the load's time, from RAM,
   // the scratchpad (outside D-cache mode), the BIOS ROM or an I/O register; false elsewhere. An
   // I/O register is read through its device, so only for registers whose read has no side

@@ -24,8 +24,11 @@ constexpr Cycles kRequestPollCycles = 64;
 // below are fitted to ps1-tests `dma/chopping`, GPU DMA timed on two consoles
 // (tests/data/ps1-tests/dma-chopping*.log): 8192 bytes take 2196 cycles in one burst, 22,819 in
 // 1-word blocks, 2471 in 128-word blocks. With these rules that program, run here, comes within
-// 4.4% of both runs for every block size and 6.2% for every window pair but two (docs/fidelity.md);
-// the two runs differ from each other by up to 6.1%.
+// 3.9% of the later run for every block size and 2.4% for every window pair but two
+// (docs/fidelity.md); the two runs differ from each other by up to 6.1% (blocks), 0.9% (pairs).
+// Both gaps count from the end of the block or window on the controller's own time: the CPU's
+// instruction under way then finishes beside the controller (service()'s late credit) and does
+// not push the next turn back.
 // Sync mode 1: after each block the controller releases the bus for 10 cycles before it serves
 // the device's next request (the CPU runs meanwhile), and a block's words cost 0x120 clocks per
 // 0x100 (one more clock per 16 words than a burst at the GPU's 0x110).
@@ -35,6 +38,22 @@ constexpr u32 kBlockExtraPer256Words = 0x10;
 // next DMA window starts; a window of 1 word, 1 clock took 8.15 cycles a word, 1 word, 128 clocks
 // 135.1.
 constexpr Cycles kChopGapCycles = 6;
+// Sync mode 2: after each node the bus goes back to the CPU for the same 6 cycles as after a
+// chopping window. The header read holds it for 3.59 cycles (0x398/256): with those two, CPU work
+// takes 9.59/6 = 1.598 times as long while an endless list of empty nodes runs, as ps1-tests
+// `dma/chain-looping` measured on the console (16040 cycles alone, 25632 and 25640 beside a list
+// of one and of two self-linked empty nodes). A node with words spends 5 more cycles before them:
+// Mednafen charges 15 clocks for such a header against 10 for an empty one, DuckStation 8 + 5.
+// These are fits and other emulators' figures, not psx-spx's (it gives no node cost).
+constexpr Cycles kListGapCycles = kChopGapCycles;
+constexpr u64 kListHeader256 = 0x398;
+constexpr u64 kListPayloadSetup256 = 5 * 256;
+// Nodes walked before the CPU is given their gaps: 128 empty nodes hold the CPU for 460 cycles,
+// then it runs for 768. The instruction under way when a batch starts finishes beside it
+// (service()'s late credit), so smaller batches give the CPU more than its share (chain-looping's
+// loop takes 1.48 times as long with 8 nodes, 1.58 with 32, 1.60 with 128; the console 1.598),
+// and cost more host time (Tumble's demo, recompiler: 32 nodes +17% host instructions, 128 +5%).
+constexpr u32 kListBatchNodes = 128;
 constexpr u32 kAddressMask = 0x00FFFFFC;  // updated addresses are word aligned (psx-spx)
 
 constexpr u32 count_or_max(u32 v) { return v == 0 ? 0x10000 : v; }  // 0 means 0x10000
@@ -122,7 +141,10 @@ void Dma::update_master_flag() {
 }
 
 bool Dma::device_request(u32 ch) const {
-  if (ch == Otc) return true;  // OTC writes RAM only: nothing to wait for
+  // OTC has no device to request: it runs only when started with Start/Trigger (bit 28). On the
+  // console CHCR = 01000002h leaves RAM untouched (ps1-tests dma/otc-test,
+  // testOtcWontStartOnAutomaticMode; Mednafen's notes: "DMA hangs if D28 of CHCR is 0").
+  if (ch == Otc) return false;
   return ports_[ch] && ports_[ch]->dma_request();
 }
 
@@ -201,7 +223,7 @@ u32 Dma::run_burst(u32 ch) {
   c.madr = (backward ? c.madr - 4 * n : c.madr + 4 * n) & kAddressMask;
   c.bcr = (c.bcr & 0xFFFF0000) | ((remaining - n) & 0xFFFF);
   charge(ch, n);
-  c.resume_at = sched_.now() + (Cycles{1} << ((c.chcr >> 20) & 7)) + kChopGapCycles;
+  c.resume_at = sched_.now() - late_credit_ + (Cycles{1} << ((c.chcr >> 20) & 7)) + kChopGapCycles;
   if (remaining == n) finish(ch);
   return n;
 }
@@ -221,54 +243,54 @@ u32 Dma::run_block(u32 ch) {
   // The CPU gets the bus until the next block: the controller's gap, or longer while the device
   // still works through this block (the SPU's FIFO, spu/spu_transfer.cpp).
   const Cycles device = ch < Pio && ports_[ch] ? ports_[ch]->dma_block_cycles(size) : 0;
-  c.resume_at = sched_.now() + std::max(kBlockGapCycles, device);
+  c.resume_at = sched_.now() - late_credit_ + std::max(kBlockGapCycles, device);
   if (blocks == 1) finish(ch);
   return size;
 }
 
-// may_run() can change only where words reach the device (its request follows the device's
-// state, which nothing else changes during the slice) or where the list ends (finish() clears
-// Busy): time only grows, and a channel once past its resume_at stays past it. So after an empty
-// node (an ordering table's unused entry, most of a frame's list) the answer last given still
-// holds, and only Busy is checked again.
+// Sync mode 2: the controller reads a node's header, sends its words, then hands the bus back to
+// the CPU before the next node (psx-spx "CPU Operation during DMA"). The nodes of a batch are
+// walked in one call and their CPU gaps given together after it, so an ordering table of empty
+// nodes costs one scheduler event per kListBatchNodes nodes; the CPU gets the same share of the
+// time. may_run() can change only where words reach the device (its request follows the
+// device's state, which nothing else changes during the batch) or where the list ends (finish()
+// clears Busy), so after an empty node the answer last given still holds.
 u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
   Channel& c = channels_[ch];
   c.chcr &= ~kChcrTrigger;
   u32 moved = 0;
+  u32 nodes = 0;
+  u32 headers = 0;       // headers read and not yet charged: charges add up exactly, so the
+                         // empty nodes before the next words (or the batch's end) are charged at once
   bool vouched = false;  // may_run() held after the trigger's clearing, and no words moved since
-  u32 uncharged = 0;     // header words of the empty nodes walked since the last charge
   for (;;) {
-    if (vouched) {
-      // Vouched (so alone), an empty node that does not end the list (header bits 23-31 clear)
-      // changes only the time, which nothing reads before the next charge, and charges add up
-      // exactly: a run of them is walked in this short loop and charged at once.
-      u32 next = c.madr;
-      for (u32 header; moved + 1 < budget && ((header = bus_.dma_read_word(next & kAddressMask)) & 0xFF800000) == 0;
-           ++moved, ++uncharged)
-        next = header;
-      c.madr = next;
-    }
     // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the
     // device.
     const u32 addr = c.madr & kAddressMask;
     const u32 header = bus_.dma_read_word(addr);
     const u32 count = header >> 24;
     moved += count + 1;
+    ++nodes;
+    ++headers;
     c.madr = header & 0x00FFFFFF;
     const bool end = (c.madr & 0x00800000) != 0;  // the hardware tests bit 23 alone
     // An end marker other than 0x00FFFFFF still ends the list, with the bus error flag raised: on
     // hardware 0x800000, 0x800001 and 0xFFFFF0 all leave DICR bit 15 set and MADR on the marker.
     if (end && c.madr != kListEnd) dicr_ |= kDicrBusError;
     if (count) {
-      if (uncharged) charge(ch, uncharged), uncharged = 0;
+      charge_cycles256(u64{headers} * kListHeader256 + kListPayloadSetup256);
+      headers = 0;
       to_device(ch, addr + 4, count, false);
+      charge(ch, count);
       vouched = false;
     }
-    charge(ch, uncharged + count + 1);
-    uncharged = 0;
-    if (end) finish(ch);
-    if (!alone || moved >= budget || !(vouched ? (c.chcr & kChcrBusy) != 0 : (vouched = may_run(ch)))) return moved;
+    if (end || !alone || moved >= budget || nodes == kListBatchNodes) break;
+    if (!vouched && !(vouched = may_run(ch))) break;
   }
+  charge_cycles256(u64{headers} * kListHeader256);
+  if (c.madr & 0x00800000) finish(ch);
+  else c.resume_at = sched_.now() - late_credit_ + Cycles{nodes} * kListGapCycles;
+  return moved;
 }
 
 u32 Dma::run_otc(u32 ch) {
@@ -331,7 +353,11 @@ void Dma::charge(u32 ch, u32 words, u32 extra_per256) {
   // with the games' one: the rate follows the register (Bus::dma_word_cycles).
   u64 per256 = extra_per256 +
                (ch == Cdrom ? 256 * bus_.dma_word_cycles(Bus::kCdromDelay) : kClocksPer256Words[ch]);
-  u64 total = charge_frac_ + u64{words} * per256;
+  charge_cycles256(u64{words} * per256);
+}
+
+void Dma::charge_cycles256(u64 cycles256) {
+  u64 total = charge_frac_ + cycles256;
   const Cycles held = total / 256;
   const Cycles overlap = std::min(held, late_credit_);
   late_credit_ -= overlap;

@@ -3,9 +3,9 @@
 // Channels 0-4 move words between main RAM and a device (MDECin, MDECout, GPU, CD-ROM, SPU)
 // through its DmaPort; channel 5 (PIO) has no device here; channel 6 (OTC) builds the GPU's
 // reversed ordering table in RAM. The CPU is held while the controller owns the bus: every moved
-// word is charged to the scheduler at the documented per-channel rate. Between sync mode 1 blocks
-// and chopping windows the bus goes back to the CPU; the channel's next turn is booked on the
-// scheduler (Channel::resume_at, the "dma" event).
+// word is charged to the scheduler at the documented per-channel rate. Between sync mode 1 blocks,
+// chopping windows and linked-list nodes the bus goes back to the CPU; the channel's next turn is
+// booked on the scheduler (Channel::resume_at, the "dma" event).
 #pragma once
 #include <array>
 #include <vector>
@@ -85,8 +85,8 @@ class Dma : public IoDevice {
   // One unit of work on a channel; returns the words moved.
   u32 run_burst(u32 ch);
   u32 run_block(u32 ch);
-  // One node of a linked list; more, up to `budget` words, while the channel is the only
-  // candidate (`alone`) and may still run: service() would pick it again.
+  // One node of a linked list; more, up to `budget` words and a batch of nodes, while the channel
+  // is the only candidate (`alone`) and may still run: service() would pick it again.
   u32 run_list(u32 ch, u32 budget, bool alone);
   u32 run_otc(u32 ch);
   void finish(u32 ch);
@@ -96,6 +96,8 @@ class Dma : public IoDevice {
   void from_device(u32 ch, u32 addr, u32 count, bool backward);
   // Holds the CPU for `words` at the channel's rate plus `extra_per256` clocks per 0x100 words.
   void charge(u32 ch, u32 words, u32 extra_per256 = 0);
+  // Holds the CPU for `cycles256` / 256 cycles (the remainder carries over to the next charge).
+  void charge_cycles256(u64 cycles256);
 
   Scheduler& sched_;
   InterruptController& irq_;

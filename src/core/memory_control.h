@@ -8,8 +8,8 @@
 
 namespace psx {
 
-// Total cycles of a read of `width` bytes (1, 2 or 4), the load's own issue cycle included.
-// A read wider than the data bus is one FIRST bus cycle and a SEQ one per further 8/16-bit unit.
+// Total cycles of a read of `units` units of the region's data bus, the load's own issue cycle
+// included: one FIRST bus cycle and a SEQ one per further 8/16-bit unit.
 // FIRST = read delay + 4; SEQ = read delay + 2, plus COM0 with the recovery period (bit 8) and
 // COM2 with the floating period (bit 10): those periods follow a bus cycle, so they delay the
 // next unit of the same access but not the first. psx-spx's rule adds COM0-1 and COM2 to FIRST
@@ -18,7 +18,7 @@ namespace psx {
 // 8/14/26 and SPU 18/18/39 cycles, exactly what this gives (COM_DELAY 0x00031125). psx-spx's
 // floors stay (no measured setting reaches them): FIRST >= MIN + 6 and SEQ >= MIN + 2, MIN being
 // COM3 with the pre-strobe period (bit 11), else 0.
-constexpr u32 memory_read_cycles(u32 delay_size, u32 com_delay, u32 width) {
+constexpr u32 memory_read_unit_cycles(u32 delay_size, u32 com_delay, u32 units) {
   const s32 read_delay = static_cast<s32>((delay_size >> 4) & 0xF);
   const s32 com0 = static_cast<s32>(com_delay & 0xF);
   const s32 com2 = static_cast<s32>((com_delay >> 8) & 0xF);
@@ -29,9 +29,20 @@ constexpr u32 memory_read_cycles(u32 delay_size, u32 com_delay, u32 width) {
   if (delay_size & (1u << 10)) seq += com2;
   const s32 first = std::max(read_delay + 4, min + 6);
   seq = std::max(seq, min + 2);
-  const u32 bus_bytes = (delay_size & (1u << 12)) ? 2 : 1;
-  const u32 units = width > bus_bytes ? width / bus_bytes : 1;
   return static_cast<u32>(first + static_cast<s32>(units - 1) * seq);
+}
+
+// The units of the region's data bus (8 or 16 bits wide, Delay/Size bit 12) that hold bytes
+// first..first+count-1 of a word: what a read of just those bytes takes.
+constexpr u32 memory_bus_units(u32 delay_size, u32 first, u32 count) {
+  if (!(delay_size & (1u << 12))) return count;
+  return ((first + count - 1) >> 1) - (first >> 1) + 1;
+}
+
+// Total cycles of an aligned read of `width` bytes (1, 2 or 4), the load's own issue cycle
+// included.
+constexpr u32 memory_read_cycles(u32 delay_size, u32 com_delay, u32 width) {
+  return memory_read_unit_cycles(delay_size, com_delay, memory_bus_units(delay_size, 0, width));
 }
 
 // Cycles a DMA channel spends per 32-bit word moved over a region's bus: psx-spx's rule as it

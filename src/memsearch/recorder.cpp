@@ -33,6 +33,10 @@ void Recorder::run_frame(u16 pad1, u16 pad2) {
   console_.set_buttons(1, pad1);
   console_.set_buttons(2, pad2);
   console_.run_frame();
+  frame_ran(pad1, pad2);
+}
+
+void Recorder::frame_ran(u16 pad1, u16 pad2) {
   session_.pad1.push_back(pad1);
   session_.pad2.push_back(pad2);
   ++session_.frames;

@@ -18,6 +18,8 @@ class Recorder {
 
   // Runs one frame with these buttons held on ports 1 and 2 (pad_button bits).
   void run_frame(psx::u16 pad1, psx::u16 pad2);
+  // Records a frame the caller has just run with these buttons held (an environment's move).
+  void frame_ran(psx::u16 pad1, psx::u16 pad2);
   // Marks the frame that last ended ("score just went up"); its snapshot is kept.
   void mark(const std::string& label);
   psx::u64 frames() const { return session_.frames; }

@@ -13,6 +13,7 @@
 #include "python/arguments.h"
 #include "python/bindings.h"
 #include "rl/env.h"
+#include "rl/agents/start_position.h"
 #include "rl/async_vec_env.h"
 #include "rl/vec_env.h"
 
@@ -151,6 +152,8 @@ py::dict delimiter_dict(const rl::DelimiterSettings& s) {
 }  // namespace
 
 void bind_env(py::module_& m) {
+  m.def("default_games_dir", &rl::default_games_dir,
+        "The integrations' folder an Env uses without games_dir: $PSXRL_GAMES, else the source tree's games/.");
   m.def("episode_seed", &rl::episode_seed, py::arg("seed"), py::arg("env_index"), py::arg("episode"),
         "The seed VecEnv gives environment `env_index`'s `episode`-th episode (0 = the one reset() starts).");
 
@@ -162,18 +165,20 @@ void bind_env(py::module_& m) {
       }))
       .def(
           "reset",
-          [](rl::Env& e, py::handle level_arg, py::handle seed_arg) {
+          [](rl::Env& e, py::handle level_arg, py::handle seed_arg, py::handle start_arg) {
             int level = static_cast<int>(int_arg("level", level_arg, INT_MIN, INT_MAX));
             std::uint64_t seed = u64_arg("seed", seed_arg);
+            // A start position (psxrl train --start): the walk, then an episode that begins there.
+            agents::StartPosition start = agents::parse_start_position(string_arg("start", start_arg), e.actions());
             rl::StepInfo info;
             auto held = e.hold();
             {
               R release;
-              e.reset(level, seed, &info);
+              agents::begin_at(e, level, start, seed, &info);
             }
             return py::make_tuple(env_observation(e), info_dict(info));
           },
-          py::arg("level") = 1, py::arg("seed") = 0)
+          py::arg("level") = 1, py::arg("seed") = 0, py::arg("start") = "")
       .def(
           "step",
           [](rl::Env& e, py::handle action_arg) {

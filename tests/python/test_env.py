@@ -43,6 +43,22 @@ def test_env_walks_level_one():
         env.step(FORWARD)
 
 
+def test_reset_at_a_start_position():
+    # psxrl train --start's walk: five FORWARDs from the start climb column 2 (all floor) to row 0;
+    # the episode begins there, at move 0 with nothing scored.
+    env = psxrl.Env(obs="simple", gamma=0.9)
+    obs, info = env.reset(level=1, seed=7, start="FORWARD,forward,0,FORWARD,FORWARD")
+    assert obs.tolist() == [simple(2, 0, 0)] and info["moves"] == 0 and info["score"] == 0
+    obs, reward, terminated, _, info = env.step(LOOKRIGHT)
+    assert obs.tolist() == [simple(2, 0, 1)] and info["moves"] == 1 and not terminated
+    # LOOKRIGHT, FORWARD rolls east onto the coin at column 3 of row 5: a walk may not score.
+    with pytest.raises(ValueError, match=r"move 2 \(FORWARD\) scores 250 points on level 1"):
+        env.reset(level=1, seed=7, start="LOOKRIGHT,FORWARD")
+    with pytest.raises(ValueError, match="start position 'BACK' is not an action"):
+        env.reset(level=1, start="BACK")
+    assert env.reset(level=1, start="")[0].tolist() == [simple(2, 5, 0)]
+
+
 def test_observation_kinds_have_the_documented_shapes():
     expected = {
         "local": ((11,), np.float32),  # 3 rows x 3 squares + cumulative reward + time left

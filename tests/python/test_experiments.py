@@ -159,3 +159,27 @@ def test_unknown_study_names_the_studies():
     assert "no study named 'nosuch'" in p.stderr and "discount" in p.stderr and "stability" in p.stderr
     p = subprocess.run([str(exe), "experiment"], env=env, capture_output=True, text=True)
     assert p.returncode == 1 and "usage: psxrl experiment" in p.stderr
+
+
+def test_two_studies_side_by_side(tmp_path):
+    # Without --address each study starts a Ray instance of its own (its own session folder,
+    # ports and object store), never one found running, so two at once both finish; --cpus 1
+    # gives each its share of the machine.
+    env = {**os.environ, "PSXRL_PYTHON": sys.executable}
+    exe = Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"
+    runs = [subprocess.Popen([str(exe), "experiment", "discount", "--tiny", "--cpus", "1", "--out", str(tmp_path / n)],
+                             env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True) for n in "ab"]
+    outputs = [r.communicate(timeout=400)[0] for r in runs]
+    for run, output, name in zip(runs, outputs, "ab"):
+        assert run.returncode == 0 and "4 of 4 runs finished" in output, output
+        assert "queued 4 runs on Ray's 1 CPU (" in output  # --cpus 1: its own instance, one run at a time
+        assert "| gamma=0.9 | 1 | finished | 2 | 1 |" in (tmp_path / name / "runs.md").read_text()
+
+
+def test_cpus_is_for_a_local_instance():
+    env = {**os.environ, "PSXRL_PYTHON": sys.executable}
+    exe = Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"
+    for command in (["experiment", "discount"], ["sweep", "x.toml"]):
+        for bad in (["--cpus", "0"], ["--cpus", "1", "--address", "auto"]):
+            p = subprocess.run([str(exe), *command, *bad], env=env, capture_output=True, text=True)
+            assert p.returncode == 1 and "--cpus sizes a local Ray instance" in p.stderr

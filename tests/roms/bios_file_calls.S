@@ -45,3 +45,14 @@
         BIOS    get_error, 0xB0, 0x55
         BIOS    card_status, 0xB0, 0x5C
         BIOS    card_wait, 0xB0, 0x5D
+        BIOS    tty_gets, 0xA0, 0x3D
+        BIOS    bufs_cb_0, 0xA0, 0xA7
+        BIOS    bufs_cb_4, 0xA0, 0xAE
+        BIOS    b_gets, 0xB0, 0x3E
+        BIOS    file_format, 0xB0, 0x41
+        BIOS    file_rename, 0xB0, 0x44
+        BIOS    file_undelete, 0xB0, 0x46
+        BIOS    print_devices, 0xB0, 0x49
+        BIOS    card_chan, 0xB0, 0x58
+        BIOS    set_card_find_mode, 0xC0, 0x1A
+        BIOS    get_card_find_mode, 0xC0, 0x1D

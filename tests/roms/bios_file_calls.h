@@ -26,6 +26,12 @@ struct dir_entry *first_file(const char *path, struct dir_entry *e);
 struct dir_entry *next_file(struct dir_entry *e);
 int32_t file_erase(const char *path);
 uint32_t get_errno(void);
+char *tty_gets(char *dst);
+char *b_gets(char *dst);
+int32_t file_format(const char *device);
+int32_t file_rename(const char *from, const char *to);
+int32_t file_undelete(const char *path);
+void print_devices(void);
 uint32_t get_error(int32_t fd);
 
 int32_t cd_init(void);
@@ -47,6 +53,11 @@ int32_t card_read(uint32_t port, uint32_t sector, void *dst);
 int32_t new_card(void);
 int32_t card_status(uint32_t slot);
 int32_t card_wait(uint32_t slot);
+uint32_t card_chan(void);
+void bufs_cb_0(void);
+void bufs_cb_4(void);
+void set_card_find_mode(uint32_t mode);
+uint32_t get_card_find_mode(void);
 
 #define O_READ 0x0001
 #define O_WRITE 0x0002

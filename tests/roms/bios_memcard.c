@@ -38,10 +38,16 @@ static int wait_card_event(void) {
   return -1;
 }
 
+/* Whether events[i] becomes ready within a bounded wait. */
+static int wait_one(int i) {
+  for (uint32_t n = 0; n < 2000000; ++n)
+    if (test_event(events[i])) return 1;
+  return 0;
+}
+
 static void low_level(void) {
   CHECK_EQ("InitCARD2 the first time", init_card(1), 0);
   CHECK_EQ("StartCARD2", start_card(), 1);
-  CHECK_EQ("_bu_init", bu_init(), 0);
   CHECK_EQ("_card_status after start: ready", card_status(0), 0x01);
   CHECK_EQ("_card_info(slot 1) is issued", card_info(0x00), 1);
   /* FLAG bit 3 is set from power-up until the card's first write: a "new card". */
@@ -49,11 +55,19 @@ static void low_level(void) {
   CHECK_EQ("_card_info(slot 2) is issued", card_info(0x10), 1);
   CHECK_EQ("no card in slot 2: HwCARD timeout", wait_card_event(), 1);
   CHECK_EQ("_card_status(slot 2): failed/timeout", card_status(1), 0x11);
+  /* After the new-card check: a BIOS's _bu_init may read both cards' directories at once (OpenBIOS
+     does, and its write test clears the new-card flag; its probe of the empty slot 2 delivers a
+     timeout event), so its events are consumed before the next waits. */
+  CHECK_EQ("_bu_init", bu_init(), 0);
+  for (int i = 0; i < 4; ++i) test_event(events[i]);
   CHECK_EQ("card_write_test", card_write_test(0x00), 1);
   CHECK_EQ("card_write_test: HwCARD done", wait_card_event(), 0);
   CHECK_EQ("_card_load", card_load(0x00), 1);
-  CHECK_EQ("_card_load: done, no longer a new card", wait_card_event() == 0 && wait_card_event() == 2, 1);
-  CHECK_EQ("_new_card", new_card(), 0);
+  /* _card_load reads the directory: a BIOS may deliver HwCARD done per sector before SwCARD
+     done, so SwCARD's own event is awaited. */
+  CHECK_EQ("_card_load: SwCARD done, no longer a new card", wait_one(2), 1);
+  for (int i = 0; i < 4; ++i) test_event(events[i]);
+  new_card(); /* no result (psx-spx "_new_card") */
   CHECK_EQ("_card_auto off", card_auto(0), 0);
 }
 
@@ -110,6 +124,7 @@ static void listing(void) {
   CHECK_EQ("_card_read of the file's first sector", card_read(0x00, e.sector, back), 1);
   CHECK_EQ("_card_read: HwCARD done", wait_card_event(), 0);
   CHECK_EQ("raw sector = file bytes 0-127", differ(data, back, 128), 0);
+  card_wait(0); /* a BIOS takes the next command once the slot is ready again */
   for (int i = 0; i < 128; ++i) back[i] = (uint8_t)~data[128 + i];
   CHECK_EQ("_card_write of its second sector", card_write(0x00, e.sector + 1, back), 1);
   CHECK_EQ("_card_wait", card_wait(0), 0x01);
@@ -121,6 +136,7 @@ static void listing(void) {
 
   uint32_t dir_sector = e.sector / 64;  /* directory frame n describes block n */
   CHECK_EQ("_card_read of the directory frame", card_read(0x00, dir_sector, frame), 1);
+  card_wait(0);
   uint8_t x = 0;
   for (int i = 0; i < 128; ++i) x ^= frame[i];
   CHECK_EQ("frame: state 51h, in use, first block", frame[0], 0x51);
@@ -132,6 +148,7 @@ static void listing(void) {
   CHECK_EQ("erase", file_erase(NAME), 1);
   CHECK_EQ("erased file is not listed", (uint32_t)first_file("bu00:PSXRL*", &e), 0);
   card_read(0x00, dir_sector, frame);
+  card_wait(0);
   CHECK_EQ("frame: state A1h, deleted first block", frame[0], 0xA1);
   CHECK_EQ("erase of a missing file", file_erase(NAME), 0);
   CHECK_EQ("StopCARD2", stop_card(), 1);

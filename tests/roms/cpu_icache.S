@@ -12,6 +12,10 @@ time_call:
         lui     $t8, 0x1F80
         sw      $zero, 0x1124($t8)  # timer 2 mode 0: system clock, counter reset to 0
         lhu     $t9, 0x1120($t8)
+        nop                         # the counter read's bus tail (cpu.h kIoTail), which a
+        nop                         # fetch from memory in the next 4 instructions would meet,
+        nop                         # passes here, so that the call's fixed cost does not depend
+        nop                         # on the called code's first lines hitting the cache
         jalr    $a0
         move    $a0, $a1
         lhu     $v0, 0x1120($t8)

@@ -12,6 +12,10 @@
         lui     $t8, 0x1F80
         li      $t7, 2
 1:      lhu     $t9, 0x1120($t8)
+        nop                     # four instructions keep the counter read's own bus tail (cpu.h
+        nop                     # kIoTail, met by a load in the next two) out of the sequence,
+        nop                     # which would otherwise hide it in a first load but not in the
+        nop                     # empty sequence's closing read
         .endm
 
         .macro  DONE

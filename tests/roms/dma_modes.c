@@ -30,6 +30,19 @@ static void test_otc(void) {
   CHECK_EQ("dicr ack", DICR, 0x00C00000);
 }
 
+/* Without Start/Trigger (bit 28) the OTC never starts: on the console the word stays as written
+   (ps1-tests dma/otc-test, testOtcWontStartOnAutomaticMode). The CPU then stops the channel. */
+static void test_otc_needs_trigger(void) {
+  static volatile uint32_t word;
+  word = 0x11111111;
+  D_MADR(6) = PHYS(&word);
+  D_BCR(6) = 1;
+  D_CHCR(6) = 0x01000002;
+  for (int i = 0; i < 1000; ++i) (void)D_CHCR(6);
+  CHECK_EQ("otc without trigger", word, 0x11111111);
+  D_CHCR(6) = 0;
+}
+
 static void test_dicr_rules(void) {
   DICR = 0x00800000; /* master on, DMA6 not enabled: no flag */
   I_STAT = 0;
@@ -126,6 +139,7 @@ static void test_linked_list(void) {
 
 int main(void) {
   test_otc();
+  test_otc_needs_trigger();
   test_dicr_rules();
   test_otc_time();
   test_chopping();

@@ -5,7 +5,9 @@
    of the console's: two runs of that program on hardware differ by up to 6.1% (162 cycles of
    2635 at 48-word blocks; tests/data/ps1-tests/dma-chopping*.log). Then SPU DMA (channel 4) in
    sync mode 1: the CPU runs between the blocks, and 1024 bytes take 16 cycles a byte within the
-   -90%/+10% that ps1-tests `spu/memory-transfer` allows (the console passes it). */
+   -90%/+10% that ps1-tests `spu/memory-transfer` allows (the console passes it). Last, GPU DMA
+   in sync mode 2 as ps1-tests `dma/chain-looping` measured it: a CPU loop beside a linked list
+   that never ends (the CPU runs between its nodes, psx-spx "CPU Operation during DMA"). */
 #include "dma_regs.h"
 #include "gpu_rom.h"
 #include "spu_regs.h"
@@ -73,9 +75,13 @@ static uint32_t timed_start(int ch, uint32_t chcr) {
   return t;
 }
 
-static void expect_close(const char *what, uint32_t a, uint32_t b, uint32_t got, uint32_t hw) {
+/* Within hw/share: 1/16 for the block sizes (the two console runs differ by up to 6.1% there),
+   1/32 for the chopping pairs (there the runs agree within 0.9%; 1/32 is four to five cycles a
+   window at the smallest windows, the slack for where the CPU's polling loop stands when a window
+   ends). */
+static void expect_close(const char *what, uint32_t a, uint32_t b, uint32_t got, uint32_t hw, uint32_t share) {
   uint32_t diff = got > hw ? got - hw : hw - got;
-  int ok = diff * 16 <= hw;
+  int ok = diff * share <= hw;
   if (!ok) tty_printf("%s %u/%u: %u cycles, the console %u\n", what, a, b, got, hw);
   CHECK_EQ(what, ok, 1);
 }
@@ -84,10 +90,10 @@ static void gpu_blocks(void) {
   for (uint32_t i = 0; i < 65; ++i) {
     uint32_t bs = i < 64 ? i + 1 : 128;
     begin_upload(((WORDS / bs) << 16) | bs);
-    expect_close("sync mode 1 block size", bs, WORDS / bs, timed_start(DMA_GPU, 0x01000201), block_hw[i]);
+    expect_close("sync mode 1 block size", bs, WORDS / bs, timed_start(DMA_GPU, 0x01000201), block_hw[i], 16);
   }
   begin_upload(WORDS);
-  expect_close("sync mode 0 burst", WORDS, 1, timed_start(DMA_GPU, 0x01000001), BURST_HW);
+  expect_close("sync mode 0 burst", WORDS, 1, timed_start(DMA_GPU, 0x01000001), BURST_HW, 16);
 }
 
 static void gpu_chopping(void) {
@@ -96,8 +102,75 @@ static void gpu_chopping(void) {
       if (!chop_hw[d][c]) continue;
       begin_upload(WORDS);
       uint32_t t = timed_start(DMA_GPU, 0x01000101 | c << 20 | d << 16);
-      expect_close("chopping words/clocks", 1u << d, 1u << c, t, chop_hw[d][c]);
+      expect_close("chopping words/clocks", 1u << d, 1u << c, t, chop_hw[d][c], 32);
     }
+}
+
+/* ps1-tests dma/chain-looping on the console: a loop of 1000 read-modify-writes of a RAM word
+   took 16040 cycles alone, 16032 beside a complete list of two empty nodes, and 25632 and 25640
+   beside a list of one and of two empty nodes linked to each other, which never ends. The CPU's
+   own loop time is not this test's business (issue 59 item 5): each time is checked as a share
+   of this CPU's time alone, within 1/32 (the CPU's instruction under way when the controller takes
+   the bus finishes beside it; the console's two endless lists agree within 0.03%). */
+static volatile uint32_t work_sum;
+static volatile uint32_t chain[3]; /* stores the compiler must make before the CHCR write */
+
+static uint32_t timed_work(void) {
+  T_MODE(2) = 0; /* system clock */
+  T_COUNT(2) = 0;
+  work_sum = 0;
+  for (uint32_t i = 0; i < 1000; ++i) work_sum += i;
+  return T_COUNT(2);
+}
+
+static void start_list(uint32_t node) {
+  D_CHCR(DMA_GPU) = 0;
+  D_MADR(DMA_GPU) = node;
+  GPU_GP1 = 0x04000002; /* DMA direction CPU to GP0: the GPU requests */
+  DICR = 0x00840000;    /* channel 2's flag enabled, master enable */
+  D_CHCR(DMA_GPU) = 0x01000401;
+}
+
+static void stop_list(void) {
+  D_CHCR(DMA_GPU) = 0;
+  GPU_GP1 = 0x04000000;
+  DICR = 0x04000000; /* acknowledges channel 2's flag, enables off */
+}
+
+/* got/alone against hw/16040 within 1/32, cross-multiplied (all products stay below 2^32). */
+static void expect_share(const char *what, uint32_t got, uint32_t alone, uint32_t hw) {
+  uint32_t a = got * 16040u, b = hw * alone;
+  int ok = (a > b ? a - b : b - a) <= b / 32;
+  if (!ok) tty_printf("%s: %u cycles, %u alone; the console %u, 16040 alone\n", what, got, alone, hw);
+  CHECK_EQ(what, ok, 1);
+}
+
+static void endless_list(const char *what, uint32_t alone, uint32_t hw) {
+  start_list(PHYS(&chain[0]));
+  uint32_t t = timed_work();
+  CHECK_EQ("endless list still busy", (D_CHCR(DMA_GPU) & BUSY) != 0, 1);
+  CHECK_EQ("endless list no flag", (DICR >> 26) & 1, 0);
+  stop_list();
+  expect_share(what, t, alone, hw);
+}
+
+static void gpu_lists(void) {
+  (void)timed_work(); /* the loop into the instruction cache */
+  uint32_t alone = timed_work();
+  chain[0] = PHYS(&chain[1]);
+  chain[1] = 0x00FFFFFF;
+  start_list(PHYS(&chain[0]));
+  uint32_t t = timed_work();
+  CHECK_EQ("complete list finished", D_CHCR(DMA_GPU) & BUSY, 0);
+  CHECK_EQ("complete list flag", (DICR >> 26) & 1, 1);
+  stop_list();
+  expect_share("beside a complete list", t, alone, 16032);
+  chain[0] = PHYS(&chain[0]);
+  endless_list("beside one self-linked node", alone, 25632);
+  chain[0] = PHYS(&chain[1]);
+  chain[1] = PHYS(&chain[0]);
+  chain[2] = 0x00FFFFFF;
+  endless_list("beside two nodes linked to each other", alone, 25640);
 }
 
 /* 256 words in blocks of 16 to sound RAM: the CHCR write starts the first block, and the CPU
@@ -132,6 +205,7 @@ int main(void) {
   for (int i = 0; i < WORDS; ++i) pixels[i] = 0x7FFF0000u ^ (uint32_t)i * 0x9E3779B9u;
   gpu_blocks();
   gpu_chopping();
+  gpu_lists();
   spu_blocks();
   return test_done("dma_timing");
 }

@@ -101,6 +101,18 @@ TEST_F(DmaTest, OtcBuildsReversedList) {
   EXPECT_TRUE(dma_irq());
 }
 
+TEST_F(DmaTest, OtcWithoutTriggerNeverStarts) {
+  // ps1-tests dma/otc-test (testOtcWontStartOnAutomaticMode, passed by the console): CHCR
+  // 01000002h leaves the word in RAM as it was.
+  w(kDpcr, 0x08000000);
+  set_ram32(0x2000, 0x11111111);
+  w(reg(6, kMadr), 0x2000);
+  w(reg(6, kBcr), 1);
+  w(reg(6, kChcr), 0x01000002);
+  run_for(1000);
+  EXPECT_EQ(ram32(0x2000), 0x11111111u);
+}
+
 TEST_F(DmaTest, DisabledChannelWaitsForDpcr) {
   w(kDpcr, 0);
   w(reg(6, kMadr), 0x2000);
@@ -403,24 +415,30 @@ TEST_F(DmaTest, LinkedListTriggerForcesOneEmptyNodeOnly) {
   EXPECT_EQ(r(reg(2, kMadr)), 0x00FFFFFFu);
 }
 
-TEST_F(DmaTest, LinkedListOfEmptyNodesChargesEachHeader) {
-  // 100 empty nodes, then one of a word: 102 words at the GPU's 0110h clocks per 100h words
-  // (psx-spx), 102 * 272 / 256 = 108.375 -> 108 cycles.
+// Linked-list node costs (dma.cpp): a header holds the CPU 0x398/256 cycles, a node with words 5
+// more before them and the GPU's 0x110 clocks per 0x100 words; after a batch of 128 nodes the CPU
+// gets 6 cycles for each. 128 headers: 128 * 0x398 / 256 = 460 cycles held, then 768 for the CPU.
+TEST_F(DmaTest, LinkedListNodesHoldTheCpuInBatchesWithItsGapsBetween) {
+  // 300 empty nodes, then one with a word: batches of 128, 128 and 45 nodes. The last holds
+  // (45 * 0x398 + 5 * 256 + 0x110) / 256 = 167.8 cycles: 2 * (460 + 768) + 167 = 2623.
   w(kDpcr, 0x00000800);
-  for (u32 i = 0; i < 100; ++i) set_ram32(0x1000 + 4 * i, 0x1000 + 4 * (i + 1));
-  set_ram32(0x1000 + 400, 0x01FFFFFF);
-  set_ram32(0x1000 + 404, 0x44444444);
+  for (u32 i = 0; i < 300; ++i) set_ram32(0x1000 + 4 * i, 0x1000 + 4 * (i + 1));
+  set_ram32(0x1000 + 1200, 0x01FFFFFF);
+  set_ram32(0x1000 + 1204, 0x44444444);
   w(reg(2, kMadr), 0x1000);
   const Cycles t0 = sched.now();
   w(reg(2, kChcr), 0x01000401);
-  EXPECT_EQ(sched.now() - t0, 108u);
+  EXPECT_EQ(sched.now() - t0, 460u);
+  EXPECT_EQ(r(reg(2, kMadr)), 0x1000u + 4 * 128);
+  EXPECT_NE(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
+  while (r(reg(2, kChcr)) & Dma::kChcrBusy) run_for(1);
+  EXPECT_EQ(sched.now() - t0, 2623u);
   EXPECT_EQ(gpu.received, std::vector<u32>{0x44444444});
-  EXPECT_EQ(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
 }
 
 TEST_F(DmaTest, LinkedListOfEmptyNodesEndingWithAnEmptyOne) {
-  // 101 empty nodes, the last with the end marker: 101 * 272 / 256 = 107.3 -> 107 cycles, then
-  // the channel is done and its DICR flag set.
+  // 101 empty nodes, the last with the end marker, within one batch: 101 * 0x398 / 256 = 362.97
+  // -> 362 cycles inside the CHCR write; then the channel is done and its flag set.
   w(kDpcr, 0x00000800);
   w(kDicr, 0x00840000);  // channel 2's interrupt enabled, master enable
   for (u32 i = 0; i < 100; ++i) set_ram32(0x1000 + 4 * i, 0x1000 + 4 * (i + 1));
@@ -428,22 +446,26 @@ TEST_F(DmaTest, LinkedListOfEmptyNodesEndingWithAnEmptyOne) {
   w(reg(2, kMadr), 0x1000);
   const Cycles t0 = sched.now();
   w(reg(2, kChcr), 0x01000401);
-  EXPECT_EQ(sched.now() - t0, 107u);
-  EXPECT_TRUE(gpu.received.empty());
+  EXPECT_EQ(sched.now() - t0, 362u);
   EXPECT_EQ(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
+  EXPECT_TRUE(gpu.received.empty());
   EXPECT_EQ(r(reg(2, kMadr)), 0x00FFFFFFu);
   EXPECT_NE(r(kDicr) & (1u << 26), 0u);
 }
 
-TEST_F(DmaTest, EndlessListOfEmptyNodesYieldsAfterEachSlice) {
-  // An empty node pointing at itself: a slice walks 10000h header words (272 clocks per 256
-  // words: 69632 cycles) and the CHCR write returns with the channel still busy.
+TEST_F(DmaTest, EndlessListOfEmptyNodesGivesTheCpuItsShare) {
+  // An empty node pointing at itself runs until the CPU stops it. On the console a CPU loop took
+  // 25632 cycles beside such a list against 16040 alone (ps1-tests dma/chain-looping): time
+  // passes 1.598 times as fast as the CPU's own cycles (here one per run_for step).
   w(kDpcr, 0x00000800);
   set_ram32(0x100, 0x00000100);
   w(reg(2, kMadr), 0x100);
   const Cycles t0 = sched.now();
   w(reg(2, kChcr), 0x01000401);
-  EXPECT_EQ(sched.now() - t0, 0x10000u * 272 / 256);
+  EXPECT_EQ(sched.now() - t0, 460u);  // the CHCR write returns after the first batch
+  Cycles cpu = 0;
+  for (; cpu < 100 * 768 - 384; ++cpu) run_for(1);
+  EXPECT_NEAR(static_cast<double>(sched.now() - t0) / static_cast<double>(cpu), 25632.0 / 16040.0, 0.025);
   EXPECT_NE(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);
   EXPECT_EQ(r(reg(2, kMadr)), 0x100u);
 }
@@ -503,11 +525,11 @@ TEST_F(DmaTest, EndlessLinkedListDoesNotHangHost) {
   EXPECT_NE(r(reg(2, kChcr)) & Dma::kChcrBusy, 0u);  // still going: the write returned
   size_t first = gpu.received.size();
   EXPECT_GT(first, 0u);
-  run_for(10);
-  EXPECT_GT(gpu.received.size(), first);  // continues in later slices
+  run_for(800);
+  EXPECT_GT(gpu.received.size(), first);  // continues after the CPU's gap
   w(reg(2, kChcr), 0);                    // the CPU stops it
   size_t stopped = gpu.received.size();
-  run_for(10);
+  run_for(2000);
   EXPECT_EQ(gpu.received.size(), stopped);
 }
 

@@ -1,7 +1,8 @@
 // HLE kernel save states: the kernel's interrupt dispatch, events, pad and heap state all go
 // through do_state, so saving anywhere in a program that lives on kernel interrupt chains, events
 // and callbacks (tests/roms/bios_interrupts.c) and loading into a fresh console gives the same
-// result as not saving; the same for the file functions' handles.
+// result as not saving; the same for the file functions' handles and the asynchronous CD calls'
+// position.
 #include <gtest/gtest.h>
 
 #include "core/console.h"
@@ -72,6 +73,34 @@ TEST(HleBiosState, FileHandlesSurviveSaveAndLoad) {
     Outcome got = finish(b);
     EXPECT_EQ(got.exit_code, expected.exit_code) << "save point " << point << ": " << b.fatal_error();
     EXPECT_EQ(got.ram_hash, expected.ram_hash) << "save point " << point;
+  }
+}
+
+// The asynchronous CD calls' sector and mode (HLEK version 5) are kernel state: saving anywhere
+// in tests/roms/bios_misc.c (between CdAsyncSeekL and the reads that continue from it) and loading
+// into a fresh console ends as the uninterrupted run.
+TEST(HleBiosState, AsyncCdPositionSurvivesSaveAndLoad) {
+  const std::string program = PSXRL_BUILD_DIR "/tests/roms/bios_misc.exe";
+  const std::string disc = PSXRL_BUILD_DIR "/tests/roms/cdrom_test.cue";
+  auto boot = [&](Console& c) {
+    c.insert_disc(disc);
+    c.boot_exe(program);
+  };
+  Console ref;
+  boot(ref);
+  Outcome expected = finish(ref);
+  ASSERT_EQ(expected.exit_code, std::optional<u32>(0)) << ref.fatal_error();
+  for (Cycles point = 997; point < expected.cycles; point += expected.cycles / 16) {
+    Console a;
+    boot(a);
+    a.run_cycles(point);
+    if (a.stopped()) break;
+    std::vector<u8> blob = a.save_state();
+    Console b;
+    boot(b);
+    b.load_state(blob);
+    Outcome got = finish(b);
+    EXPECT_EQ(got.exit_code, expected.exit_code) << "save at cycle " << point << ": " << b.fatal_error();
   }
 }
 

@@ -41,9 +41,24 @@ TEST(MemoryControl, SixteenBitBusMatchesHardwareLog) {
   EXPECT_EQ(memory_read_cycles(0x00003022, kCom, 2), 6u);
   EXPECT_EQ(memory_read_cycles(0x00003022, kCom, 4), 10u);
   // SPU, 0x200931E1: read delay 14, COM0 (5), 16-bit bus. FIRST = 18. Log: 17.99, 17.99 (its
-  // 32-bit row is an unaligned LWL/LWR pair, not one word read).
+  // 32-bit row is an unaligned LWL/LWR pair, not one word read: below).
   EXPECT_EQ(memory_read_cycles(0x200931E1, kCom, 1), 18u);
   EXPECT_EQ(memory_read_cycles(0x200931E1, kCom, 2), 18u);
+}
+
+// LWL/LWR read only the bus units that hold the bytes they merge (Mednafen's cpu.cpp reads 8,
+// 16 or 24 bits for them): ps1-tests' 32-bit SPU row, an LWL at offset 1 and an LWR at offset 2
+// (bytes 0..1 and 2..3 of two words), costs 38.94 on the console, 18 + 18 and 3 cycles of the
+// accesses' tails (the CPU's, cpu.h kIoTail), where two whole-word reads would take 2 x 39.
+TEST(MemoryControl, PartialWordReadsTakeTheUnitsHoldingTheirBytes) {
+  EXPECT_EQ(memory_bus_units(0x200931E1, 0, 2), 1u);  // 16-bit bus: bytes 0..1, one halfword
+  EXPECT_EQ(memory_bus_units(0x200931E1, 2, 2), 1u);
+  EXPECT_EQ(memory_bus_units(0x200931E1, 1, 3), 2u);  // bytes 1..3 straddle both halfwords
+  EXPECT_EQ(memory_bus_units(0x200931E1, 3, 1), 1u);
+  EXPECT_EQ(memory_bus_units(0x0013243F, 0, 3), 3u);  // 8-bit bus: one unit a byte
+  EXPECT_EQ(memory_read_unit_cycles(0x200931E1, kCom, memory_bus_units(0x200931E1, 0, 2)), 18u);
+  EXPECT_EQ(memory_read_unit_cycles(0x200931E1, kCom, 2), 39u);  // FIRST 18 + SEQ 14 + 2 + 5
+  EXPECT_EQ(memory_read_unit_cycles(0x0013243F, kCom, 3), 19u);  // BIOS: 7 + 2 x 6
 }
 
 TEST(MemoryControl, Com3Minimum) {

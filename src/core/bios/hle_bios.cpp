@@ -16,6 +16,8 @@ constexpr u32 kJrRa = 0x03E00008, kSyscall = 0x0000000C;
 constexpr u32 kV0 = 2, kA0r = 4, kA1 = 5, kA2 = 6, kA3 = 7, kT1 = 9, kSp = 29, kRa = 31;
 constexpr u32 j(u32 target) { return 0x08000000 | ((target >> 2) & 0x03FFFFFF); }
 constexpr u32 li_t1(u32 v) { return 0x24090000 | v; }  // ADDIU t1, zero, v
+constexpr u32 lw(u32 rt, u32 offset, u32 base) { return 0x8C000000 | base << 21 | rt << 16 | offset; }
+constexpr u32 kS0 = 16, kGp = 28, kFp = 30;
 }  // namespace
 
 void HleBios::install() {
@@ -31,6 +33,12 @@ void HleBios::install() {
   for (u32 i = 0; i < 5; ++i) poke32(kDelayStub + 4 * i, delay[i]);
   const u32 boot[] = {0x1D00FFFF, 0x2508FFFF, 0x03400008, 0x00004021};  // bgtz t0,-1; ...; jr k0
   for (u32 i = 0; i < 4; ++i) poke32(kBootStub + 4 * i, boot[i]);
+  // Where Exec's program returns, s0 = its headerbuf: the caller's ra, sp, fp, gp and s0 back from
+  // it (s0 last, and not in the delay slot: the caller's first instruction may use s0, and a load
+  // lands one instruction late), v0 = 1 (hle_exec.cpp).
+  const u32 exec_return[7] = {lw(kRa, 0x34, kS0), lw(kSp, 0x28, kS0), lw(kFp, 0x2C, kS0), lw(kGp, 0x30, kS0),
+                              lw(kS0, 0x38, kS0), kJrRa, 0x24020001};
+  for (u32 i = 0; i < 7; ++i) poke32(kExecReturn + 4 * i, exec_return[i]);
   // ResetEntryInt's exit buffer: ra = ReturnFromException, sp = the exception stack, rest zero.
   for (u32 i = 0; i < 12; ++i) poke32(kDefaultExit + 4 * i, 0);
   poke32(kDefaultExit, kRfeStub);
@@ -71,6 +79,7 @@ void HleBios::install() {
   strtok_next_ = 0;
   conf_ = {kMaxEvents, kMaxThreads, 0x801FFF00};
   io_ = {};
+  io2_ = {};
   io_.files[0].device = io_.files[1].device = kDevTty;  // stdin and stdout, as Exec() leaves them
 }
 
@@ -138,7 +147,7 @@ void HleBios::unsupported(const char* table, u32 fn) {
 
 void HleBios::call_a0(u32 fn) {
   if (string_call(fn) || memory_fill_call(fn) || memory_call(kA0, fn) || io_call(kA0, fn) || tty_call(kA0, fn) ||
-      system_call(kA0, fn))
+      system_call(kA0, fn) || exec_call(fn) || null_call(kA0, fn))
     return;
   unsupported("A0h", fn);
 }
@@ -151,7 +160,7 @@ void HleBios::call_b0(u32 fn) {
 }
 
 void HleBios::call_c0(u32 fn) {
-  if (interrupt_call(kC0, fn)) return;
+  if (interrupt_call(kC0, fn) || card_call(kC0, fn) || system_call(kC0, fn) || null_call(kC0, fn)) return;
   unsupported("C0h", fn);
 }
 
@@ -191,8 +200,9 @@ bool HleBios::system_call(u32 table, u32 fn) {
     return_to_caller(0xFFFFFFFF);      // -1, the result for a code with no glyph
     return true;
   }
-  if (table != kA0) return false;
   const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1), a2 = cpu_.reg(kA2);
+  if (table == kC0) return kernel_setup_call(fn, a0, a1);
+  if (table != kA0) return false;
   constexpr u32 kGp0 = 0xBF801810, kGp1 = 0xBF801814;
   switch (fn) {
     case 0x44:  // FlushCache: invalidates the i-cache, so code loaded or patched in RAM runs
@@ -208,6 +218,7 @@ bool HleBios::system_call(u32 table, u32 fn) {
     case 0x4D: return_to_caller(io_read(kGp1, 4)); return true;
     case 0x4E: return_to_caller(0); return true;  // gpu_sync: commands complete at once here
     case 0x99: return_to_caller(0); return true;  // AddDummyTty: the TTY device is always there
+    case 0x9F: set_mem(a0); return_to_caller(0); return true;
     case 0x9C: conf_ = {a0, a1, a2}; return_to_caller(0); return true;  // SetConf
     case 0x9D:                                                          // GetConf
       poke32(a0, conf_[0]), poke32(a1, conf_[1]), poke32(a2, conf_[2]);
@@ -220,6 +231,38 @@ bool HleBios::system_call(u32 table, u32 fn) {
     }
     default: return false;
   }
+}
+
+// InstallExceptionHandlers C(07h) and SysInitMemory C(08h) (psx-spx "BIOS Internal Boot
+// Functions"): the kernel's exception vector at 80h again (the kernel's marker instead of the
+// BIOS's four opcodes; the BIOS's copy at 0h is not made, a jump to 0 is no kernel call here),
+// and the kernel heap's address and size.
+bool HleBios::kernel_setup_call(u32 fn, u32 a0, u32 a1) {
+  switch (fn) {
+    case 0x07:
+      poke32(kExceptionVector, kMarker);
+      poke32(kExceptionVector + 4, kJrRa);
+      poke32(kExceptionVector + 8, 0);
+      bus_.flush_icache();
+      return_to_caller(0);
+      return true;
+    case 0x08:
+      kernel_heap_ = {a0, a0 + a1};
+      poke32(a0, a1 - 4);
+      return_to_caller(0);
+      return true;
+    default: return false;
+  }
+}
+
+// SetMem(megabytes) A(9Fh): RAM_SIZE (1F801060h) bits 9-11 select 2 MB (4) or 8 MB (5) of
+// mapped RAM (psx-spx "Memory Control"), and the size goes to [60h]; other sizes change nothing.
+void HleBios::set_mem(u32 megabytes) {
+  constexpr u32 kRamSizeReg = 0xBF801060, kWindow = 7u << 9;
+  if (megabytes != 2 && megabytes != 8) return;
+  const u32 v = io_read(kRamSizeReg, 4);
+  io_write(kRamSizeReg, (v & ~kWindow) | (megabytes == 2 ? 4u : 5u) << 9, 4);
+  poke32(kRamSizeWord, megabytes);
 }
 
 u8 HleBios::peek8(u32 addr) const {
@@ -273,7 +316,7 @@ void HleBios::print(const std::string& s) {
 }
 
 void HleBios::do_state(StateIO& s) {
-  const u32 version = s.section("HLEK", 4, 2);
+  const u32 version = s.section("HLEK", 5, 2);
   if (version == 2) {
     load_v2_state(s);
   } else {
@@ -291,6 +334,7 @@ void HleBios::do_state(StateIO& s) {
   HleIoState boot_io;
   boot_io.files[0].device = boot_io.files[1].device = kDevTty;
   s.pod_since(version, 4, io_, boot_io);
+  s.pod_since(version, 5, io2_, HleIoState2{});  // version 5: card find mode, _card_chan, CdAsync*
   s.end_section("HLEK");
 }
 

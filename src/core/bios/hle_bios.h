@@ -9,33 +9,42 @@
 //       1Fh strrchr  20h strpbrk  21h strspn  22h strcspn  23h strtok  24h strstr  25h toupper
 //       26h tolower  27h bcopy  28h bzero  29h bcmp  2Ah memcpy  2Bh memset  2Ch memmove
 //       2Dh memcmp  2Eh memchr  2Fh rand  30h srand  33h malloc  34h free  37h calloc
-//       38h realloc  39h InitHeap  3Bh getchar  3Ch putchar  3Eh puts  3Fh printf  44h FlushCache
-//       48h SendGP1Command  49h GPU_cw  4Ah GPU_cwp  4Dh GetGPUStatus  4Eh gpu_sync
-//       54h/71h _96_init  55h/70h _bu_init  56h/72h _96_remove  95h CdInitSubFunc  99h AddDummyTty
-//       9Ch SetConf  9Dh GetConf  9Eh SetCdromIrqAutoAbort  A2h EnqueueCdIntr  A3h DequeueCdIntr
-//       A4h CdGetLbn  A5h CdReadSector  A6h CdGetStatus  ABh _card_info  ACh _card_load
-//       ADh _card_auto  AFh card_write_test  B4h GetSystemInfo
+//       38h realloc  39h InitHeap  3Bh getchar  3Ch putchar  3Dh gets  3Eh puts  3Fh printf
+//       41h LoadTest  42h Load  43h Exec  44h FlushCache
+//       48h SendGP1Command  49h GPU_cw  4Ah GPU_cwp  4Dh GetGPUStatus  4Eh gpu_sync  51h LoadExec
+//       54h/71h _96_init  55h/70h _bu_init  56h/72h _96_remove  78h CdAsyncSeekL
+//       7Ch CdAsyncGetStatus  7Eh CdAsyncReadSector  81h CdAsyncSetMode  95h CdInitSubFunc
+//       99h AddDummyTty  9Ch SetConf  9Dh GetConf  9Eh SetCdromIrqAutoAbort  9Fh SetMem  A0h _boot
+//       A2h EnqueueCdIntr  A3h DequeueCdIntr  A4h CdGetLbn  A5h CdReadSector  A6h CdGetStatus
+//       A7h-AAh, AEh bufs_cb_0-4  ABh _card_info  ACh _card_load  ADh _card_auto
+//       AFh card_write_test  B4h GetSystemInfo; psx-spx's "returns 0" entries 57h-5Ah, 73h-77h,
+//       79h-7Bh, 7Dh, 7Fh-80h, 82h-8Fh, B0h-B1h, B3h
 //   B0h:00h alloc_kernel_memory  01h free_kernel_memory  02h SetRCnt  03h GetRCnt  04h StartRCnt
 //       05h StopRCnt  06h ResetRCnt  07h DeliverEvent  08h OpenEvent  09h CloseEvent
 //       0Ah WaitEvent  0Bh TestEvent  0Ch EnableEvent  0Dh DisableEvent  0Eh OpenTh  0Fh CloseTh
 //       10h ChangeTh  12h InitPad  13h StartPad  14h StopPad  17h ReturnFromException
 //       18h ResetEntryInt (SetDefaultExitFromException)  19h HookEntryInt (SetCustomExitFrom-
 //       Exception)  20h UnDeliverEvent  32h-37h, 39h-3Ch as A0h:00h-05h, 07h-09h, 3Bh
-//       3Dh putchar  3Fh puts  40h cd  42h firstfile2  43h nextfile  45h erase  47h AddDevice
-//       48h RemoveDevice (both accepted, no effect)  4Ah InitCARD2  4Bh StartCARD2  4Ch StopCARD2
+//       3Dh putchar  3Eh gets  3Fh puts  40h cd  41h format  42h firstfile2  43h nextfile
+//       44h rename  45h erase  46h undelete  47h AddDevice  48h RemoveDevice (both accepted, no
+//       effect)  49h PrintInstalledDevices  4Ah InitCARD2  4Bh StartCARD2  4Ch StopCARD2
 //       4Dh _card_info_subfunc  4Eh _card_write  4Fh _card_read  50h _new_card
 //       51h Krom2RawAdd (always -1: no ROM font)  54h _get_errno  55h _get_error
-//       56h GetC0Table  57h GetB0Table  5Bh ChangeClearPad  5Ch _card_status  5Dh _card_wait
+//       56h GetC0Table  57h GetB0Table  58h _card_chan  5Bh ChangeClearPad  5Ch _card_status
+//       5Dh _card_wait
 //   C0h:00h EnqueueTimerAndVblankIrqs  01h EnqueueSyscallHandler  02h SysEnqIntRP
-//       03h SysDeqIntRP  0Ah ChangeClearRCnt  0Ch InitDefInt  0Dh SetIrqAutoAck
+//       03h SysDeqIntRP  07h InstallExceptionHandlers  08h SysInitMemory  0Ah ChangeClearRCnt
+//       0Ch InitDefInt  0Dh SetIrqAutoAck  1Ah set_card_find_mode  1Dh get_card_find_mode;
+//       "returns 0" entries 0Eh-11h, 14h
 //   SYSCALL a0=0 NoFunction, 1 EnterCriticalSection, 2 ExitCriticalSection, 3 ChangeThread-
 //       SubFunction; other values deliver event F0000010h/4000h
 // Files (hle_files.cpp): "tty:" (output to the host TTY, no input: getchar returns 0),
 // "cdrom:" (hle_cdfs.cpp: the disc's ISO 9660 files, sectors read from the image at once) and
 // "bu00:"/"bu10:" (hle_memcard.cpp: the emulated cards' directory and sectors, accessed at once,
-// completion events delivered before the call returns). Not supported (they stop the console):
-// Exec/LoadExec/_boot, gets, rename/undelete/format, the asynchronous CD calls (CdAsync*),
-// qsort/bsearch/lsearch (callbacks into comparison functions), and atof.
+// completion events delivered before the call returns). Executables (hle_exec.cpp) load from
+// cdrom:. Not supported (they stop the console): qsort/bsearch/lsearch (callbacks into
+// comparison functions), atof/strtod (they need the absent COP1), exit/_exit, and the BIOS's
+// internal device functions (A0h:5Bh-6Fh, 90h-98h) and kernel set-up calls not listed.
 //
 // Kernel RAM (psx-spx "BIOS Memory Map"), laid out at install(): the vectors at 80h (exception)
 // and A0h/B0h/C0h, the table of tables at 100h (ExCB, PCB, TCB, EvCB pointers and sizes), the
@@ -69,6 +78,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bios/exe.h"
 #include "core/bios/hle_io.h"
 #include "core/cpu/cpu.h"
 #include "core/scheduler.h"
@@ -135,6 +145,7 @@ class HleBios {
   static constexpr u32 kRamSizeWord = 0x80000060;
   static constexpr u32 kStubs = 0x80001000;        // one "j tail; li t1,fn" per table entry
   static constexpr u32 kStubTails = 0x80001B00;    // per table: jump to the KSEG1 vector
+  static constexpr u32 kExecReturn = 0x80001B40;   // where a program started by Exec returns to
   static constexpr u32 kKernelHeap = 0x8000A000, kKernelHeapEnd = 0x8000E000;
   static constexpr u32 kExceptionStack = 0x8000EFF0;
   static constexpr u32 kMaxEvents = 16;  // SYSTEM.CNF default "EVENT = 10" (hex)
@@ -162,6 +173,8 @@ class HleBios {
   void unsupported(const char* table, u32 fn);
   bool tty_call(u32 table, u32 fn);
   bool system_call(u32 table, u32 fn);
+  bool kernel_setup_call(u32 fn, u32 a0, u32 a1);
+  void set_mem(u32 megabytes);
 
   void load_v2_state(StateIO& s);
 
@@ -241,13 +254,35 @@ class HleBios {
   bool cd_read_blocks(u32 lba, u32 count, u32 dst);
   std::string cd_full_path(const std::string& path) const;
   std::vector<DirEntry> cd_entries(const std::string& dir);
+  u32 file_rename(u32 from_addr, u32 to_addr);
+  u32 file_undelete(u32 path_addr);
+  bool cd_async_call(u32 fn);
+  bool cd_sectors(u32 lba, u32 count, u32 size, std::vector<u8>& out);
+  bool cd_to_ram(u32 lba, u32 count, u32 size, u32 dst);
   bool card_call(u32 table, u32 fn);
+  bool card_call_a0(u32 fn);
+  bool card_call_b0(u32 fn);
+  u32 card_rename(u32 port, const std::string& from, const std::string& to);
+  u32 card_undelete(u32 port, const std::string& name);
+  u32 card_format(u32 port);
   u32 card_open(u32 port, const std::string& name, u32 mode, HleFile& f);
   u32 card_transfer(HleFile& f, u32 addr, u32 len, bool write);
   bool card_erase(u32 port, const std::string& name);
   std::vector<DirEntry> card_entries(u32 port);
   bool card_sector(u32 port, u32 sector, u32 addr, bool write);
   void card_deliver(u32 port, bool info);
+
+  // Executables (hle_exec.cpp).
+  bool exec_call(u32 fn);
+  u32 exe_load(u32 path_addr, u32 headerbuf, bool body);
+  bool read_exe(const std::string& path, PsxExe& exe, std::vector<u8>& header, std::string& error);
+  void copy_text(const PsxExe& exe);
+  void zero_fill(u32 addr, u32 size);
+  void exec(u32 headerbuf, u32 param1, u32 param2);
+  void load_exec(const std::string& path, u32 stack_base, u32 stack_offset);
+  void warm_boot();
+  void start(const PsxExe& exe, u32 sp, u32 param1, u32 param2);
+  bool null_call(u32 table, u32 fn);
 
   u8 peek8(u32 addr) const;
   u32 peek32(u32 addr) const;
@@ -280,6 +315,7 @@ class HleBios {
   std::array<u32, 3> conf_{};  // SetConf: EvCB count, TCB count, stack top
   std::set<u32> warned_;
   HleIoState io_;
+  HleIoState2 io2_;
 };
 
 }  // namespace psx

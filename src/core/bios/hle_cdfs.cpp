@@ -1,8 +1,10 @@
 // HLE kernel: the "cdrom:" device and the CD-ROM calls of table A0h (psx-spx "BIOS CDROM
 // Functions"): files found through the disc's ISO 9660 directories (disc/iso9660.h) and read in
-// whole 800h-byte sectors, CdGetLbn/CdReadSector/CdGetStatus, and the CD driver's set-up calls.
+// whole 800h-byte sectors, CdGetLbn/CdReadSector/CdGetStatus, the asynchronous CdAsyncSeekL/
+// GetStatus/ReadSector/SetMode, and the CD driver's set-up calls.
 // The sectors come straight from the disc image, not through the CD-ROM controller: a read
 // completes at once and leaves the controller's registers and the drive's head as they were.
+#include <algorithm>
 #include <cstring>
 
 #include "core/bios/hle_bios.h"
@@ -18,6 +20,12 @@ constexpr u32 kSector = disc::kDataSectorSize;
 // CdGetStatus's status byte (psx-spx "CDROM Controller Command Summary", stat): motor on, or
 // the shell open when the drive is empty.
 constexpr u32 kStatMotorOn = 0x02, kStatShellOpen = 0x10;
+constexpr u32 kRawAfterSync = 0x924, kRawAfterSubheader = 0x918;
+// The asynchronous calls' completion events (psx-spx "Event Summary", F0000003h CDROM hardware):
+// 20h = command complete, 8000h = error (here: no disc).
+constexpr u32 kCdEvent = 0xF0000003, kCdDone = 0x0020, kCdError = 0x8000;
+constexpr u32 kModeSize924 = 0x20, kModeSize918 = 0x10;  // Setmode bits 5 and 4
+u32 bcd(u8 v) { return (v >> 4) * 10 + (v & 0x0F); }
 
 // "cdrom:FILE" names the part after the device; a path may use '/' as well as '\'.
 std::string without_device(const std::string& s) {
@@ -70,20 +78,36 @@ u32 HleBios::cd_read(HleFile& f, u32 dst, u32 len) {
   return n;
 }
 
-// Copies the 800h user-data bytes of `count` logical blocks (Mode 1 or Mode 2 Form 1) to RAM.
-bool HleBios::cd_read_blocks(u32 lba, u32 count, u32 dst) {
+// Appends `count` logical blocks from `lba` to out, `size` bytes of each as the drive delivers
+// them (psx-spx "CDROM Controller Command Summary", Setmode bits 4-5): 800h = the user data of a
+// Mode 1 or Mode 2 Form 1 sector, 924h = all but the 12 sync bytes, 918h = all after the header
+// and subheader.
+bool HleBios::cd_sectors(u32 lba, u32 count, u32 size, std::vector<u8>& out) {
   disc::Disc* d = disc_in_drive ? disc_in_drive() : nullptr;
   if (!d) return false;
   disc::RawSector raw;
   for (u32 i = 0; i < count; ++i) {
     if (!d->read_sector(lba + i + disc::kLeadInSectors, raw)) return false;
-    const u8* data = raw.data() + (raw[15] == 1 ? disc::kMode1DataOffset : disc::kMode2DataOffset);
-    // The BIOS moves sectors by DMA, which reaches only RAM (and its mirrors).
-    const u32 at = dst + i * kSector;
-    if (Bus::physical(at) >= 0x00800000) return false;
-    for (u32 k = 0; k < kSector; ++k) bus_.ram()[Bus::physical(at + k) & (Bus::kRamSize - 1)] = data[k];
-    bus_.host_wrote_ram(Bus::physical(at) & (Bus::kRamSize - 1), kSector);
+    u32 from = size == kRawAfterSync ? 0x0C : size == kRawAfterSubheader ? 0x18
+               : raw[15] == 1 ? disc::kMode1DataOffset : disc::kMode2DataOffset;
+    out.insert(out.end(), raw.begin() + from, raw.begin() + from + size);
   }
+  return true;
+}
+
+// Copies the 800h user-data bytes of `count` logical blocks to RAM.
+bool HleBios::cd_read_blocks(u32 lba, u32 count, u32 dst) {
+  return cd_to_ram(lba, count, kSector, dst);
+}
+
+// Sectors to RAM; the BIOS moves them by DMA, which reaches only RAM (and its mirrors).
+bool HleBios::cd_to_ram(u32 lba, u32 count, u32 size, u32 dst) {
+  std::vector<u8> data;
+  if (Bus::physical(dst) >= 0x00800000 || count > Bus::kRamSize / size || !cd_sectors(lba, count, size, data))
+    return false;
+  for (u32 k = 0; k < data.size(); ++k) bus_.ram()[Bus::physical(dst + k) & (Bus::kRamSize - 1)] = data[k];
+  const u32 p = Bus::physical(dst) & (Bus::kRamSize - 1);
+  bus_.host_wrote_ram(p, std::min<u32>(static_cast<u32>(data.size()), Bus::kRamSize - p));
   return true;
 }
 
@@ -120,6 +144,10 @@ bool HleBios::cd_call(u32 fn) {
       return_to_caller(disc ? kStatMotorOn : kStatShellOpen);
       return true;
     }
+    case 0x78:
+    case 0x7C:
+    case 0x7E:
+    case 0x81: return cd_async_call(fn);
     // _96_init and its subfunction: the CD file system starts at the root directory again.
     case 0x54:
     case 0x71:
@@ -133,6 +161,34 @@ bool HleBios::cd_call(u32 fn) {
     case 0xA3: return_to_caller(0); return true;
     default: return false;
   }
+}
+
+// CdAsyncSeekL/GetStatus/ReadSector/SetMode (psx-spx "BIOS CDROM Functions"): the command's
+// effect at once, its completion event (F0000003h: 20h, or 8000h with no disc) delivered before
+// the call returns 1.
+bool HleBios::cd_async_call(u32 fn) {
+  const u32 a0 = cpu_.reg(kRegA0), a1 = cpu_.reg(kRegA1), a2 = cpu_.reg(kRegA2);
+  bool ok = disc_in_drive && disc_in_drive();
+  switch (fn) {
+    case 0x78:  // CdAsyncSeekL(src): MM, SS, FF in BCD; logical block = (MM*60+SS)*75+FF - 150
+      io2_.cd_seek_lba = (bcd(peek8(a0)) * 60 + bcd(peek8(a0 + 1))) * 75 + bcd(peek8(a0 + 2)) - 150;
+      break;
+    case 0x7C:  // CdAsyncGetStatus(dst): the status byte
+      poke8(a0, static_cast<u8>(ok ? kStatMotorOn : kStatShellOpen));
+      ok = true;
+      break;
+    case 0x7E: {  // CdAsyncReadSector(count, dst, mode): mode bits 0-7 are the Setmode byte
+      io2_.cd_mode = a2 & 0xFF;
+      const u32 size = (a2 & kModeSize918) ? kRawAfterSubheader : (a2 & kModeSize924) ? kRawAfterSync : kSector;
+      ok = ok && cd_to_ram(io2_.cd_seek_lba, a0, size, a1);
+      if (ok) io2_.cd_seek_lba += a0;
+      break;
+    }
+    default: io2_.cd_mode = a0 & 0xFF; break;  // CdAsyncSetMode(mode)
+  }
+  deliver_event(kCdEvent, ok ? kCdDone : kCdError);
+  return_after_events(1);
+  return true;
 }
 
 }  // namespace psx

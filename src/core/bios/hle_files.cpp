@@ -1,8 +1,9 @@
 // HLE kernel: the file functions (psx-spx "BIOS File Functions"): open/lseek/read/write/close,
-// getc/putc/getchar, cd, firstfile2/nextfile, erase, _get_errno/_get_error and the device table
-// calls, over three devices: "tty" (the console: output to the host TTY, no input), "cdrom"
-// (hle_cdfs.cpp) and "bu00"/"bu10", the memory cards (hle_memcard.cpp). Handles 0 and 1 start
-// open on the TTY, as the BIOS opens stdin/stdout before it starts a program.
+// getc/putc/getchar/gets, cd, firstfile2/nextfile, erase/rename/undelete/format, _get_errno/
+// _get_error and the device table calls, over three devices: "tty" (the console: output to the
+// host TTY, no input), "cdrom" (hle_cdfs.cpp) and "bu00"/"bu10", the memory cards
+// (hle_memcard.cpp). Handles 0 and 1 start open on the TTY, as the BIOS opens stdin/stdout
+// before it starts a program.
 #include "core/bios/hle_bios.h"
 
 #include <cctype>
@@ -132,6 +133,11 @@ bool HleBios::file_call(u32 fn) {
     case 0x3B:  // getchar: no TTY input reaches the console, so no character is waited for
       return_to_caller(0);
       return true;
+    case 0x3D:  // gets(dst): with no TTY input the line ends at once: empty, its LF echoed
+      poke8(a0, 0);
+      print("\n");
+      return_to_caller(a0);
+      return true;
     default: return false;
   }
 }
@@ -143,6 +149,7 @@ bool HleBios::file_call_b0(u32 fn) {
     case 0x3A: return file_call(0x08);
     case 0x3B: return file_call(0x09);
     case 0x3C: return file_call(0x3B);
+    case 0x3E: return file_call(0x3D);
     case 0x40: {  // cd(path): only cdrom: has directories; the path is not checked
       DevicePath d;
       bool ok = parse_device(read_string(a0), d) && d.device == kDevCdrom;
@@ -150,8 +157,22 @@ bool HleBios::file_call_b0(u32 fn) {
       return_to_caller(ok ? 1 : 0);
       return true;
     }
+    case 0x41: {  // format(device): memory cards only
+      DevicePath d;
+      u32 err = !parse_device(read_string(a0), d) ? kENoDev : d.device != kDevCard ? kEInval : card_format(d.port);
+      if (err) file_fail(nullptr, err);
+      return_to_caller(err ? 0 : 1);
+      return true;
+    }
     case 0x42: return_to_caller(first_file(a0, a1)); return true;
     case 0x43: return_to_caller(next_file(a0)); return true;
+    case 0x44:  // rename(old, new)
+    case 0x46: {  // undelete(path)
+      u32 err = fn == 0x44 ? file_rename(a0, a1) : file_undelete(a0);
+      if (err) file_fail(nullptr, err);
+      return_to_caller(err ? 0 : 1);
+      return true;
+    }
     case 0x45: {  // erase(path): memory cards only
       DevicePath d;
       bool ok = parse_device(read_string(a0), d) && d.device == kDevCard && card_erase(d.port, d.rest);
@@ -163,6 +184,10 @@ bool HleBios::file_call_b0(u32 fn) {
     // block is accepted but its functions are not called (the TTY stays the host's console).
     case 0x47:
     case 0x48: return_to_caller(1); return true;
+    case 0x49:  // PrintInstalledDevices: the short and long names of the devices
+      print("\ttty:\tCONSOLE\n\tcdrom:\tCD-ROM\n\tbu:\tMEMORY CARD\n");
+      return_to_caller(0);
+      return true;
     case 0x54: return_to_caller(io_.last_error); return true;  // _get_errno
     case 0x55: {                                                // _get_error(fd)
       HleFile* f = file_at(a0);
@@ -230,6 +255,23 @@ u32 HleBios::file_close(u32 fd) {
   if (!f) return file_fail(nullptr, kEBadF);
   *f = HleFile{};
   return fd;
+}
+
+// rename(old, new): both names on the same memory card (error 12h across devices); 0 or an
+// error number.
+u32 HleBios::file_rename(u32 from_addr, u32 to_addr) {
+  DevicePath from, to;
+  if (!parse_device(read_string(from_addr), from) || !parse_device(read_string(to_addr), to)) return kENoDev;
+  if (from.device != to.device || from.port != to.port) return kEXDev;
+  if (from.device != kDevCard) return kEInval;
+  return card_rename(from.port, from.rest, to.rest);
+}
+
+// undelete(path): a deleted memory card file; 0 or an error number.
+u32 HleBios::file_undelete(u32 path_addr) {
+  DevicePath d;
+  if (!parse_device(read_string(path_addr), d)) return kENoDev;
+  return d.device == kDevCard ? card_undelete(d.port, d.rest) : kEInval;
 }
 
 // firstfile2(path, direntry): the device and directory come from the path, the pattern from its

@@ -41,12 +41,23 @@ struct HleIoState {
   u32 result_stub = 0;                 // kernel code that sets v0 after event callbacks ran
 };
 
+// Added in save-state version 5 (kept apart so version 4 states still load): the memory card
+// find mode (C0h:1Ah), the port of the last low-level card access (_card_chan) and the
+// asynchronous CD calls' target sector and drive mode.
+struct HleIoState2 {
+  u32 card_find_mode = 0;  // 0: firstfile2/nextfile list files, 1: deleted files
+  u32 card_last_port = 0;  // 00h slot 1, 10h slot 2
+  u32 cd_seek_lba = 0;     // CdAsyncSeekL's sector
+  u32 cd_mode = 0;         // CdAsyncSetMode/CdAsyncReadSector's Setmode byte
+};
+
 // File error numbers (psx-spx "File Error Numbers for B(54h) and B(55h)").
 enum HleErrno : u32 {
   kENoEnt = 0x02,   // file not found
   kEBadF = 0x09,    // invalid or unused file handle
   kEIo = 0x10,      // general error (no disc, unformatted card)
   kEExist = 0x11,   // file already exists
+  kEXDev = 0x12,    // rename from one device to another
   kENoDev = 0x13,   // unknown device name
   kEInval = 0x16,   // sector alignment error, fpos >= filesize, unknown seek type
   kEMFile = 0x18,   // not enough free file handles

@@ -2,11 +2,13 @@
 // Format"): the "bu00:"/"bu10:" file device over the card's directory (frames 1-15 of block 0,
 // one per 8 KiB block: allocation state, file size, next block, name, XOR checksum) and the
 // low-level calls InitCARD2/StartCARD2/StopCARD2, _bu_init, _card_info/_card_load, _card_read/
-// _card_write, _new_card, _card_status/_card_wait, _card_auto and card_write_test. The kernel
-// reads and writes the emulated card's sectors directly (core/sio/memory_card.h), so every
-// access completes within the call; the events it would deliver on completion are delivered
-// before it returns: F0000011h (the hardware I/O) and, for _card_info and asynchronous file
-// reads/writes, F4000001h and the handle's own class (psx-spx "Event Summary").
+// _card_write, _new_card, _card_status/_card_wait, _card_auto, card_write_test, _card_chan, the
+// find mode and the bufs_cb_* callbacks, and the directory edits of rename, undelete and
+// format. The kernel reads and writes the emulated card's sectors directly
+// (core/sio/memory_card.h), so every access completes within the call; the events it would
+// deliver on completion are delivered before it returns: F0000011h (the hardware I/O) and, for
+// _card_info and asynchronous file reads/writes, F4000001h and the handle's own class (psx-spx
+// "Event Summary").
 #include <cstring>
 
 #include "core/bios/hle_bios.h"
@@ -15,13 +17,14 @@
 namespace psx {
 
 namespace {
-constexpr u32 kA0 = 0xA0;
+constexpr u32 kA0 = 0xA0, kC0 = 0xC0;
 constexpr u32 kRegA0 = 4, kRegA1 = 5, kRegA2 = 6;
 constexpr u32 kFrame = MemoryCard::kSectorSize;
 constexpr u32 kBlocks = 15, kFramesPerBlock = 64, kBlockBytes = kFrame * kFramesPerBlock;
 // Directory frame fields and allocation states.
 constexpr u32 kState = 0x00, kSize = 0x04, kNext = 0x08, kName = 0x0A, kNameLength = 20, kChecksum = 0x7F;
 constexpr u32 kFirst = 0x51, kMiddle = 0x52, kLast = 0x53, kFreeMask = 0xA0, kNoNext = 0xFFFF;
+constexpr u32 kDeleted = 0xA1 - kFirst;  // 51h-53h become A1h-A3h when erased
 constexpr u32 kCreate = 0x200, kAsync = 0x8000;  // open's access mode bits
 constexpr u32 kHwCard = 0xF0000011, kSwCard = 0xF4000001;
 constexpr u32 kDone = 0x0004, kTimeout = 0x0100, kNewCard = 0x2000;
@@ -51,20 +54,24 @@ Frame read_frame(const MemoryCard& card, u32 index) {
   return f;
 }
 
-void write_frame(MemoryCard& card, u32 index, Frame& f) {
+// Writes a block 0 sector with its XOR checksum in byte 7Fh.
+void write_sealed(MemoryCard& card, u32 sector, Frame& f) {
   u8 x = 0;
   for (u32 i = 0; i < kChecksum; ++i) x ^= f.b[i];
   f.b[kChecksum] = x;
-  card.write_sector(index + 1, f.b.data());
+  card.write_sector(sector, f.b.data());
 }
+
+void write_frame(MemoryCard& card, u32 index, Frame& f) { write_sealed(card, index + 1, f); }
 
 bool formatted(const MemoryCard& card) { return card.data()[0] == 'M' && card.data()[1] == 'C'; }
 
-// The directory index of the first block of the file whose name matches, or kBlocks.
-u32 find_file(const MemoryCard& card, const std::string& name) {
+// The directory index of the first block of the file whose name matches, or kBlocks: a file in
+// use (state 51h) or, for undelete and find mode 1, a deleted one (A1h).
+u32 find_file(const MemoryCard& card, const std::string& name, u32 state = kFirst) {
   for (u32 i = 0; i < kBlocks; ++i) {
     Frame f = read_frame(card, i);
-    if (f.state() == kFirst && !f.name().empty() && hle_name_matches(f.name(), name)) return i;
+    if (f.state() == state && !f.name().empty() && hle_name_matches(f.name(), name)) return i;
   }
   return kBlocks;
 }
@@ -132,7 +139,7 @@ bool HleBios::card_erase(u32 port, const std::string& name) {
   if (block == kBlocks) return false;
   for (u32 guard = 0; block < kBlocks && guard < kBlocks; ++guard) {
     Frame f = read_frame(*card, block);
-    f.set32(kState, f.state() - kFirst + 0xA1);
+    f.set32(kState, f.state() + kDeleted);
     write_frame(*card, block, f);
     block = f.next();
   }
@@ -140,17 +147,81 @@ bool HleBios::card_erase(u32 port, const std::string& name) {
 }
 
 // firstfile2/nextfile on a card: files in directory order, attribute 50h, the first sector of
-// the file's first block.
+// the file's first block; in find mode 1 (C0h:1Ah) the deleted files instead, attribute A0h.
 std::vector<HleBios::DirEntry> HleBios::card_entries(u32 port) {
   std::vector<DirEntry> out;
   MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
   if (!card || !formatted(*card)) return out;
+  const u32 state = io2_.card_find_mode ? kFirst + kDeleted : kFirst;
   for (u32 i = 0; i < kBlocks; ++i) {
     Frame f = read_frame(*card, i);
-    if (f.state() == kFirst && !f.name().empty())
+    if (f.state() == state && !f.name().empty())
       out.push_back({f.name(), f.state() & 0xF0, f.size(), (i + 1) * kFramesPerBlock});
   }
   return out;
+}
+
+// rename on a card: the file's first directory frame gets the new name (psx-spx "rename"); the
+// new name must not be in use.
+u32 HleBios::card_rename(u32 port, const std::string& from, const std::string& to) {
+  MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
+  if (!card || !formatted(*card)) return kEIo;
+  if (find_file(*card, to) != kBlocks) return kEExist;
+  const u32 block = find_file(*card, from);
+  if (block == kBlocks) return kENoEnt;
+  Frame f = read_frame(*card, block);
+  for (u32 i = 0; i < kNameLength; ++i) f.b[kName + i] = i < to.size() ? static_cast<u8>(to[i]) : 0;
+  write_frame(*card, block, f);
+  return 0;
+}
+
+// undelete: a deleted file's blocks (A1h-A3h along its chain) are in use again (51h-53h), unless
+// a block was reused since or a file of that name exists.
+u32 HleBios::card_undelete(u32 port, const std::string& name) {
+  MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
+  if (!card || !formatted(*card)) return kEIo;
+  const u32 first = find_file(*card, name, kFirst + kDeleted);
+  if (first == kBlocks) return kENoEnt;
+  if (find_file(*card, read_frame(*card, first).name()) != kBlocks) return kEExist;
+  std::vector<u32> chain;
+  for (u32 b = first; b < kBlocks && chain.size() < kBlocks; b = read_frame(*card, b).next()) {
+    const u32 state = read_frame(*card, b).state();
+    if (state < kFirst + kDeleted || state > kLast + kDeleted) return kENoEnt;
+    chain.push_back(b);
+  }
+  for (u32 b : chain) {
+    Frame f = read_frame(*card, b);
+    f.set32(kState, f.state() - kDeleted);
+    write_frame(*card, b, f);
+  }
+  return 0;
+}
+
+// format: block 0 as a freshly formatted card holds it (psx-spx "Memory Card Data Format"): the
+// "MC" header, 15 free directory frames (A0h, no next block), an empty broken sector list
+// (FFFFFFFFh), FFh-filled replacement and unused frames, and the write test frame = the header.
+// The file blocks keep their data.
+u32 HleBios::card_format(u32 port) {
+  MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
+  if (!card) return kEIo;
+  constexpr u32 kReplacement = 36, kWriteTest = 63;  // frames 16-35 are the broken sector list
+  for (u32 sector = 0; sector < kFramesPerBlock; ++sector) {
+    Frame f;
+    if (sector == 0 || sector == kWriteTest) {
+      f.b[0] = 'M', f.b[1] = 'C';
+    } else if (sector <= kBlocks) {
+      f.set32(kState, kFreeMask);
+      f.b[kNext] = f.b[kNext + 1] = 0xFF;
+    } else if (sector < kReplacement) {
+      f.set32(0, 0xFFFFFFFF);
+    } else {
+      f.b.fill(0xFF);
+      card->write_sector(sector, f.b.data());
+      continue;
+    }
+    write_sealed(*card, sector, f);
+  }
+  return 0;
 }
 
 // One raw sector between RAM and the card; false when the slot is empty.
@@ -173,33 +244,56 @@ void HleBios::card_deliver(u32 port, bool info) {
   MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
   u32 spec = !card ? kTimeout : info && (card->flag() & MemoryCard::kFlagFresh) ? kNewCard : kDone;
   io_.card_status[port] = card ? kStatusReady : kStatusNoCard;
+  io2_.card_last_port = port << 4;
   deliver_event(kHwCard, spec);
   if (info) deliver_event(kSwCard, spec);
 }
 
 bool HleBios::card_call(u32 table, u32 fn) {
-  const u32 a0 = cpu_.reg(kRegA0), a1 = cpu_.reg(kRegA1), a2 = cpu_.reg(kRegA2);
-  const u32 port = (a0 >> 4) & 1;  // a "port" argument is 00h (slot 1) or 10h (slot 2)
-  if (table == kA0) {
+  const u32 a0 = cpu_.reg(kRegA0);
+  if (table == kC0) {
     switch (fn) {
-      case 0x55:
-      case 0x70: return_to_caller(0); return true;  // _bu_init: the directory is read on use
-      case 0xAB:                                     // _card_info(port)
-      case 0xAC:                                     // _card_load(port)
-        card_deliver(port, true);
-        return_after_events(1);
-        return true;
-      case 0xAD: io_.card_auto_format = a0; return_to_caller(0); return true;  // _card_auto
-      case 0xAF: {  // card_write_test(port): rewrites sector 3Fh, which clears the new-card flag
-        MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
-        if (card) card->write_sector(0x3F, &card->data()[0x3F * kFrame]);
-        card_deliver(port, false);
-        return_after_events(1);
-        return true;
-      }
+      case 0x1A: io2_.card_find_mode = a0 & 1; return_to_caller(0); return true;  // set_card_find_mode
+      case 0x1D: return_to_caller(io2_.card_find_mode); return true;             // get_card_find_mode
       default: return false;
     }
   }
+  return table == kA0 ? card_call_a0(fn) : card_call_b0(fn);
+}
+
+// A "port" argument is 00h (slot 1) or 10h (slot 2).
+bool HleBios::card_call_a0(u32 fn) {
+  const u32 a0 = cpu_.reg(kRegA0), port = (a0 >> 4) & 1;
+  switch (fn) {
+    case 0x55:
+    case 0x70: return_to_caller(0); return true;  // _bu_init: the directory is read on use
+    case 0xAB:                                     // _card_info(port)
+    case 0xAC:                                     // _card_load(port)
+      card_deliver(port, true);
+      return_after_events(1);
+      return true;
+    case 0xAD: io_.card_auto_format = a0; return_to_caller(0); return true;  // _card_auto
+    // bufs_cb_0..4: the card driver's completion callbacks move the file functions' pending
+    // access along; every access here completes inside its call, so none is pending and they
+    // do nothing (as a BIOS's do with no operation under way).
+    case 0xA7:
+    case 0xA8:
+    case 0xA9:
+    case 0xAA:
+    case 0xAE: return_to_caller(0); return true;
+    case 0xAF: {  // card_write_test(port): rewrites sector 3Fh, which clears the new-card flag
+      MemoryCard* card = card_at ? card_at(static_cast<int>(port)) : nullptr;
+      if (card) card->write_sector(0x3F, &card->data()[0x3F * kFrame]);
+      card_deliver(port, false);
+      return_after_events(1);
+      return true;
+    }
+    default: return false;
+  }
+}
+
+bool HleBios::card_call_b0(u32 fn) {
+  const u32 a0 = cpu_.reg(kRegA0), a1 = cpu_.reg(kRegA1), a2 = cpu_.reg(kRegA2), port = (a0 >> 4) & 1;
   switch (fn) {
     case 0x4A: {  // InitCARD2(pad_enable): returns whether it ran before
       u32 before = io_.card_status[0] != 0;
@@ -222,6 +316,7 @@ bool HleBios::card_call(u32 table, u32 fn) {
       return true;
     }
     case 0x50: return_to_caller(0); return true;  // _new_card: the new-card flag never blocks here
+    case 0x58: return_to_caller(io2_.card_last_port); return true;  // _card_chan: 00h/10h
     case 0x5C:                                    // _card_status(slot)
     case 0x5D:                                    // _card_wait(slot): nothing is ever busy
       return_to_caller(io_.card_status[a0 & 1] ? io_.card_status[a0 & 1] : kStatusReady);

@@ -163,7 +163,13 @@ class CpuT {
   // Load shadow (the comment at kLoadIssue). timed_read makes a load's bus read and charges its
   // time; wait_load holds another memory access until a load in flight is done; shadow_stall
   // holds an instruction that reads the register a load in flight is bringing.
-  bool timed_read(u32 addr, u32 width, u32 rt, u32& v);
+  // `first` and `count`: the bytes of the word LWL/LWR merge (Bus::read_merged()).
+  bool timed_read(u32 addr, u32 width, u32 rt, u32& v, u32 first = 0, u32 count = 4);
+  // The bus-access tail of a load through the bus interface (the comment at kIoTail), set once
+  // its read is made: load_done_at_ as a RAM load's shadow leaves it.
+  void io_tail(u32 addr);
+  // Whether the instruction at vaddr meets such a tail: its fetch goes to memory or it is a load.
+  bool meets_tail(u32 vaddr) const;
   void wait_load() {
     if (sched_.now() < load_done_at_) sched_.advance(load_done_at_ - sched_.now());
   }
@@ -220,6 +226,25 @@ class CpuT {
   // running from ROM) and other regions keep the synchronous read times of Bus::read, and stores
   // never wait (the write queue).
   static constexpr Cycles kLoadIssue = 2, kLoadBus = 6;
+  // Loads through the bus interface (I/O ports, SPU, CD-ROM, expansion, BIOS ROM) made by cached
+  // code, after pcsx-redux's hardware-checked src/mips/tests/load-timings: 32 loads from I_STAT,
+  // each followed by s nops, cost 164, 196, 228, 228, 228, 260, 292, 324 cycles for s = 0..7
+  // (32 per-load costs, and 4 for the test's two counter reads). The read takes its region's
+  // time (Bus::read(): 2 cycles past the issue for an on-chip port), then the access holds the
+  // bus kIoTail cycles more, which the third and fourth instructions after the load hide, one
+  // each; the next load or fetch from memory meets what is left of it, the whole kIoTail as the
+  // first or second instruction after the load. In the load-shadow terms above, io_tail() ends
+  // the access kIoTail + 3 cycles after the read, or kIoTail + 1 (+ 2) when the first (second)
+  // instruction meets it. Worked through, per load: lw;lw 1 + 2 + 2 = 5; lw + 1 nop 6; + 2 nops
+  // 3 + 2 + 2 = 7; + 3 nops 3 + 3 + 1 = 7 (the third nop hides a cycle); + 4 nops 7; + 5 nops 8.
+  // ps1-tests cpu/access-time's loop (load, bnez, nop, nop, addiu) hides the tail: 3 a load from
+  // a port, as on the console; its 32-bit SPU read, an LWL+LWR pair 2 instructions apart, is two
+  // 16-bit reads (18 each, Bus::read_merged()) and the tail met whole, then in part: 39, as on
+  // the console. A reader of the loaded register does not wait for the tail: load-timings has a
+  // reader 2nd or 3rd cost 2 cycles more, but ps1-tests' timers program (a counter read with a
+  // reader 2nd costs no more than its issue cycle) and dma/chopping (its poll loop, a reader 2nd,
+  // as rom.dma_timing's fit has it) side against that (docs/fidelity.md).
+  static constexpr Cycles kIoTail = 2;
   Cycles load_done_at_ = 0;  // when the last shadowed load's RAM access ends
   u32 shadow_reg_ = 0;       // its destination register, until an instruction waits for it or
                              // sees the access ended (0 then: nothing left to check)

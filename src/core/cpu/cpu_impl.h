@@ -202,7 +202,7 @@ void CpuT<BusT>::wait_gte() {
 
 // A load's bus read and its time (the load-shadow model at CpuT::kLoadIssue).
 template <class BusT>
-bool CpuT<BusT>::timed_read(u32 addr, u32 width, u32 rt, u32& v) {
+bool CpuT<BusT>::timed_read(u32 addr, u32 width, u32 rt, u32& v, u32 first, u32 count) {
   if constexpr (kLoadShadow) {
     if (BusT::physical(addr) < 0x00800000 && bus_.cached_code(current_pc_)) {
       const Cycles issue_end = sched_.now() - 1 + kLoadIssue;
@@ -214,8 +214,43 @@ bool CpuT<BusT>::timed_read(u32 addr, u32 width, u32 rt, u32& v) {
       return bus_.read_ram_untimed(addr, v, width);
     }
     wait_load();
+    if (count != 4) {
+      if (!bus_.read_merged(addr, v, first, count)) return false;
+      io_tail(addr);
+      return true;
+    }
   }
-  return width == 4 ? bus_.read32(addr, v) : width == 2 ? bus_.read16(addr, v) : bus_.read8(addr, v);
+  const bool ok = width == 4 ? bus_.read32(addr, v) : width == 2 ? bus_.read16(addr, v) : bus_.read8(addr, v);
+  if constexpr (kLoadShadow) {
+    if (ok) io_tail(addr);
+  }
+  return ok;
+}
+
+// Called with the read made (the time at the next instruction's start) and the pc at the next
+// instruction: the tail's end as the comment at kIoTail says, from the next two instructions
+// (the second follows the first in memory, also as a branch's delay slot). Only memory accesses
+// wait for it (wait_load(), a fetch's busy_until), as shadow_reg_ stays clear.
+template <class BusT>
+void CpuT<BusT>::io_tail(u32 addr) {
+  if constexpr (kLoadShadow) {
+    if (!BusT::bus_load(addr) || !bus_.cached_code(current_pc_)) return;
+    const Cycles now = sched_.now();
+    load_done_at_ = meets_tail(pc_) ? now + kIoTail + 1 : meets_tail(pc_ + 4) ? now + kIoTail + 2 : now + kIoTail + 3;
+    shadow_reg_ = 0;  // a reader of rt does not wait (the comment at kIoTail)
+  }
+}
+
+template <class BusT>
+bool CpuT<BusT>::meets_tail(u32 vaddr) const {
+  if constexpr (kLoadShadow) {
+    u32 w;
+    if (bus_.fetch_misses(vaddr)) return true;
+    if (!bus_.peek_code(vaddr, w)) return false;
+    const u32 op = w >> 26;
+    return (op >= 0x20 && op <= 0x26) || op == 0x32;  // LB..LWR, LWC2
+  }
+  return false;
 }
 
 // An instruction (its cycle already counted) that reads the register a load in flight brings
@@ -268,7 +303,8 @@ void CpuT<BusT>::load_unaligned(u32 instr, bool left) {
   }
   const u32 off = addr & 3;
   u32 word;
-  if (!timed_read(addr & ~3u, 4, rt(instr), word)) {
+  // LWL merges the word's bytes 0..off, LWR its bytes off..3.
+  if (!timed_read(addr & ~3u, 4, rt(instr), word, left ? 0 : off, left ? off + 1 : 4 - off)) {
     exception(Exception::BusData);
     return;
   }

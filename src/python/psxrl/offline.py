@@ -10,21 +10,32 @@ each level's start, giving the observations, rewards and flags a policy would ha
 deterministic, so the environment's episode ends as the session's did (``psxrl record``'s clock is
 the only difference: the player's pauses between moves are not replayed).
 
+A policy trained by ``psxrl train`` lives in its run folder, and only the C++ player can run it:
+``policy_episodes`` has ``psxrl play --rollout`` play it greedily and replays each episode's moves
+here, in an environment of the run's observation, checking every reward against the player's.
+
 Minari is not a dependency of psxrl: ``write_dataset`` imports it (scripts/setup.sh installs it in
-.venv-sb3).
+.venv-sb3). ``python -m psxrl.offline`` exports from the command line (``--help``).
 """
+import argparse
+import json
 import os
+import subprocess
+import sys
+import tempfile
 import tomllib
 from pathlib import Path
 
 def _games_dir(games_dir):
-    from . import _PACKAGED_GAMES
+    """The folder an Env finds the integration in: an installed module's psxrl/games, else (a module
+    of the build tree) $PSXRL_GAMES or the source tree's games/."""
+    from . import _PACKAGED_GAMES, _psxrl
 
     if games_dir is not None:
         return Path(games_dir)
-    if "PSXRL_GAMES" in os.environ:
-        return Path(os.environ["PSXRL_GAMES"])
-    return _PACKAGED_GAMES
+    if "PSXRL_GAMES" not in os.environ and _PACKAGED_GAMES.is_dir():
+        return _PACKAGED_GAMES
+    return Path(_psxrl.default_games_dir())
 
 
 def _addresses(game, games_dir):
@@ -120,6 +131,52 @@ def rollouts(policy, episodes, level=1, seed=0, game="tumble", **env_config):
     return env, out
 
 
+def _run_config(run_dir):
+    """The run's settings (config.json of psxrl train: every value is text)."""
+    path = Path(run_dir) / "config.json"
+    try:
+        return json.loads(path.read_text())
+    except FileNotFoundError:
+        raise ValueError(f"{run_dir}: not a psxrl train run folder (no config.json)") from None
+
+
+def policy_episodes(run_dir, episodes, seed=0, level=None, max_moves=None, exe=None):
+    """``episodes`` greedy episodes of the policy that ``psxrl train`` saved in ``run_dir``: played
+    by ``psxrl play --rollout`` (episode seeds from ``seed`` as play derives them, each from the
+    run's start position) and replayed in an Env of the run's game, observation, reward, gamma and
+    picture settings. Returns ``(env, episodes, lines)``: Minari buffers with each episode's final
+    info, and play's own records. Raises RuntimeError if a replayed reward differs from play's."""
+    from . import Env
+    from .executable import find_executable
+
+    config = _run_config(run_dir)
+    level = int(config["level"]) if level is None else level
+    with tempfile.TemporaryDirectory(prefix="psxrl-rollout-") as tmp:
+        rollout = Path(tmp) / "rollout.jsonl"
+        command = [exe or find_executable(), "play", "--policy", str(run_dir), "--headless", "--episodes",
+                   str(episodes), "--seed", str(seed), "--level", str(level), "--rollout", str(rollout)]
+        if max_moves is not None:
+            command += ["--max-moves", str(max_moves)]
+        done = subprocess.run(command, capture_output=True, text=True)
+        if done.returncode != 0:
+            raise RuntimeError(f"psxrl play exited with {done.returncode}: {done.stderr.strip()}")
+        lines = [json.loads(line) for line in rollout.read_text().splitlines()]
+    env_config = {"obs": config["obs"], "reward": config["reward"], "gamma": float(config["gamma"]),
+                  "visual_gray": config.get("visual_gray") == "true"}
+    if max_moves is not None:
+        env_config["max_moves"] = max_moves
+    env = Env(game=config["game"], **env_config)
+    out = []
+    for line in lines:
+        first, _ = env.reset(line["level"], line["seed"], start=",".join(map(str, line["start"])))
+        buffer, info = _episode(env, first, line["actions"])
+        if buffer["rewards"] != line["rewards"]:
+            raise RuntimeError(f"episode {line['episode']}: the replay's rewards {buffer['rewards']} differ from "
+                               f"psxrl play's {line['rewards']}")
+        out.append((buffer, info))
+    return env, out, lines
+
+
 def write_dataset(dataset_id, env, episodes, description="", **metadata):
     """A Minari dataset of ``episodes`` (buffers as ``rollouts`` and ``session_episodes`` return
     them) with ``env``'s observation and action spaces; returns it (minari.load_dataset(dataset_id)
@@ -137,3 +194,47 @@ def write_dataset(dataset_id, env, episodes, description="", **metadata):
         dataset_id=dataset_id, buffer=buffers, observation_space=observation_space(env.observation_spaces),
         action_space=spaces.Discrete(env.action_count), algorithm_name=metadata.pop("algorithm_name", None),
         description=description or f"psxrl {env.game}, observation {env.obs}", author="psxrl", **metadata)
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # psxrl's exit code for a usage error
+        self.print_usage(sys.stderr)
+        self.exit(1, f"{self.prog}: {message}\n")
+
+
+def main(argv=None):
+    p = _Parser(prog="python -m psxrl.offline", description="Exports play as a Minari dataset "
+                                "(docs/offline.md); exit codes: 0 written, 1 usage error, 2 bad input.")
+    sub = p.add_subparsers(dest="command", required=True)
+    pol = sub.add_parser("export-policy", help="greedy episodes of a psxrl train run's saved policy")
+    pol.add_argument("run", help="the run folder (config.json, checkpoint.psxrl)")
+    pol.add_argument("--episodes", type=int, default=10, help="episodes to play (default 10)")
+    pol.add_argument("--seed", type=int, default=0, help="seed of the episodes (default 0)")
+    pol.add_argument("--level", type=int, help="level (default: the run's)")
+    pol.add_argument("--max-moves", type=int, help="move cap per episode (default: the game's)")
+    ses = sub.add_parser("export-session", help="a session recorded by psxrl record")
+    ses.add_argument("session", help="the session folder")
+    ses.add_argument("--obs", default="local", help="observation (default local)")
+    for s in (pol, ses):
+        s.add_argument("--dataset", required=True, help="Minari dataset id, e.g. psxrl/tumble-level1-v0")
+    a = p.parse_args(argv)
+    try:
+        if a.command == "export-policy":
+            env, episodes, _ = policy_episodes(a.run, a.episodes, a.seed, a.level, a.max_moves)
+            source, algorithm = f"psxrl play --policy {a.run}", "psxrl train --agent " + _run_config(a.run)["agent"]
+        else:
+            env, episodes = session_episodes(a.session, obs=a.obs)
+            source, algorithm = f"the session {a.session}", "recorded play"
+        data = write_dataset(a.dataset, env, episodes, description=f"psxrl {env.game}, observation {env.obs}, "
+                             f"from {source}", algorithm_name=algorithm)
+    except (ValueError, RuntimeError, OSError) as e:
+        print(f"python -m psxrl.offline: {e}", file=sys.stderr)
+        return 2
+    rewards = [sum(b["rewards"]) for b, _ in episodes]
+    print(f"{a.dataset}: {data.total_episodes} episodes, {data.total_steps} steps, observation {env.obs}, "
+          f"episode rewards {min(rewards):.4g} to {max(rewards):.4g}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

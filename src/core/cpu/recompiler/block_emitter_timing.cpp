@@ -130,29 +130,21 @@ bool Impl::has_stall(const Step& s, Shadow shadow, u32 shadowed) {
 
 // Segment::shadow and Segment::shadowed for a segment's instructions; `reach`: instructions
 // since the last that may have left a load shadowed, this one included (kLoadIssue + kLoadBus - 1).
-// An instruction that waits for the segment's last load (shadow_known(): it reads the load's rt
-// outside a load delay slot of that register) leaves the shadow clear and the time at the
-// access's end: the instructions after it, up to and including the next load, check nothing.
+// Instructions after one that waits for the segment's last load (shadow_known()) still check:
+// that load's address may have gone through the bus interface, whose tail no reader waits for.
 void Impl::plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>& shadow,
                        std::vector<u32>& shadowed) {
   shadow.resize(run.size());
   shadowed.assign(run.size(), Segment::kUnknownShadow);
-  bool waited = false;
   bool known = false;  // run[last] is a load whose shadow native code knows (not an I/O load)
   for (size_t k = 0, since = 1, last = 0; k < run.size(); ++k) {
-    shadow[k] = waited || since > reach ? Shadow::none : since < reach ? Shadow::check : Shadow::clear;
-    if (shadow[k] == Shadow::check && known && k - last < reach) {
-      const u32 r = cpu_detail::rt(run[last].word);
-      shadowed[k] = r;
-      const bool delay_slot = is_delayed(run[k - 1].native) && cpu_detail::rt(run[k - 1].word) == r;
-      waited = waits_for_load(run[k], r, delay_slot);
-    }
+    shadow[k] = since > reach ? Shadow::none : since < reach ? Shadow::check : Shadow::clear;
+    if (shadow[k] == Shadow::check && known && k - last < reach) shadowed[k] = cpu_detail::rt(run[last].word);
     if (is_load(run[k].native)) {
-      // An I/O load leaves the shadow as it was, its access over (wait_load()); but its call
+      // An I/O load leaves its bus tail with the shadow clear (CpuT::io_tail()); but its call
       // for another address (its fallback) may be a RAM load's, shadowing rt: checked at run time.
       known = run[k].io == 0;
       last = k;
-      waited = false;
     }
     since = is_load(run[k].native) ? 1 : since + 1;
   }
@@ -194,7 +186,9 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
 // and within reach. Every load waits for the access before it (timed_read(): wait_load(), or
 // its own access starting after that one's end), so either the access in flight is that
 // load's, with shadow_reg_ = r, or it has ended (now >= load_done_at_), and then the check
-// clears shadow_reg_ whatever it holds. Which one is decided at run time, but whether s waits
+// clears shadow_reg_ whatever it holds; or the load's address, not the guessed one, went through
+// the bus interface (CpuT::io_tail()), whose tail leaves shadow_reg_ clear: no reader waits for
+// it, so the wait tests shadow_reg_. Which one is decided at run time, but whether s waits
 // is known now: when it reads r outside r's load delay slot. No stub and no register compare:
 // a waiting instruction moves time to the access's end (no earlier than now) and clears.
 // Where s does not wait, the check only clears shadow_reg_, and only the segment's `last`
@@ -206,9 +200,13 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
 void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last) {
   if (waits_for_load(s, r, pipe.after_load && pipe.load_reg == r)) {
     settle();
+    Label clear;
+    cmp(cpu32(lay.shadow_reg), 0);  // the load went through the bus interface: no reader waits
+    je(clear);
     mov(rcx, cpu64(lay.load_done_at));
     cmp(now, rcx);
     cmovb(now, rcx);
+    L(clear);
     mov(cpu32(lay.shadow_reg), 0);
     return;
   }

@@ -139,14 +139,15 @@ void RecompilerT<BusT>::load_call(Cpu& c, u32 i) {
 }
 
 // What CpuT::load() does past its checks for an I/O port: timed_read() waits for a load in
-// flight (an access outside RAM does not overlap one) and reads the port; the value, sign-extended
-// for LB/LH.
+// flight (an access outside RAM does not overlap one), reads the port and leaves its bus tail
+// (CpuT::io_tail()); the value, sign-extended for LB/LH.
 template <class BusT>
 template <NativeOp K>
 u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address) {
   c.wait_load();
   u32 v;
   c.bus_.read_io(address, v, access_width(K));
+  c.io_tail(address);
   if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
   if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
   return v;

@@ -24,7 +24,11 @@ def main(argv=None):
     p.add_argument("--out", help="results folder (default runs/experiments/NAME, NAME-tiny with --tiny)")
     p.add_argument("--address", help="an existing Ray cluster (host:port, or auto); default: a local one")
     p.add_argument("--tiny", action="store_true", help="the tests' configuration: 2 seeds, a few short episodes")
+    p.add_argument("--cpus", type=int, help="CPUs of the local Ray instance, so runs at once (default: the "
+                   "machine's); give each of two studies side by side its share")
     a = p.parse_args(argv)
+    if a.cpus is not None and (a.cpus < 1 or a.address):
+        p.error("--cpus sizes a local Ray instance: a whole number of at least 1, and no --address")
     os.environ.setdefault("RAY_USAGE_STATS_ENABLED", "0")  # as psxrl sweep: no usage reports from a local Ray
     try:
         from psxrl.ray import report, sweep as ray_sweep
@@ -40,7 +44,7 @@ def main(argv=None):
         exe = ray_sweep.find_executable()
         study.out.mkdir(parents=True, exist_ok=True)
         write_commands(study, path, exe, shlex.join(["psxrl", "experiment", *argv]))
-        failed = ray_sweep.run(study, a.address)
+        failed = ray_sweep.run(study, a.address, cpus=a.cpus)
     except (ValueError, FileNotFoundError, ConnectionError) as e:  # the file, the executable, the cluster
         print(f"psxrl experiment: {e}", file=sys.stderr)
         return 2

@@ -21,6 +21,7 @@ from pathlib import Path
 
 import ray
 
+from ..executable import find_executable
 from . import report
 from .sweep_config import load
 
@@ -28,28 +29,6 @@ DONE = "done.json"
 CHECKPOINT = "checkpoint.psxrl"
 LOG = "train.log"
 _PR_SET_PDEATHSIG = 1
-
-
-def find_executable():
-    """The `psxrl` executable: $PSXRL_EXE, else $PSXRL_BUILD_DIR/psxrl, else the build tree's beside
-    a module imported from build/python, else `psxrl` on PATH."""
-    if os.environ.get("PSXRL_EXE"):
-        exe = Path(os.environ["PSXRL_EXE"])
-        if not exe.is_file():
-            raise FileNotFoundError(f"PSXRL_EXE={exe}: no such file")
-        return str(exe.resolve())
-    import psxrl
-
-    candidates = [Path(os.environ["PSXRL_BUILD_DIR"]) / "psxrl"] if os.environ.get("PSXRL_BUILD_DIR") else []
-    candidates.append(Path(psxrl.__file__).resolve().parents[2] / "psxrl")  # build/python/psxrl/__init__.py
-    for exe in candidates:
-        if exe.is_file():
-            return str(exe.resolve())
-    on_path = shutil.which("psxrl")
-    if on_path:
-        return on_path
-    raise FileNotFoundError("cannot find the psxrl executable: set PSXRL_EXE or PSXRL_BUILD_DIR, or put psxrl "
-                            "on PATH")
 
 
 def finished(folder):
@@ -90,15 +69,17 @@ def train(exe, folder, args, resumable):
 train_run = ray.remote(max_retries=3)(train)
 
 
-def run(sweep, address=None, log=print):
+def run(sweep, address=None, log=print, cpus=None):
     """Runs what is left of `sweep` (psxrl.ray.sweep_config.Sweep) on the cluster at `address`
-    (None: the one this process is connected to, else a new local one) and writes the report.
-    Returns the runs that failed, as (run, error) pairs."""
+    (None: the one this process is connected to, else a new local one of `cpus` CPUs, default all
+    the machine's) and writes the report. Returns the runs that failed, as (run, error) pairs."""
     if not ray.is_initialized():
         if address:
             ray.init(address=address, log_to_driver=False)
         else:
-            ray.init(address="local", include_dashboard=False, log_to_driver=False)
+            # A local instance of its own, never one found running: every local instance has its
+            # own session folder and ports, so sweeps side by side do not meet (docs/scaling.md).
+            ray.init(address="local", num_cpus=cpus, include_dashboard=False, log_to_driver=False)
     exe = find_executable()
     sweep.out.mkdir(parents=True, exist_ok=True)
     pending = {}
@@ -106,9 +87,14 @@ def run(sweep, address=None, log=print):
         if finished(r.folder):
             log(f"skip   {r.config} seed {r.seed}: finished")
             continue
-        cpus = int(r.options.get("envs", 1))
-        ref = train_run.options(num_cpus=cpus).remote(exe, str(r.folder), r.train_args(), r.resumable())
+        envs = int(r.options.get("envs", 1))  # one CPU per environment the trainer steps
+        ref = train_run.options(num_cpus=envs).remote(exe, str(r.folder), r.train_args(), r.resumable())
         pending[ref] = r
+    # Nothing else is printed until a run ends, which on a loaded machine can take minutes: say
+    # how many wait and how many can run at once, so a queue does not look like a stall.
+    cpus = int(ray.cluster_resources().get("CPU", 0))
+    log(f"queued {len(pending)} runs on Ray's {cpus} CPU{'' if cpus == 1 else 's'} (one CPU per environment of a "
+        "run); a line as each run ends")
     failed = []
     while pending:
         [ref], _ = ray.wait(list(pending), num_returns=1)
@@ -137,10 +123,14 @@ def main(argv=None):
     p.add_argument("config", help="the sweep file (TOML)")
     p.add_argument("--address", help="an existing Ray cluster (host:port, or auto); default: a local one")
     p.add_argument("--out", help="sweep folder (default: the file's out, else runs/ + the file's name)")
+    p.add_argument("--cpus", type=int, help="CPUs of the local Ray instance, so runs at once (default: the "
+                   "machine's); give each of two sweeps side by side its share")
     a = p.parse_args(argv)
+    if a.cpus is not None and (a.cpus < 1 or a.address):
+        p.error("--cpus sizes a local Ray instance: a whole number of at least 1, and no --address")
     try:
         sweep = load(a.config, a.out)
-        failed = run(sweep, a.address)
+        failed = run(sweep, a.address, cpus=a.cpus)
     except (ValueError, FileNotFoundError, ConnectionError) as e:  # the file, the executable, the cluster
         print(f"psxrl sweep: {e}", file=sys.stderr)
         return 2

@@ -1,0 +1,49 @@
+# On-chip port load timing (cpu_load_sweep.c): each routine runs 32 iterations of a load from the
+# port at a0 and the instructions after it, unrolled as pcsx-redux's load-timings test has them,
+# between two reads of root counter 2 (system clock), twice, and returns the second, cached
+# pass's count. s_N: the load and N nops.
+        .set noreorder
+        .set noat
+        .text
+
+        .macro  TIMED name
+        .balign 16
+        .globl  \name
+\name:
+        lui     $t8, 0x1F80
+        li      $t7, 2
+1:      lhu     $t9, 0x1120($t8)
+        .endm
+
+        .macro  DONE
+        lhu     $v0, 0x1120($t8)
+        addiu   $t7, $t7, -1
+        bnez    $t7, 1b
+        nop
+        subu    $v0, $v0, $t9
+        jr      $ra
+        andi    $v0, $v0, 0xFFFF
+        .endm
+
+        .macro  SPACED name, nops
+        TIMED   \name
+        .rept   32
+        lw      $t0, 0($a0)
+        .rept   \nops
+        nop
+        .endr
+        .endr
+        DONE
+        .endm
+
+        TIMED   t_empty
+        DONE
+
+        SPACED  s_0, 0
+        SPACED  s_1, 1
+        SPACED  s_2, 2
+        SPACED  s_3, 3
+        SPACED  s_4, 4
+        SPACED  s_5, 5
+        SPACED  s_6, 6
+        SPACED  s_7, 7

@@ -19,6 +19,12 @@ bool CompatEntry::agree() const {
          hle.frame_hash == bios->frame_hash;
 }
 
+std::optional<int> CompatEntry::shift() const {
+  if (agree()) return 0;
+  if (!bios || hle.failed || bios->failed || hle.frames != bios->frames) return std::nullopt;
+  return compat_shift(hle.tail_hashes, bios->tail_hashes);
+}
+
 std::string compat_slug(const std::string& name) {
   std::string slug = name;
   for (char& c : slug) {
@@ -71,12 +77,19 @@ std::string html_text(const std::string& text) {
   return out;
 }
 
+// The shift column's text: "0", "+d" or "-d" frames, "-" when the pictures are not the same.
+std::string shift_text(const CompatEntry& e) {
+  const std::optional<int> d = e.shift();
+  if (!d) return "-";
+  return (*d > 0 ? "+" : "") + std::to_string(*d);
+}
+
 std::string md_row(const CompatEntry& e, const char* kernel, const CompatRun& r, bool with_bios) {
   std::string row = "| " + md_cell(e.program.name) + " | " + kernel + " | " + booted_text(r.booted) + " | " +
                     std::to_string(r.frames) + " | " + md_cell(r.stop) + " | " +
                     (r.has_picture ? std::to_string(r.colours) : "-") + " | " +
                     (r.has_picture ? "`" + hex64(r.frame_hash) + "`" : "-") + " |";
-  if (with_bios) row += e.agree() ? " yes |" : " no |";
+  if (with_bios) row += (e.agree() ? " yes | " : " no | ") + shift_text(e) + " |";
   return row + "\n";
 }
 
@@ -108,11 +121,12 @@ std::string html_page(const CompatHeading& h, const std::vector<CompatEntry>& en
       "padding:4px;vertical-align:top}img{image-rendering:pixelated;display:block}.fail{color:#b00}"
       ".note{color:#555}\n</style>\n</head>\n<body>\n<h1>psxrl compat report</h1>\n<p>" +
       html_text(heading_text(h)) + "</p>\n<table>\n<tr><th>Program</th><th>HLE kernel</th>";
-  if (with_bios) page += "<th>BIOS</th><th>Same picture</th>";
+  if (with_bios) page += "<th>BIOS</th><th>Same picture</th><th>Same pictures shifted by d frames</th>";
   page += "</tr>\n";
   for (const CompatEntry& e : entries) {
     page += "<tr><td>" + html_text(e.program.name) + "</td>" + html_run(e, "hle", e.hle);
-    if (with_bios) page += html_run(e, "bios", *e.bios) + "<td>" + (e.agree() ? "yes" : "no") + "</td>";
+    if (with_bios)
+      page += html_run(e, "bios", *e.bios) + "<td>" + (e.agree() ? "yes" : "no") + "</td><td>" + shift_text(e) + "</td>";
     page += "</tr>\n";
   }
   return page + "</table>\n</body>\n</html>\n";
@@ -141,9 +155,9 @@ bool replaceable(const fs::path& dir) {
 
 std::string compat_markdown_table(const std::vector<CompatEntry>& entries, bool with_bios) {
   std::string table = "| Program | Kernel | Booted | Frames | First stop | Colours | Frame hash |";
-  table += with_bios ? " HLE = BIOS |\n" : "\n";
+  table += with_bios ? " HLE = BIOS | Same pictures shifted by d frames (HLE frame N = BIOS frame N+d) |\n" : "\n";
   table += "|---|---|---|---:|---|---:|---|";
-  table += with_bios ? "---|\n" : "\n";
+  table += with_bios ? "---|---:|\n" : "\n";
   for (const CompatEntry& e : entries) {
     table += md_row(e, "HLE", e.hle, with_bios);
     if (with_bios) table += md_row(e, "BIOS", *e.bios, with_bios);

@@ -20,6 +20,11 @@ struct CompatEntry {
   // Both runs went without an error and ended on the same picture (the same frame hash); only
   // with a BIOS run. Two runs stopped by errors on the same blank screen do not agree.
   bool agree() const;
+  // When they do not agree but both ran all their frames without an error: the shift d at which
+  // the HLE run's last frames show the BIOS run's pictures (HLE frame N = BIOS frame N + d,
+  // compat_shift()); 0 when they agree; nothing otherwise. A column of its own: "HLE = BIOS"
+  // stays the strict comparison.
+  std::optional<int> shift() const;
 };
 
 // What the report's heading says about the runs.

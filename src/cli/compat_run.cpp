@@ -58,7 +58,41 @@ void judge_stop(const psx::Console& console, CompatRun& run) {
   }
 }
 
+// Runs `frames` frames, hashing the picture after each of the last kCompatTailFrames.
+void run_tail(psx::Console& console, std::uint64_t frames, CompatRun& run) {
+  const std::uint64_t untimed = frames > kCompatTailFrames ? frames - kCompatTailFrames : 0;
+  console.run_frames(untimed);
+  for (std::uint64_t i = untimed; i < frames && !console.stopped(); ++i) {
+    console.run_frame();
+    run.tail_hashes.push_back(picture_hash(console.native_frame()));
+  }
+}
+
 }  // namespace
+
+std::optional<int> compat_shift(const std::vector<std::uint64_t>& a, const std::vector<std::uint64_t>& b) {
+  const int na = static_cast<int>(a.size()), nb = static_cast<int>(b.size());
+  const int min_shared = static_cast<int>(std::max(a.size(), b.size()) + 1) / 2;
+  // a's index i and b's index j show the same frame of the program when both tails end on the
+  // same frame: i - na == j - nb. A shift d pairs a's frame N with b's frame N + d.
+  for (int m = 0; m < std::max(na, nb); ++m) {
+    for (int d : {m, -m}) {
+      int shared = 0;
+      bool same = true;
+      std::vector<std::uint64_t> seen;
+      for (int i = 0; i < na && same; ++i) {
+        const int j = i - na + nb + d;
+        if (j < 0 || j >= nb) continue;
+        same = a[i] == b[j];
+        ++shared;
+        if (std::find(seen.begin(), seen.end(), a[i]) == seen.end()) seen.push_back(a[i]);
+      }
+      if (same && shared >= min_shared && seen.size() >= 2) return d;
+      if (m == 0) break;
+    }
+  }
+  return std::nullopt;
+}
 
 CompatRun run_compat(const CompatProgram& program, const CompatSettings& settings, const std::string& screenshot) {
   CompatRun run;
@@ -85,7 +119,7 @@ CompatRun run_compat(const CompatProgram& program, const CompatSettings& setting
     while (console.exe_pending() && console.frames() < kBiosBootFrames && !console.stopped()) console.run_frame();
     const bool handed_over = console.frames() > 0 && !console.exe_pending();
     bios_frames = handed_over ? console.frames() - 1 : console.frames();
-    if (!console.exe_pending()) console.run_frames(settings.frames - (handed_over ? 1 : 0));
+    if (!console.exe_pending()) run_tail(console, settings.frames - (handed_over ? 1 : 0), run);
   } catch (const std::exception& e) {
     run.stop = std::string("emulator error: ") + e.what();
     run.failed = true;

@@ -2,7 +2,9 @@
 // and what the report shows of it: whether it booted, how far it ran, what stopped it, and its
 // final picture (distinct colours, a hash, a screenshot).
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,7 +42,19 @@ struct CompatRun {
   std::uint32_t width = 0, height = 0;
   std::uint64_t colours = 0;
   std::uint64_t frame_hash = 0;
+  // The picture hashes of the run's last frames (up to kCompatTailFrames, oldest first, the last
+  // one is frame_hash): what compat_shift() compares when the final pictures differ.
+  std::vector<std::uint64_t> tail_hashes;
 };
+
+// How many final frames a run keeps the hashes of: one second of NTSC video.
+constexpr std::size_t kCompatTailFrames = 60;
+
+// Whether two runs show the same sequence of pictures, one shifted in time: the shift d (run b's
+// frame N + d is run a's frame N) with the smallest |d| at which every frame the two tails share
+// agrees, the shared part being at least half a tail and holding at least two distinct pictures
+// (a still picture proves no shift). Nothing when no such d exists.
+std::optional<int> compat_shift(const std::vector<std::uint64_t>& a, const std::vector<std::uint64_t>& b);
 
 // Runs `program` for settings.frames frames (less if it stops), counted from the program's start
 // (an EXE under a BIOS starts when the BIOS reaches its shell entry, given up to 1200 frames), and,

@@ -12,7 +12,7 @@ namespace psx {
 Console::Console()
     : bus_(sched_, irq_),
       cpu_(bus_, sched_, irq_, gte_),
-      hle_(cpu_, bus_),
+      hle_(cpu_, bus_, sched_),
       cdrom_(sched_, irq_),
       sio0_(sched_, irq_),
       gpu_(sched_, irq_),
@@ -180,6 +180,7 @@ void Console::side_load(const PsxExe& exe) {
   // The HLE kernel's Exec() caller: a return from the entry point stops with a message.
   if (hle_mode_) cpu_.set_reg(31, HleBios::kExitStub);
   cpu_.set_pc(exe.pc);
+  if (hle_mode_) hle_.start_program(exe.pc);
 }
 
 void Console::on_reach(u32 pc) {

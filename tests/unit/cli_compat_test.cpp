@@ -216,11 +216,12 @@ TEST_F(CompatCommand, HleAndBiosRunsOfTheSamePictureAgree) {
   const auto* bios = find_row(table, name, "BIOS");
   ASSERT_NE(hle, nullptr);
   ASSERT_NE(bios, nullptr);
-  ASSERT_EQ(bios->size(), 8u);
+  ASSERT_EQ(bios->size(), 9u);
   EXPECT_EQ((*bios)[2], "yes");
   EXPECT_EQ((*bios)[5], "2");
   EXPECT_EQ((*bios)[6], (*hle)[6]);
   EXPECT_EQ((*bios)[7], "yes");
+  EXPECT_EQ((*bios)[8], "0");  // the shift column: the same pictures at the same frames
   const std::string html = slurp(out / "index.html");
   const size_t hle_img = html.find("<img src=\"screenshots/" + slug(name) + "-hle.png\"");
   const size_t bios_img = html.find("<img src=\"screenshots/" + slug(name) + "-bios.png\"");

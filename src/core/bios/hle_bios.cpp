@@ -1,7 +1,9 @@
 // HLE kernel: vector and stub installation, BIOS call dispatch over the A0h/B0h/C0h tables, TTY
 // output calls, system information, and guest memory helpers.
 #include "core/bios/hle_bios.h"
+#include "core/bios/hle_costs.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "core/bus.h"
@@ -27,6 +29,10 @@ void HleBios::install() {
   }
   const u32 stubs[] = {kSyscall, 0, j(kA0), 0, j(kB0), 0, j(kB0), li_t1(0x17), kSyscall, 0};
   for (u32 i = 0; i < 10; ++i) poke32(kReturnStub + 4 * i, stubs[i]);
+  const u32 delay[] = {0x2508FFFF, 0x1D00FFFE, 0, kJrRa, 0};  // addiu t0,t0,-1; bgtz t0,-2
+  for (u32 i = 0; i < 5; ++i) poke32(kDelayStub + 4 * i, delay[i]);
+  const u32 boot[] = {0x1D00FFFF, 0x2508FFFF, 0x03400008, 0x00004021};  // bgtz t0,-1; ...; jr k0
+  for (u32 i = 0; i < 4; ++i) poke32(kBootStub + 4 * i, boot[i]);
   // Where Exec's program returns, s0 = its headerbuf: the caller's ra, sp, fp, gp and s0 back from
   // it (s0 last, and not in the delay slot: the caller's first instruction may use s0, and a load
   // lands one instruction late), v0 = 1 (hle_exec.cpp).
@@ -77,6 +83,15 @@ void HleBios::install() {
   io_.files[0].device = io_.files[1].device = kDevTty;  // stdin and stdout, as Exec() leaves them
 }
 
+// The program starts where in the video frame a BIOS starts it: after the boot loop's two cycles
+// an iteration (I_MASK is 0, so nothing interrupts it).
+void HleBios::start_program(u32 entry) {
+  constexpr u32 kT0 = 8, kK0 = 26;
+  cpu_.set_reg(kK0, entry);
+  cpu_.set_reg(kT0, static_cast<u32>(hle_cost::kBootCycles / 2));
+  cpu_.set_pc(kBootStub);
+}
+
 bool HleBios::handle(u32 pc) {
   u32 p = Bus::physical(pc) & (Bus::kRamSize - 1);
   if (peek32(p) != kMarker) return false;
@@ -108,6 +123,16 @@ void HleBios::land_pending_load() {
 void HleBios::return_to_caller(u32 v0) {
   cpu_.set_reg(kV0, v0);
   cpu_.set_pc(cpu_.reg(kRa));
+}
+
+// Returns v0 after `cycles` of emulated time spent in the kernel's delay loop (three cycles an
+// iteration from the i-cache), so interrupts due meanwhile are taken in it, as they are in a
+// BIOS's own code (hle_costs.h).
+void HleBios::return_after(u32 v0, Cycles cycles) {
+  constexpr u32 kT0 = 8;
+  cpu_.set_reg(kV0, v0);
+  cpu_.set_reg(kT0, static_cast<u32>(std::max<Cycles>(cycles / 3, 1)));
+  cpu_.set_pc(kDelayStub);
 }
 
 void HleBios::unsupported(const char* table, u32 fn) {
@@ -143,26 +168,27 @@ void HleBios::call_c0(u32 fn) {
 // hle_files.cpp).
 bool HleBios::tty_call(u32 table, u32 fn) {
   const u32 a0 = cpu_.reg(kA0r);
-  auto putchar = [&](u32 c) {
-    print(std::string(1, static_cast<char>(c)));
-    return c;
+  // Each character takes the time a BIOS's TTY output takes (hle_costs.h).
+  auto out = [&](const std::string& s, u32 cycles_per_char, u32 v0) {
+    print(s);
+    return_after(v0, static_cast<Cycles>(cycles_per_char) * s.size());
   };
+  auto putchar = [&](u32 c) { out(std::string(1, static_cast<char>(c)), hle_cost::kTtyChar, c); };
   if (table == kA0) {
     switch (fn) {
-      case 0x3C: return_to_caller(putchar(a0)); return true;
-      case 0x3E: print(read_string(a0) + "\n"); return_to_caller(1); return true;
+      case 0x3C: putchar(a0); return true;
+      case 0x3E: out(read_string(a0) + "\n", hle_cost::kTtyChar, 1); return true;
       case 0x3F: {
         std::string s = format(a0);
-        print(s);
-        return_to_caller(static_cast<u32>(s.size()));
+        out(s, hle_cost::kPrintfChar, static_cast<u32>(s.size()));
         return true;
       }
       default: return false;
     }
   }
   switch (fn) {
-    case 0x3D: return_to_caller(putchar(a0)); return true;
-    case 0x3F: print(read_string(a0) + "\n"); return_to_caller(1); return true;
+    case 0x3D: putchar(a0); return true;
+    case 0x3F: out(read_string(a0) + "\n", hle_cost::kTtyChar, 1); return true;
     default: return false;
   }
 }
@@ -181,7 +207,7 @@ bool HleBios::system_call(u32 table, u32 fn) {
   switch (fn) {
     case 0x44:  // FlushCache: invalidates the i-cache, so code loaded or patched in RAM runs
       bus_.flush_icache();
-      return_to_caller(0);
+      return_after(0, hle_cost::kFlushCache);
       return true;
     case 0x48: io_write(kGp1, a0, 4); return_to_caller(cpu_.reg(kV0)); return true;
     case 0x49: io_write(kGp0, a0, 4); return_to_caller(0); return true;

@@ -81,6 +81,7 @@
 #include "core/bios/exe.h"
 #include "core/bios/hle_io.h"
 #include "core/cpu/cpu.h"
+#include "core/scheduler.h"
 #include "core/state.h"
 #include "core/types.h"
 
@@ -95,7 +96,7 @@ class Disc;
 
 class HleBios {
  public:
-  HleBios(Cpu& cpu, Bus& bus) : cpu_(cpu), bus_(bus) {}
+  HleBios(Cpu& cpu, Bus& bus, Scheduler& sched) : cpu_(cpu), bus_(bus), sched_(sched) {}
 
   // Writes the kernel's vectors, tables and stubs into RAM and sets SR/I_MASK as the BIOS leaves
   // them.
@@ -105,6 +106,8 @@ class HleBios {
   // Handles the CPU reaching a hooked vector. Returns false when the vector holds program code
   // (the program replaced the kernel's handler), so the CPU should just run it.
   bool handle(u32 pc);
+  // Starts the loaded program at `entry` once the kernel's boot time (hle_costs.h) has run.
+  void start_program(u32 entry);
 
   std::function<void(char)> on_tty;
   std::function<void(const std::string&)> on_log;
@@ -129,9 +132,15 @@ class HleBios {
   static constexpr u32 kRetryA0 = 0x80000508;      // re-enters A0h with the same t1 (busy waits)
   static constexpr u32 kRetryB0 = 0x80000510;
   static constexpr u32 kRfeStub = 0x80000518;      // calls B0h:17h ReturnFromException
+  // "loop: addiu t0,t0,-1; bgtz t0,loop; nop; jr ra; nop": a call that takes a BIOS's time
+  // (return_after) returns through it, interruptible as the BIOS's code is.
+  static constexpr u32 kDelayStub = 0x80000528;
   static constexpr u32 kNativeFuncs = 0x80000540;  // pseudo addresses of the native handlers
   static constexpr u32 kKernelElems = 0x80000580;  // the kernel's chain elements, 16 bytes each
   static constexpr u32 kDefaultExit = 0x80000600;  // ResetEntryInt's jmp_buf
+  // "loop: bgtz t0,loop; addiu t0,t0,-1; jr k0; move t0,zero": the kernel's boot time before the
+  // program's entry (start_program).
+  static constexpr u32 kBootStub = 0x80000630;
   static constexpr u32 kVersionString = 0x80000640;
   static constexpr u32 kRamSizeWord = 0x80000060;
   static constexpr u32 kStubs = 0x80001000;        // one "j tail; li t1,fn" per table entry
@@ -160,6 +169,7 @@ class HleBios {
   void call_c0(u32 fn);
   void land_pending_load();
   void return_to_caller(u32 v0);
+  void return_after(u32 v0, Cycles cycles);
   void unsupported(const char* table, u32 fn);
   bool tty_call(u32 table, u32 fn);
   bool system_call(u32 table, u32 fn);
@@ -286,6 +296,7 @@ class HleBios {
 
   Cpu& cpu_;
   Bus& bus_;
+  Scheduler& sched_;  // books the emulated time of the kernel's work (hle_costs.h)
   u32 exit_buf_ = kDefaultExit;
   bool dispatching_ = false;
   bool return_now_ = false;

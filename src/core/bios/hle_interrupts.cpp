@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/bios/hle_bios.h"
+#include "core/bios/hle_costs.h"
 #include "core/bus.h"
 #include "core/sio/sio_device.h"
 
@@ -35,6 +36,7 @@ void HleBios::exception() {
   dispatching_ = true;
   return_now_ = false;
   unresolved_ = code != static_cast<u32>(Exception::Interrupt);
+  if (!unresolved_) sched_.advance(hle_cost::kInterruptEntry);
   chain_prio_ = 0;
   chain_elem_ = chain_head(0);
   // The hardware executes a GTE command at the interrupted address before taking the
@@ -109,6 +111,8 @@ void HleBios::save_thread_registers() {
 // RFE + jump to its EPC.
 void HleBios::return_from_exception() {
   u32 tcb = current_tcb();
+  if (((peek32(tcb + kTcbCause) >> 2) & 0x1F) == static_cast<u32>(Exception::Interrupt))
+    sched_.advance(hle_cost::kInterruptReturn);
   for (u32 r = 1; r < 32; ++r)
     if (r != 26) cpu_.set_reg(r, peek32(tcb + kTcbRegs + 4 * r));
   cpu_.set_hi(peek32(tcb + kTcbHi));
@@ -270,6 +274,7 @@ bool HleBios::rcnt_handler(u32 t) {
 // PadCardIrq: at VBlank, both pads are read into the InitPad buffers (status, ID, data).
 bool HleBios::pad_handler() {
   if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & 1)) return false;
+  sched_.advance(hle_cost::kPadPoll);
   for (int port = 0; port < 2; ++port)
     if (pad_buf_[port]) read_pad(port, pad_buf_[port]);
   if (!clear_pad_) return false;
@@ -394,13 +399,13 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
       pad_buf_ = {a0, cpu_.reg(6)};
       for (u32 i = 0; i < a1 && i < 0x22; ++i) poke8(a0 + i, 0);
       for (u32 i = 0; i < cpu_.reg(7) && i < 0x22; ++i) poke8(cpu_.reg(6) + i, 0);
-      return_to_caller(2);
+      return_after(2, hle_cost::kInitPad);
       return true;
     case 0x13:  // StartPad: enqueue the pad handler, VBlank IRQ on
       if (!pad_started_) enqueue(2, kKernelElems + 16 * kPad);
       pad_started_ = true;
       io_write(kIMask, io_read(kIMask, 4) | 1, 4);
-      return_to_caller(1);
+      return_after(1, hle_cost::kStartPad);
       return true;
     case 0x14:  // StopPad
       if (pad_started_) dequeue(2, kKernelElems + 16 * kPad);

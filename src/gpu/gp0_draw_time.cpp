@@ -71,7 +71,9 @@ Cycles Gpu::draw_time(const u32* w) const {
       gpu::Vertex p;
       set_position(p, w[1]);
       static constexpr s64 kSizes[4] = {0, 1, 8, 16};
-      const u32 size = (c >> 3) & 3, wh = w[textured ? 3 : 2];
+      // Only a variable-size rectangle (size 0) has a width/height word: a 1x1, 8x8 or 16x16 one
+      // ends before it (psx-spx "GPU Render Rectangle Commands").
+      const u32 size = (c >> 3) & 3, wh = size ? 0 : w[textured ? 3 : 2];
       const s64 width = size ? kSizes[size] : s64{wh & 0x3FF}, height = size ? kSizes[size] : s64{(wh >> 16) & 0x1FF};
       pixels = clipped(p.x, p.y, p.x + width, p.y + height, ds);
       cost = textured ? kRectTextured : semi ? kRectSemi : kRect;

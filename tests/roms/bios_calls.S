@@ -2,13 +2,7 @@
 # number in the jump's delay slot; the BIOS returns straight to the C caller.
         .set noreorder
         .text
-        .macro  BIOS name, table, fn
-        .globl  \name
-\name:
-        li      $t2, \table
-        jr      $t2
-        li      $t1, \fn
-        .endm
+#include "bios_call.inc"
 
         BIOS    bios_strlen, 0xA0, 0x1B
         BIOS    bios_memcpy, 0xA0, 0x2A

@@ -1,14 +1,8 @@
 # BIOS call stubs for the executable and miscellaneous kernel call tests (bios_exec, bios_misc),
-# numbers from psx-spx "BIOS Function Summary"; the macro is bios_calls.S's.
+# numbers from psx-spx "BIOS Function Summary".
         .set noreorder
         .text
-        .macro  BIOS name, table, fn
-        .globl  \name
-\name:
-        li      $t2, \table
-        jr      $t2
-        li      $t1, \fn
-        .endm
+#include "bios_call.inc"
 
         BIOS    load_test, 0xA0, 0x41
         BIOS    load_exe, 0xA0, 0x42

@@ -1,14 +1,8 @@
 # BIOS call stubs for the file, CD-ROM and memory card test programs (bios_files, bios_memcard),
-# numbers from psx-spx "BIOS Function Summary"; the macro is bios_calls.S's.
+# numbers from psx-spx "BIOS Function Summary".
         .set noreorder
         .text
-        .macro  BIOS name, table, fn
-        .globl  \name
-\name:
-        li      $t2, \table
-        jr      $t2
-        li      $t1, \fn
-        .endm
+#include "bios_call.inc"
 
         BIOS    file_open, 0xA0, 0x00
         BIOS    file_lseek, 0xA0, 0x01

@@ -71,6 +71,28 @@ TEST_F(GpuBusyTest, ACommandWaitingBehindTheDrawingOneFillsTheFifo) {
   EXPECT_EQ(stat() & (kDmaRequest | kReadyCmd | kReadyDma), kDmaRequest | kReadyCmd | kReadyDma);
 }
 
+// psx-spx "Ready Bits": bit 26 is cleared while the GPU wants more parameters or data, so it reads
+// 0 from a command's first word until its last (a rectangle outside the drawing area, which takes
+// no drawing time), and through a polyline until its terminator (each read once its segments'
+// drawing time, a few cycles, has passed).
+TEST_F(GpuBusyTest, Bit26ReadsZeroWhileACommandsParametersArrive) {
+  gp0({0xE3000000, 0xE4000000 | (99u << 10) | 99u});  // drawing area 0..99 x 0..99
+  gp0({0x60000000});
+  EXPECT_EQ(stat() & kReadyCmd, 0u) << "after the command word";
+  gp0({xy(200, 200)});
+  EXPECT_EQ(stat() & kReadyCmd, 0u) << "after the position";
+  gp0({xy(10, 10)});
+  EXPECT_EQ(stat() & kReadyCmd, kReadyCmd) << "after the size";
+  gp0({0x48000000, xy(200, 200), xy(210, 200)});
+  run(100);
+  EXPECT_EQ(stat() & kReadyCmd, 0u) << "a polyline after its first segment";
+  gp0({xy(220, 200)});
+  run(100);
+  EXPECT_EQ(stat() & kReadyCmd, 0u) << "a polyline's next vertex";
+  gp0({0x55555555});
+  EXPECT_EQ(stat() & kReadyCmd, kReadyCmd) << "after the terminator";
+}
+
 TEST_F(GpuBusyTest, DrawingOutsideTheDrawingAreaTakesNoTime) {
   gp0({0xE3000000, 0xE4000000 | (99u << 10) | 99u});  // drawing area 0..99 x 0..99
   gp0({0x60000000, xy(200, 200), xy(100, 100)});

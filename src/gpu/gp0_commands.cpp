@@ -331,6 +331,8 @@ void Gpu::update_draw_state() {
   ds_.area_bottom = static_cast<s32>((area_bottom_right_ >> 10) & 0x1FF);
   offset_x_ = sign_extend11(draw_offset_);
   offset_y_ = sign_extend11(draw_offset_ >> 11);
+  time_area_ = {ds_.area_left - offset_x_, ds_.area_top - offset_y_, ds_.area_right + 1 - offset_x_,
+                ds_.area_bottom + 1 - offset_y_};
   ds_.set_mask = mask_bits_ & 1;
   ds_.check_mask = mask_bits_ & 2;
 }

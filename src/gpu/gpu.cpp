@@ -49,13 +49,15 @@ u32 Gpu::gpustat() const {
   s |= (display_mode_ & 0x3F) << 17;                 // 17-22: hres 1, vres, PAL, 24-bit, interlace
   s |= u32{display_disabled_} << 23;
   s |= u32{irq_flag_} << 24;
-  // 26: ready for a command word: no transfer under way and nothing drawing (gp0_draw_time.cpp).
+  // 26: ready for a command word: no command's parameters, polyline vertices or transfer data
+  // still to come (psx-spx "Ready Bits": 0 while the GPU wants more parameters or data; Mednafen
+  // too, while its FIFO holds words), and nothing drawing (gp0_draw_time.cpp).
   // 28: ready for a DMA block: the command FIFO is empty, which a VRAM-to-CPU transfer waiting
   // to be read leaves it (on a console, DrawSync's wait for bit 28 after GP0(C0) ends: ps1-tests
   // gpu/bandwidth), and a drawing command alone too: only one waiting behind it fills it
   // (ps1-tests gpu/gpustat: 26 = 0, 28 = 1 while one rectangle sent by the CPU draws; both 0
   // while a DMA list's second one waits). 25 follows 28 in direction 2 and 27 in direction 3.
-  const bool ready_cmd = gp0_mode_ != Gp0Mode::CpuToVram && !download_.active && !drawing();
+  const bool ready_cmd = gp0_mode_ == Gp0Mode::Command && fifo_len_ == 0 && !download_.active && !drawing();
   const bool ready_dma = fifo_empty();
   s |= u32{ready_cmd} << 26;
   s |= u32{download_.active} << 27;   // ready to send VRAM to the CPU

@@ -21,6 +21,15 @@
 
 namespace psx {
 
+namespace gpu {
+// The drawing area (GP0(E3)/(E4)) moved by minus the drawing offset (E5), with exclusive right
+// and bottom ends: what the drawing time (gp0_draw_time.cpp) clips positions to as commands give
+// them, before the offset.
+struct TimeArea {
+  s32 left = 0, top = 0, right_end = 1, bottom_end = 1;
+};
+}  // namespace gpu
+
 class Gpu final : public IoDevice, public DmaPort {
  public:
   static constexpr u32 kBase = 0x1F801810;
@@ -225,6 +234,7 @@ class Gpu final : public IoDevice, public DmaPort {
   u32 mask_bits_ = 0;        // E6 bits 0-1
   s32 offset_x_ = 0, offset_y_ = 0;
   gpu::DrawState ds_;
+  gpu::TimeArea time_area_;
 
   // Display control registers.
   bool irq_flag_ = false;           // GPUSTAT.24

@@ -33,5 +33,6 @@ foreach(name gpu_polygons gpu_lines_rects gpu_vram gpu_dma)
 endforeach()
 # gpu_timing (issue 59 item 8): ps1-tests gpu/gpustat's 12 cases (before, during and after
 # rectangles sent by the CPU, a DMA linked list, sync mode 1 in directions 1 and 2) and
-# gpu/bandwidth's 14 rows, against the console logs: 12 + 14 = 26.
-psx_add_rom_test(gpu_timing SOURCES gpu_timing.c CHECKS 26)
+# gpu/bandwidth's 14 rows, against the console logs; the BIOS's gpu_sync by psx-spx, DMA off 3 and
+# a DMA list 4: 12 + 14 + 7 = 33.
+psx_add_rom_test(gpu_timing SOURCES gpu_timing.c gpu_bios_calls.S CHECKS 33)

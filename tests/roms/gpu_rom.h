@@ -17,11 +17,40 @@
 /* Bound on the polls of a GPUSTAT ready bit; the GPU answers within a few commands' time. */
 #define GPU_WAIT_LIMIT 1000000
 
-static inline void gp0(uint32_t w) {
-  int i = 0;
-  while (!(GPU_STAT & (1u << 26)) && ++i < GPU_WAIT_LIMIT) {
+/* GP0 words per command, the command word included; a polyline up to its first segment (psx-spx
+   "GPU Render Polygon/Line/Rectangle Commands", "GPU Memory Transfer Commands"). */
+static inline int gp0_length(uint32_t word) {
+  const uint32_t c = word >> 24, corners = (c & 0x08) ? 4 : 3;
+  switch (c >> 5) {
+    case 1: return (int)(1 + corners * ((c & 0x04) ? 2 : 1) + ((c & 0x10) ? corners - 1 : 0));
+    case 2: return (c & 0x10) ? 4 : 3;
+    case 3: return 2 + ((c & 0x04) ? 1 : 0) + (((c >> 3) & 3) == 0 ? 1 : 0);
+    case 4: return 4;
+    case 5:
+    case 6: return 3;
+    default: return c == 0x02 ? 3 : 1;
   }
-  if (i == GPU_WAIT_LIMIT) TEST_TIMEOUT("GPUSTAT.26 (ready for a command)");
+}
+
+/* The words the command under way still takes, and whether it is a polyline taking vertices
+   until its 5xxx5xxx terminator: GPUSTAT.26 reads 0 until then (psx-spx "Ready Bits": the GPU
+   wants more parameters), so gp0() waits for it only before a command word. */
+static int gp0_left __attribute__((unused));
+static int gp0_polyline __attribute__((unused));
+
+static inline void gp0(uint32_t w) {
+  if (gp0_left > 0) {
+    --gp0_left;
+  } else if (gp0_polyline) {
+    if ((w & 0xF000F000u) == 0x50005000u) gp0_polyline = 0;
+  } else {
+    int i = 0;
+    while (!(GPU_STAT & (1u << 26)) && ++i < GPU_WAIT_LIMIT) {
+    }
+    if (i == GPU_WAIT_LIMIT) TEST_TIMEOUT("GPUSTAT.26 (ready for a command)");
+    gp0_left = gp0_length(w) - 1;
+    gp0_polyline = (w >> 29) == 2 && (w & 0x08000000u);
+  }
   GPU_GP0 = w;
 }
 

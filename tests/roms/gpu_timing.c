@@ -9,7 +9,10 @@
      this runs 40 and expects its figure scaled within 1/32 (3.1%). A transfer is done when the
      call returns, so 40 take 40/400 of the time; a drawing command is sent while the one before
      draws, and the counter is read once the last one starts: 39 drawn of 399 (the program's
-     figure, 400 calls, is 399 drawn too). */
+     figure, 400 calls, is 399 drawn too).
+   - the BIOS's gpu_sync (A0h:4Eh) while a rectangle draws and a second waits (GPUSTAT.28 = 0),
+     sent by the CPU and by a DMA linked list: psx-spx "BIOS GPU Functions" says it returns 0 once
+     bit 28 reads 1, after the DMA has ended (D2_CHCR.24 = 0), and turns DMA off by GP1(04h). */
 #include "dma_regs.h"
 #include "gpu_rom.h"
 
@@ -21,6 +24,8 @@
 #define CALLS 40
 #define SCR_W 320
 #define SCR_H 240
+
+int gpu_sync(void); /* gpu_bios_calls.S */
 
 static uint32_t list[8];
 static uint16_t pixels[SCR_W * SCR_H];
@@ -242,12 +247,41 @@ static void bandwidth_rows(void) {
   }
 }
 
+/* gpu_sync with DMA off, then with a DMA linked list in direction 2: the second rectangle waits
+   behind the first when the call is made, so bit 28 reads 0 (the gpustat cases above). */
+static void gpu_sync_cases(void) {
+  wait_idle();
+  GPU_GP1 = 0x04000000;
+  tile(list, 0x000080, 0, 0);
+  tile(&list[4], 0x008000, 128, 0);
+  for (int i = 0; i < 3; ++i) GPU_GP0 = list[i];
+  for (int i = 4; i < 7; ++i) GPU_GP0 = list[i];
+  uint32_t before = GPU_STAT;
+  CHECK_EQ("gpu_sync dma off: bit 28 before", before & R28, 0);
+  CHECK_EQ("gpu_sync dma off: returns 0", gpu_sync(), 0);
+  CHECK_EQ("gpu_sync dma off: bit 28 after", GPU_STAT & R28, R28);
+
+  list[0] = 3u << 24 | PHYS(&list[4]);
+  tile(&list[1], 0x008000, 128, 0);
+  list[4] = 3u << 24 | 0xFFFFFF;
+  tile(&list[5], 0x800000, 256, 0);
+  wait_idle();
+  GPU_GP1 = 0x04000002;
+  start_dma(0, 0x01000401);
+  CHECK_EQ("gpu_sync list: returns 0", gpu_sync(), 0);
+  const uint32_t after = GPU_STAT;
+  CHECK_EQ("gpu_sync list: D2_CHCR.24 after", D_CHCR(DMA_GPU) & BUSY, 0);
+  CHECK_EQ("gpu_sync list: bit 28 after", after & R28, R28);
+  CHECK_EQ("gpu_sync list: DMA direction after (29-30)", after & 0x60000000u, 0);
+}
+
 int main(void) {
   I_MASK = 0;
   DPCR |= 1u << (DMA_GPU * 4 + 3);
   DICR = 0;
   gpu_init();
   gpustat_cases();
+  gpu_sync_cases();
   bandwidth_rows();
   return test_done("gpu_timing");
 }

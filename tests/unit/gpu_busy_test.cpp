@@ -44,6 +44,17 @@ TEST_F(GpuBusyTest, FullScreenQuadTakesItsMeasuredTime) {
   expect_busy_for(41692);
 }
 
+// The quads of gpu/bandwidth half off screen (3968 HBlanks: 21,410 cycles each) and a quarter off
+// (5845: 31,538): a pixel costs less than the full quad's time over its pixels, the rest is a
+// time per row (gp0_draw_time.cpp). The drawing area is the program's 320x240 screen.
+TEST_F(GpuBusyTest, QuadsPartlyOffScreenTakeTheirMeasuredTimes) {
+  gp0({0xE3000000, 0xE4000000 | (239u << 10) | 319u});
+  gp0({0x28000000, xy(-160, 0), xy(160, 0), xy(-160, 240), xy(160, 240)});
+  expect_busy_for(21410);
+  gp0({0x28000000, xy(-80, 0), xy(240, 0), xy(-80, 240), xy(240, 240)});
+  expect_busy_for(31538);
+}
+
 // gpu/gpustat's linked-list case: the second rectangle waits in the FIFO while the first draws,
 // so 28 and 25 (direction 2) read 0 too, until the second starts; 26 until it ends.
 TEST_F(GpuBusyTest, ACommandWaitingBehindTheDrawingOneFillsTheFifo) {
@@ -58,6 +69,28 @@ TEST_F(GpuBusyTest, ACommandWaitingBehindTheDrawingOneFillsTheFifo) {
   EXPECT_EQ(stat() & (kDmaRequest | kReadyCmd | kReadyDma), kDmaRequest | kReadyDma);
   run(41023);  // both: 82,046
   EXPECT_EQ(stat() & (kDmaRequest | kReadyCmd | kReadyDma), kDmaRequest | kReadyCmd | kReadyDma);
+}
+
+// psx-spx "Ready Bits": bit 26 is cleared while the GPU wants more parameters or data, so it reads
+// 0 from a command's first word until its last (a rectangle outside the drawing area, which takes
+// no drawing time), and through a polyline until its terminator (each read once its segments'
+// drawing time, a few cycles, has passed).
+TEST_F(GpuBusyTest, Bit26ReadsZeroWhileACommandsParametersArrive) {
+  gp0({0xE3000000, 0xE4000000 | (99u << 10) | 99u});  // drawing area 0..99 x 0..99
+  gp0({0x60000000});
+  EXPECT_EQ(stat() & kReadyCmd, 0u) << "after the command word";
+  gp0({xy(200, 200)});
+  EXPECT_EQ(stat() & kReadyCmd, 0u) << "after the position";
+  gp0({xy(10, 10)});
+  EXPECT_EQ(stat() & kReadyCmd, kReadyCmd) << "after the size";
+  gp0({0x48000000, xy(200, 200), xy(210, 200)});
+  run(100);
+  EXPECT_EQ(stat() & kReadyCmd, 0u) << "a polyline after its first segment";
+  gp0({xy(220, 200)});
+  run(100);
+  EXPECT_EQ(stat() & kReadyCmd, 0u) << "a polyline's next vertex";
+  gp0({0x55555555});
+  EXPECT_EQ(stat() & kReadyCmd, kReadyCmd) << "after the terminator";
 }
 
 TEST_F(GpuBusyTest, DrawingOutsideTheDrawingAreaTakesNoTime) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "gpu/gl/gl_renderer.h"
+#include "gpu/gl/osmesa_context.h"
 #include "gpu_test_util.h"
 
 namespace psx::test {
@@ -144,9 +146,11 @@ class GpuClutCacheImage : public GpuHardwareImage {
   // setE1(mode, 0, 0): texture depth, drawing to the display area allowed.
   void depth(u32 mode) { gp0({0xE1000400u | mode << 7}); }
   void clear_cache() { gp0({0x01000000}); }
+  // The program's draws; returns the VRAM pixels that differ from the capture.
+  int run_program();
 };
 
-TEST_F(GpuClutCacheImage, PalettesMatchTheConsoleCapture) {
+int GpuClutCacheImage::run_program() {
   clear(0);
   depth(1);
   s32 y = 20;
@@ -175,9 +179,27 @@ TEST_F(GpuClutCacheImage, PalettesMatchTheConsoleCapture) {
   y += 32;
   test_clut(960, row()), depth(1), sprite(0, y + 2, 1, 960, row());
   std::vector<u16> want = vram_image("clut-cache-vram.png");
-  const int n = differing(want, 0, 0, 1024, 512, [](u32, u32) { return false; });
+  return differing(want, 0, 0, 1024, 512, [](u32, u32) { return false; });
+}
+
+TEST_F(GpuClutCacheImage, PalettesMatchTheConsoleCapture) {
+  const int n = run_program();
   RecordProperty("differing_pixels", n);
   EXPECT_EQ(n, 0);
+}
+
+// The OpenGL renderer (OSMesa, headless) keeps the same cache (before, it read palettes from VRAM
+// at draw time, as if it reloaded before every primitive: 768 pixels differed at both scales).
+TEST_F(GpuClutCacheImage, OpenGlRendererMatchesTheConsoleCaptureAtScales1And4) {
+  for (u32 scale : {1u, 4u}) {
+    std::string error;
+    auto gl = gpu::gl::make_osmesa_renderer(scale, gpu::gl::OsMesaContext::kDefaultLibrary, error);
+    ASSERT_TRUE(gl) << "no OpenGL renderer: " << error;
+    gpu.set_renderer(std::move(gl));
+    gp1(0x00000000);
+    gp0({0xE3000000, 0xE4000000 | (511u << 10) | 1023u});
+    EXPECT_EQ(run_program(), 0) << "scale " << scale;
+  }
 }
 
 }  // namespace

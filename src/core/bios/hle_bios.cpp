@@ -216,7 +216,23 @@ bool HleBios::system_call(u32 table, u32 fn) {
       return_to_caller(0);
       return true;
     case 0x4D: return_to_caller(io_read(kGp1, 4)); return true;
-    case 0x4E: return_to_caller(0); return true;  // gpu_sync: commands complete at once here
+    case 0x4E: {  // gpu_sync (psx-spx "BIOS GPU Functions")
+      // With DMA on (GPUSTAT.29-30) it waits for channel 2 to end (D2_CHCR.24), then for
+      // GPUSTAT.28 (the command FIFO empty), then turns DMA off by GP1(04h); with DMA off, for
+      // bit 28 alone. It spins through A0h until then, so the wait takes the drawing's time and
+      // interrupts are taken meanwhile. The BIOS's timeouts (-1 after "a LOT of seconds") are
+      // not kept: the wait lasts as long as the GPU or DMA does.
+      constexpr u32 kD2Chcr = 0xBF8010A8;
+      const u32 stat = io_read(kGp1, 4);
+      const bool dma_on = stat & 0x60000000;
+      if ((dma_on && (io_read(kD2Chcr, 4) & 0x01000000)) || !(stat & 0x10000000)) {
+        cpu_.set_pc(kRetryA0);
+        return true;
+      }
+      if (dma_on) io_write(kGp1, 0x04000000, 4);
+      return_to_caller(0);
+      return true;
+    }
     case 0x99: return_to_caller(0); return true;  // AddDummyTty: the TTY device is always there
     case 0x9F: set_mem(a0); return_to_caller(0); return true;
     case 0x9C: conf_ = {a0, a1, a2}; return_to_caller(0); return true;  // SetConf

@@ -42,17 +42,14 @@ bool clip_box(PrimitiveRecord& r, s32 x0, s32 y0, s32 x1, s32 y1, const DrawStat
   return r.bbox[0] < r.bbox[2] && r.bbox[1] < r.bbox[3];
 }
 
-// The areas a primitive reads: its texture page and CLUT, and its own box when it blends or
-// checks the mask bit. Returns how many were written to `reads` (at most 3).
-u32 primitive_reads(const PrimitiveRecord& r, int tex, u32 clut_x, u32 clut_y, bool reads_back, u32 px,
-                           u32 py, Rect* reads) {
+// The areas of VRAM a primitive reads: its texture page, and its own box when it blends or
+// checks the mask bit (its palette comes from the CLUT cache). Returns how many were written to
+// `reads` (at most 2).
+u32 primitive_reads(const PrimitiveRecord& r, int tex, bool reads_back, u32 px, u32 py, Rect* reads) {
   u32 n = 0;
   static constexpr s32 kPageWidth[4] = {0, 64, 128, 256};
   if (tex) reads[n++] = {static_cast<s32>(px), static_cast<s32>(py), static_cast<s32>(px) + kPageWidth[tex],
                          static_cast<s32>(py) + 256};
-  if (tex == 1 || tex == 2)
-    reads[n++] = {static_cast<s32>(clut_x), static_cast<s32>(clut_y), static_cast<s32>(clut_x) + (tex == 1 ? 16 : 256),
-                  static_cast<s32>(clut_y) + 1};
   if (reads_back) reads[n++] = {r.bbox[0], r.bbox[1], r.bbox[2], r.bbox[3]};
   return n;
 }
@@ -74,7 +71,6 @@ void GlRenderer::draw_triangle(const Triangle& t, const DrawState& ds) {
   PrimitiveRecord r = state_record(Kind::Triangle, ds, tex, raw, t.semi, ds.dither && (gouraud || (tex && !raw)));
   if (!clip_box(r, min_x, a.y, max_x, c.y, ds)) return;
   if (cross > 0) r.flags |= static_cast<s32>(flag::kLongEdgeLeft);
-  r.clut = t.clut_x | t.clut_y << 16;
   r.a[0] = a.x, r.a[1] = a.y, r.b[0] = b.x, r.b[1] = b.y, r.c[0] = c.x, r.c[1] = c.y;
   const Vertex& flat = t.v[0];  // flat polygons take the command's first colour
   const u8 colours[3][3] = {{a.r, b.r, c.r}, {a.g, b.g, c.g}, {a.b, b.b, c.b}};
@@ -96,8 +92,9 @@ void GlRenderer::draw_triangle(const Triangle& t, const DrawState& ds) {
     r.base[3] = attribute_from_core(o.u, gu, o, a), r.grad[6] = gu.dx, r.grad[7] = gu.dy;
     r.base[4] = attribute_from_core(o.v, gv, o, a), r.grad[8] = gv.dx, r.grad[9] = gv.dy;
   }
-  Rect reads[3];
-  u32 n = primitive_reads(r, tex, t.clut_x, t.clut_y, t.semi || ds.check_mask, ds.texpage_x, ds.texpage_y, reads);
+  Rect reads[2];
+  u32 n = primitive_reads(r, tex, t.semi || ds.check_mask, ds.texpage_x, ds.texpage_y, reads);
+  if (tex == 1 || tex == 2) sync_palette();
   add(r, reads, n);
 }
 
@@ -107,13 +104,12 @@ void GlRenderer::draw_rectangle(const Rectangle& rect, const DrawState& ds) {
   PrimitiveRecord r = state_record(Kind::Rectangle, ds, tex, tex && rect.raw, rect.semi, false);
   if (!clip_box(r, rect.x, rect.y, rect.x + static_cast<s32>(rect.width), rect.y + static_cast<s32>(rect.height), ds))
     return;
-  r.clut = rect.clut_x | rect.clut_y << 16;
   r.a[0] = rect.x, r.a[1] = rect.y;
   r.extra[0] = ds.flip_x ? -1 : 1, r.extra[1] = ds.flip_y ? -1 : 1;
   r.base[0] = rect.r, r.base[1] = rect.g, r.base[2] = rect.b, r.base[3] = rect.u, r.base[4] = rect.v;
-  Rect reads[3];
-  u32 n = primitive_reads(r, tex, rect.clut_x, rect.clut_y, rect.semi || ds.check_mask, ds.texpage_x, ds.texpage_y,
-                          reads);
+  Rect reads[2];
+  u32 n = primitive_reads(r, tex, rect.semi || ds.check_mask, ds.texpage_x, ds.texpage_y, reads);
+  if (tex == 1 || tex == 2) sync_palette();
   add(r, reads, n);
 }
 
@@ -134,7 +130,7 @@ void GlRenderer::draw_line(const Line& l, const DrawState& ds) {
     if (l.shaded && steps) r.grad[2 * i] = ((c1[i] - c0[i]) << kFrac) / steps;
   }
   Rect reads[1];
-  u32 n = primitive_reads(r, 0, 0, 0, l.semi || ds.check_mask, 0, 0, reads);
+  u32 n = primitive_reads(r, 0, l.semi || ds.check_mask, 0, 0, reads);
   add(r, reads, n);
 }
 

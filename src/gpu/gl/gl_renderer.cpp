@@ -64,6 +64,8 @@ bool GlRenderer::init(std::string& error) {
   texture(snapshot_tex_, w, h);
   texture(staging_tex_, kVramWidth, kVramHeight);
   texture(native_tex_, kVramWidth, kVramHeight);
+  texture(palette_tex_, kClutEntries, 1);
+  gl_.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kClutEntries, 1, GL_RED_INTEGER, GL_UNSIGNED_SHORT, palette_);
   if (!framebuffer(vram_fbo_, vram_tex_) || !framebuffer(snapshot_fbo_, snapshot_tex_) ||
       !framebuffer(native_fbo_, native_tex_)) {
     error = context_->name() + " cannot render to 16-bit integer textures";
@@ -104,8 +106,8 @@ GlRenderer::~GlRenderer() {
   gl_.DeleteVertexArrays(1, &vao_);
   GLuint fbos[3] = {vram_fbo_, snapshot_fbo_, native_fbo_};
   gl_.DeleteFramebuffers(3, fbos);
-  GLuint textures[4] = {vram_tex_, snapshot_tex_, staging_tex_, native_tex_};
-  gl_.DeleteTextures(4, textures);
+  GLuint textures[5] = {vram_tex_, snapshot_tex_, staging_tex_, native_tex_, palette_tex_};
+  gl_.DeleteTextures(5, textures);
   for (const DrawProgram& p : variants_)
     if (p.program) gl_.DeleteProgram(p.program);
   gl_.DeleteProgram(programs_.downsample);
@@ -192,6 +194,8 @@ void GlRenderer::flush() const {
   const GlFunctions& gl = gl_;
   gl.BindFramebuffer(GL_FRAMEBUFFER, vram_fbo_);
   gl.Viewport(0, 0, static_cast<GLsizei>(kVramWidth * scale_), static_cast<GLsizei>(kVramHeight * scale_));
+  gl.ActiveTexture(GL_TEXTURE2);
+  gl.BindTexture(GL_TEXTURE_2D, palette_tex_);
   gl.ActiveTexture(GL_TEXTURE1);
   gl.BindTexture(GL_TEXTURE_2D, staging_tex_);
   gl.ActiveTexture(GL_TEXTURE0);

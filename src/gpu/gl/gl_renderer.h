@@ -38,10 +38,9 @@ class GlRenderer final : public Renderer {
   void fill(u32 x, u32 y, u32 width, u32 height, u16 pixel) override;
   void copy(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 height, MaskMode m) override;
   void write_row(u32 x, u32 y, const u16* pixels, u32 count, MaskMode m) override;
-  // The draw program reads each primitive's palette from VRAM as the primitive finds it, not
-  // from the cache, which differs from the console (and the software renderer) only where a
-  // palette in use is rewritten without a reload (docs/fidelity.md). The entries are still read
-  // back into the cache, so that save states and a change of backend carry the same cache.
+  // The entries are read back from VRAM into the cache (clut_), from which the draw program
+  // takes 4- and 8-bit texels' colours (a palette texture, sync_palette()), so a palette rewritten
+  // in VRAM is not seen until the GPU reloads it, as on the console.
   void load_clut(u32 x, u32 y, u32 count) override;
   const u16* vram() const override;
   void load_vram(const u16* pixels) override;
@@ -68,12 +67,18 @@ class GlRenderer final : public Renderer {
   void mark_stale(const Rect& r);
   bool any_stale(const Rect& r) const;
   void copy_rows(u32 src_x, u32 src_y, u32 dst_x, u32 dst_y, u32 width, u32 rows, MaskMode m);
+  // Brings the palette texture to the CLUT cache's entries (loaded, or set by a state load or a
+  // change of backend) before a 4- or 8-bit textured record is queued; records already queued
+  // are drawn first, with the palette they were made with.
+  void sync_palette();
 
   std::unique_ptr<GlContext> context_;
   GlFunctions gl_;
   Programs programs_;
   u32 scale_ = 1;
   GLuint vram_tex_ = 0, snapshot_tex_ = 0, staging_tex_ = 0, native_tex_ = 0;
+  GLuint palette_tex_ = 0;  // 256 x 1: the CLUT cache as the draw program reads it
+  u16 palette_[kClutEntries] = {};  // what palette_tex_ holds
   GLuint vram_fbo_ = 0, snapshot_fbo_ = 0, native_fbo_ = 0;
   GLuint vao_ = 0, vbo_ = 0;
 

@@ -164,4 +164,13 @@ void GlRenderer::load_clut(u32 x, u32 y, u32 count) {
   for (u32 i = 0; i < count; ++i) clut_[i] = row[size_t{i} * scale_];
 }
 
+void GlRenderer::sync_palette() {
+  if (std::equal(clut_, clut_ + kClutEntries, palette_)) return;
+  flush();
+  context_->make_current();
+  gl_.BindTexture(GL_TEXTURE_2D, palette_tex_);
+  gl_.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kClutEntries, 1, GL_RED_INTEGER, GL_UNSIGNED_SHORT, clut_);
+  std::copy_n(clut_, kClutEntries, palette_);
+}
+
 }  // namespace psx::gpu::gl

@@ -61,6 +61,7 @@ void main() {
 const char* kDrawFragment = R"(
 uniform usampler2D u_vram;     // the snapshot of scaled VRAM that reads see
 uniform usampler2D u_staging;  // native 1024x512, CPU->VRAM rows
+uniform usampler2D u_palette;  // 256x1, the CLUT cache
 const int u_scale = SCALE;     // a constant: divisions by it become multiplications
 flat in ivec4 v_bbox, v_state, v_ab, v_c, v_base, v_g0, v_g1, v_g2;
 out uint o_pixel;
@@ -75,15 +76,15 @@ uint fetch_texel(int mode, int u, int v) {
   int win = v_state.w;
   u = (u & (win & 255)) | ((win >> 8) & 255);
   v = (v & ((win >> 16) & 255)) | ((win >> 24) & 255);
-  int px = v_state.y & 0xFFFF, py = v_state.y >> 16, cx = v_state.z & 0xFFFF, cy = v_state.z >> 16;
+  int px = v_state.y & 0xFFFF, py = v_state.y >> 16;
   int row = py + v;
   if (mode == 1) {
     int index = int(native_at(px + (u >> 2), row) >> uint((u & 3) * 4)) & 15;
-    return native_at(cx + index, cy);
+    return texelFetch(u_palette, ivec2(index, 0), 0).r;
   }
   if (mode == 2) {
     int index = int(native_at(px + (u >> 1), row) >> uint((u & 1) * 8)) & 255;
-    return native_at(cx + index, cy);
+    return texelFetch(u_palette, ivec2(index, 0), 0).r;
   }
   return native_at(px + u, row);
 }
@@ -283,6 +284,7 @@ bool draw_variant(const GlFunctions& gl, u32 variant, u32 scale, DrawProgram& ou
   gl.UseProgram(out.program);
   gl.Uniform1i(gl.GetUniformLocation(out.program, "u_vram"), 0);
   gl.Uniform1i(gl.GetUniformLocation(out.program, "u_staging"), 1);
+  gl.Uniform1i(gl.GetUniformLocation(out.program, "u_palette"), 2);
   return true;
 }
 

@@ -32,7 +32,7 @@ struct PrimitiveRecord {
   s32 bbox[4];     // native pixels x0, y0, x1, y1 (half-open), already clipped to the drawing area
   s32 flags;       // Kind | flag bits
   s32 page;        // texture page x | y << 16
-  s32 clut;        // CLUT x | y << 16
+  s32 spare;       // unused (4- and 8-bit texels take their colours from the palette texture)
   s32 window;      // and_u | or_u << 8 | and_v << 16 | or_v << 24
   s32 a[2], b[2], c[2], extra[2];
   s32 base[5];     // r, g, b, u, v

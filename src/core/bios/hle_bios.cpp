@@ -2,6 +2,7 @@
 // output calls, system information, and guest memory helpers.
 #include "core/bios/hle_bios.h"
 #include "core/bios/hle_costs.h"
+#include "core/bios/hle_font.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -19,6 +20,10 @@ constexpr u32 li_t1(u32 v) { return 0x24090000 | v; }  // ADDIU t1, zero, v
 constexpr u32 lw(u32 rt, u32 offset, u32 base) { return 0x8C000000 | base << 21 | rt << 16 | offset; }
 constexpr u32 kS0 = 16, kGp = 28, kFp = 30;
 }  // namespace
+
+HleBios::HleBios(Cpu& cpu, Bus& bus, Scheduler& sched) : cpu_(cpu), bus_(bus), sched_(sched) {
+  krom::map(bus_.bios());
+}
 
 void HleBios::install() {
   // Each vector: the marker, then "jr ra; nop" so a disabled hook still returns to the caller.
@@ -196,8 +201,8 @@ bool HleBios::tty_call(u32 table, u32 fn) {
 // Cache, GPU helpers, configuration and the calls that have nothing to do without a BIOS CD
 // driver (psx-spx "BIOS GPU Functions", "BIOS Misc Functions").
 bool HleBios::system_call(u32 table, u32 fn) {
-  if (table == kB0 && fn == 0x51) {  // Krom2RawAdd: the kanji font is in the BIOS ROM; none here
-    return_to_caller(0xFFFFFFFF);      // -1, the result for a code with no glyph
+  if (table == kB0 && fn == 0x51) {  // Krom2RawAdd: a glyph's address in the ROM's kanji font
+    return_to_caller(krom::raw_add(cpu_.reg(kA0r)));
     return true;
   }
   const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1), a2 = cpu_.reg(kA2);

@@ -29,7 +29,7 @@
 //       44h rename  45h erase  46h undelete  47h AddDevice  48h RemoveDevice (both accepted, no
 //       effect)  49h PrintInstalledDevices  4Ah InitCARD2  4Bh StartCARD2  4Ch StopCARD2
 //       4Dh _card_info_subfunc  4Eh _card_write  4Fh _card_read  50h _new_card
-//       51h Krom2RawAdd (always -1: no ROM font)  54h _get_errno  55h _get_error
+//       51h Krom2RawAdd (hle_font.h)  54h _get_errno  55h _get_error
 //       56h GetC0Table  57h GetB0Table  58h _card_chan  5Bh ChangeClearPad  5Ch _card_status
 //       5Dh _card_wait
 //   C0h:00h EnqueueTimerAndVblankIrqs  01h EnqueueSyscallHandler  02h SysEnqIntRP
@@ -96,7 +96,8 @@ class Disc;
 
 class HleBios {
  public:
-  HleBios(Cpu& cpu, Bus& bus, Scheduler& sched) : cpu_(cpu), bus_(bus), sched_(sched) {}
+  // Puts the kanji font into the ROM image (hle_font.h), which a BIOS image loaded later replaces.
+  HleBios(Cpu& cpu, Bus& bus, Scheduler& sched);
 
   // Writes the kernel's vectors, tables and stubs into RAM and sets SR/I_MASK as the BIOS leaves
   // them.

@@ -275,7 +275,7 @@ class HleBios {
 
   // Executables (hle_exec.cpp).
   bool exec_call(u32 fn);
-  u32 exe_load(u32 path_addr, u32 headerbuf, bool body);
+  bool exe_load(u32 path_addr, u32 headerbuf, bool body);
   bool read_exe(const std::string& path, PsxExe& exe, std::vector<u8>& header, std::string& error);
   void copy_text(const PsxExe& exe);
   void zero_fill(u32 addr, u32 size);

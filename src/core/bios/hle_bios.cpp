@@ -48,6 +48,8 @@ void HleBios::install() {
   for (u32 i = 0; i < 12; ++i) poke32(kDefaultExit + 4 * i, 0);
   poke32(kDefaultExit, kRfeStub);
   poke32(kDefaultExit + 4, kExceptionStack);
+  poke32(kFpuStub, 0x44800000);  // mtc1 zero, $f0: COP1 is unusable (SR.CU1 clear), as in atof
+  poke32(kFpuStub + 4, 0);
   const char version[] = "psxrl HLE kernel";
   for (u32 i = 0; i < sizeof version; ++i) poke8(kVersionString + i, static_cast<u8>(version[i]));
   poke32(kRamSizeWord, 2);  // RAM size in MiB, as the BIOS writes it at 60h
@@ -85,6 +87,7 @@ void HleBios::install() {
   conf_ = {kMaxEvents, kMaxThreads, 0x801FFF00};
   io_ = {};
   io2_ = {};
+  search_ = {};
   io_.files[0].device = io_.files[1].device = kDevTty;  // stdin and stdout, as Exec() leaves them
 }
 
@@ -152,14 +155,14 @@ void HleBios::unsupported(const char* table, u32 fn) {
 
 void HleBios::call_a0(u32 fn) {
   if (string_call(fn) || memory_fill_call(fn) || memory_call(kA0, fn) || io_call(kA0, fn) || tty_call(kA0, fn) ||
-      system_call(kA0, fn) || exec_call(fn) || null_call(kA0, fn))
+      system_call(kA0, fn) || exec_call(fn) || stdlib_call(kA0, fn) || null_call(kA0, fn))
     return;
   unsupported("A0h", fn);
 }
 
 void HleBios::call_b0(u32 fn) {
   if (event_call(fn) || interrupt_call(kB0, fn) || thread_call(fn) || table_call(kB0, fn) || memory_call(kB0, fn) || io_call(kB0, fn) || tty_call(kB0, fn) ||
-      system_call(kB0, fn))
+      system_call(kB0, fn) || stdlib_call(kB0, fn))
     return;
   unsupported("B0h", fn);
 }
@@ -321,7 +324,7 @@ void HleBios::print(const std::string& s) {
 }
 
 void HleBios::do_state(StateIO& s) {
-  const u32 version = s.section("HLEK", 5, 2);
+  const u32 version = s.section("HLEK", 6, 2);
   if (version == 2) {
     load_v2_state(s);
   } else {
@@ -340,6 +343,7 @@ void HleBios::do_state(StateIO& s) {
   boot_io.files[0].device = boot_io.files[1].device = kDevTty;
   s.pod_since(version, 4, io_, boot_io);
   s.pod_since(version, 5, io2_, HleIoState2{});  // version 5: card find mode, _card_chan, CdAsync*
+  s.pod_since(version, 6, search_, Search{});     // version 6: a qsort/lsearch/bsearch under way
   s.end_section("HLEK");
 }
 

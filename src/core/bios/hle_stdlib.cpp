@@ -8,6 +8,8 @@
 
 #include <cstdio>
 
+#include "core/bus.h"
+
 namespace psx {
 
 namespace {
@@ -59,6 +61,12 @@ void HleBios::start_search(Search::Op op, u32 key, u32 base, u32 nel, u32 width,
   search_ = {op, key, base, nel, width, cmp, cpu_.reg(kRa), 0, 0, 0, 0, 0};
   if (op == Search::kQsort) {
     if (nel < 2) return finish_search(0);
+    // Each insertion moves elements on the host at once: an array larger than RAM is refused
+    // rather than moved for minutes.
+    if (static_cast<u64>(nel) * width > Bus::kRamSize) {
+      if (on_log) on_log("HLE kernel: qsort of an array larger than RAM (nel * width); array left as is");
+      return finish_search(0);
+    }
     // The BIOS's qsort moves an element through a width-byte block on the heap, so it works only
     // after InitHeap with that much free (psx-spx "A(31h) qsort").
     search_.temp = heap_alloc(heap_, width);

@@ -10,6 +10,7 @@ APT_PACKAGES=(
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev xvfb xauth xdotool
   libtorch-dev pybind11-dev liblua5.4-dev lua5.4 zlib1g-dev libtomlplusplus-dev libcli11-dev libxbyak-dev
   gcc-mipsel-linux-gnu binutils-mipsel-linux-gnu
+  xfonts-shinonome pcf2bdf  # the HLE kernel's kanji font (src/core/bios/hle_font.h) and its test
   # clang's sanitizer and libFuzzer runtimes (scripts/fuzz.sh) are only recommended by clang-16,
   # and recommendations are not installed.
   clang-16 libfuzzer-16-dev libclang-rt-16-dev

@@ -70,6 +70,7 @@ Console::Console()
   hle_.pad_at = [this](int port) -> SioDevice* { return sio0_.pad(port); };
   hle_.disc_in_drive = [this] { return cdrom_.disc(); };
   hle_.card_at = [this](int slot) { return sio0_.memory_card(slot); };
+  hle_.on_exit = bus_.on_exit_request;
   cpu_.reset();
   idle_skip_.set_spu(&spu_);
   set_idle_skip(true);

@@ -1,8 +1,8 @@
 // HLE kernel save states: the kernel's interrupt dispatch, events, pad and heap state all go
 // through do_state, so saving anywhere in a program that lives on kernel interrupt chains, events
 // and callbacks (tests/roms/bios_interrupts.c) and loading into a fresh console gives the same
-// result as not saving; the same for the file functions' handles and the asynchronous CD calls'
-// position.
+// result as not saving; the same for the file functions' handles, the asynchronous CD calls'
+// position and a qsort/lsearch/bsearch under way.
 #include <gtest/gtest.h>
 
 #include "core/console.h"
@@ -101,6 +101,31 @@ TEST(HleBiosState, AsyncCdPositionSurvivesSaveAndLoad) {
     b.load_state(blob);
     Outcome got = finish(b);
     EXPECT_EQ(got.exit_code, expected.exit_code) << "save at cycle " << point << ": " << b.fatal_error();
+  }
+}
+
+// A qsort/lsearch/bsearch under way (HLEK version 6) is kernel state: the comparisons return to
+// the kernel, which resumes the search. Saving anywhere in tests/roms/bios_stdlib.c (mostly inside
+// its 200-key sort, whose comparisons are slow) and loading into a fresh console ends as the
+// uninterrupted run, with the same RAM.
+TEST(HleBiosState, SearchUnderWaySurvivesSaveAndLoad) {
+  const std::string program = PSXRL_BUILD_DIR "/tests/roms/bios_stdlib.exe";
+  Console ref;
+  ref.boot_exe(program);
+  Outcome expected = finish(ref);
+  ASSERT_EQ(expected.exit_code, std::optional<u32>(0)) << ref.fatal_error();
+  for (Cycles point = 1009; point < expected.cycles; point += expected.cycles / 16) {
+    Console a;
+    a.boot_exe(program);
+    a.run_cycles(point);
+    if (a.stopped()) break;
+    std::vector<u8> blob = a.save_state();
+    Console b;
+    b.boot_exe(program);
+    b.load_state(blob);
+    Outcome got = finish(b);
+    EXPECT_EQ(got.exit_code, expected.exit_code) << "save at cycle " << point << ": " << b.fatal_error();
+    EXPECT_EQ(got.ram_hash, expected.ram_hash) << "save at cycle " << point;
   }
 }
 

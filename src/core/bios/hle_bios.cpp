@@ -2,6 +2,7 @@
 // output calls, system information, and guest memory helpers.
 #include "core/bios/hle_bios.h"
 #include "core/bios/hle_costs.h"
+#include "core/bios/hle_font.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -19,6 +20,10 @@ constexpr u32 li_t1(u32 v) { return 0x24090000 | v; }  // ADDIU t1, zero, v
 constexpr u32 lw(u32 rt, u32 offset, u32 base) { return 0x8C000000 | base << 21 | rt << 16 | offset; }
 constexpr u32 kS0 = 16, kGp = 28, kFp = 30;
 }  // namespace
+
+HleBios::HleBios(Cpu& cpu, Bus& bus, Scheduler& sched) : cpu_(cpu), bus_(bus), sched_(sched) {
+  krom::map(bus_.bios());
+}
 
 void HleBios::install() {
   // Each vector: the marker, then "jr ra; nop" so a disabled hook still returns to the caller.
@@ -43,6 +48,8 @@ void HleBios::install() {
   for (u32 i = 0; i < 12; ++i) poke32(kDefaultExit + 4 * i, 0);
   poke32(kDefaultExit, kRfeStub);
   poke32(kDefaultExit + 4, kExceptionStack);
+  poke32(kFpuStub, 0x44800000);  // mtc1 zero, $f0: COP1 is unusable (SR.CU1 clear), as in atof
+  poke32(kFpuStub + 4, 0);
   const char version[] = "psxrl HLE kernel";
   for (u32 i = 0; i < sizeof version; ++i) poke8(kVersionString + i, static_cast<u8>(version[i]));
   poke32(kRamSizeWord, 2);  // RAM size in MiB, as the BIOS writes it at 60h
@@ -80,6 +87,7 @@ void HleBios::install() {
   conf_ = {kMaxEvents, kMaxThreads, 0x801FFF00};
   io_ = {};
   io2_ = {};
+  search_ = {};
   io_.files[0].device = io_.files[1].device = kDevTty;  // stdin and stdout, as Exec() leaves them
 }
 
@@ -147,14 +155,14 @@ void HleBios::unsupported(const char* table, u32 fn) {
 
 void HleBios::call_a0(u32 fn) {
   if (string_call(fn) || memory_fill_call(fn) || memory_call(kA0, fn) || io_call(kA0, fn) || tty_call(kA0, fn) ||
-      system_call(kA0, fn) || exec_call(fn) || null_call(kA0, fn))
+      system_call(kA0, fn) || exec_call(fn) || stdlib_call(kA0, fn) || null_call(kA0, fn))
     return;
   unsupported("A0h", fn);
 }
 
 void HleBios::call_b0(u32 fn) {
   if (event_call(fn) || interrupt_call(kB0, fn) || thread_call(fn) || table_call(kB0, fn) || memory_call(kB0, fn) || io_call(kB0, fn) || tty_call(kB0, fn) ||
-      system_call(kB0, fn))
+      system_call(kB0, fn) || stdlib_call(kB0, fn))
     return;
   unsupported("B0h", fn);
 }
@@ -196,8 +204,8 @@ bool HleBios::tty_call(u32 table, u32 fn) {
 // Cache, GPU helpers, configuration and the calls that have nothing to do without a BIOS CD
 // driver (psx-spx "BIOS GPU Functions", "BIOS Misc Functions").
 bool HleBios::system_call(u32 table, u32 fn) {
-  if (table == kB0 && fn == 0x51) {  // Krom2RawAdd: the kanji font is in the BIOS ROM; none here
-    return_to_caller(0xFFFFFFFF);      // -1, the result for a code with no glyph
+  if (table == kB0 && fn == 0x51) {  // Krom2RawAdd: a glyph's address in the ROM's kanji font
+    return_to_caller(krom::raw_add(cpu_.reg(kA0r)));
     return true;
   }
   const u32 a0 = cpu_.reg(kA0r), a1 = cpu_.reg(kA1), a2 = cpu_.reg(kA2);
@@ -332,7 +340,7 @@ void HleBios::print(const std::string& s) {
 }
 
 void HleBios::do_state(StateIO& s) {
-  const u32 version = s.section("HLEK", 5, 2);
+  const u32 version = s.section("HLEK", 6, 2);
   if (version == 2) {
     load_v2_state(s);
   } else {
@@ -351,6 +359,7 @@ void HleBios::do_state(StateIO& s) {
   boot_io.files[0].device = boot_io.files[1].device = kDevTty;
   s.pod_since(version, 4, io_, boot_io);
   s.pod_since(version, 5, io2_, HleIoState2{});  // version 5: card find mode, _card_chan, CdAsync*
+  s.pod_since(version, 6, search_, Search{});     // version 6: a qsort/lsearch/bsearch under way
   s.end_section("HLEK");
 }
 

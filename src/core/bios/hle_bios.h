@@ -2,14 +2,15 @@
 // state, lays out the kernel's RAM as a BIOS leaves it, owns the exception vector, and services
 // the BIOS calls programs make through the A0h/B0h/C0h vectors and SYSCALL (psx-spx "Kernel
 // (BIOS)"). Every call not listed here stops the console with a message naming it. Supported:
-//   A0h:00h open  01h lseek  02h read  03h write  04h close  05h ioctl  07h isatty  08h getc
-//       09h putc  0Ch strtol  0Dh strtoul  0Eh abs  0Fh labs
+//   A0h:00h open  01h lseek  02h read  03h write  04h close  05h ioctl  06h exit  07h isatty
+//       08h getc  09h putc  0Bh atof (faults: COP1)  0Ch strtol  0Dh strtoul  0Eh abs  0Fh labs
 //       10h atoi  11h atol  13h setjmp  14h longjmp  15h strcat  16h strncat  17h strcmp
 //       18h strncmp  19h strcpy  1Ah strncpy  1Bh strlen  1Ch index  1Dh rindex  1Eh strchr
 //       1Fh strrchr  20h strpbrk  21h strspn  22h strcspn  23h strtok  24h strstr  25h toupper
 //       26h tolower  27h bcopy  28h bzero  29h bcmp  2Ah memcpy  2Bh memset  2Ch memmove
-//       2Dh memcmp  2Eh memchr  2Fh rand  30h srand  33h malloc  34h free  37h calloc
-//       38h realloc  39h InitHeap  3Bh getchar  3Ch putchar  3Dh gets  3Eh puts  3Fh printf
+//       2Dh memcmp  2Eh memchr  2Fh rand  30h srand  31h qsort  32h strtod (faults: COP1)
+//       33h malloc  34h free  35h lsearch  36h bsearch  37h calloc  38h realloc  39h InitHeap
+//       3Ah _exit  3Bh getchar  3Ch putchar  3Dh gets  3Eh puts  3Fh printf
 //       41h LoadTest  42h Load  43h Exec  44h FlushCache
 //       48h SendGP1Command  49h GPU_cw  4Ah GPU_cwp  4Dh GetGPUStatus  4Eh gpu_sync  51h LoadExec
 //       54h/71h _96_init  55h/70h _bu_init  56h/72h _96_remove  78h CdAsyncSeekL
@@ -24,12 +25,12 @@
 //       0Ah WaitEvent  0Bh TestEvent  0Ch EnableEvent  0Dh DisableEvent  0Eh OpenTh  0Fh CloseTh
 //       10h ChangeTh  12h InitPad  13h StartPad  14h StopPad  17h ReturnFromException
 //       18h ResetEntryInt (SetDefaultExitFromException)  19h HookEntryInt (SetCustomExitFrom-
-//       Exception)  20h UnDeliverEvent  32h-37h, 39h-3Ch as A0h:00h-05h, 07h-09h, 3Bh
+//       Exception)  20h UnDeliverEvent  32h-37h, 39h-3Ch as A0h:00h-05h, 07h-09h, 3Bh  38h exit
 //       3Dh putchar  3Eh gets  3Fh puts  40h cd  41h format  42h firstfile2  43h nextfile
 //       44h rename  45h erase  46h undelete  47h AddDevice  48h RemoveDevice (both accepted, no
 //       effect)  49h PrintInstalledDevices  4Ah InitCARD2  4Bh StartCARD2  4Ch StopCARD2
 //       4Dh _card_info_subfunc  4Eh _card_write  4Fh _card_read  50h _new_card
-//       51h Krom2RawAdd (always -1: no ROM font)  54h _get_errno  55h _get_error
+//       51h Krom2RawAdd (hle_font.h)  54h _get_errno  55h _get_error
 //       56h GetC0Table  57h GetB0Table  58h _card_chan  5Bh ChangeClearPad  5Ch _card_status
 //       5Dh _card_wait
 //   C0h:00h EnqueueTimerAndVblankIrqs  01h EnqueueSyscallHandler  02h SysEnqIntRP
@@ -42,9 +43,8 @@
 // "cdrom:" (hle_cdfs.cpp: the disc's ISO 9660 files, sectors read from the image at once) and
 // "bu00:"/"bu10:" (hle_memcard.cpp: the emulated cards' directory and sectors, accessed at once,
 // completion events delivered before the call returns). Executables (hle_exec.cpp) load from
-// cdrom:. Not supported (they stop the console): qsort/bsearch/lsearch (callbacks into
-// comparison functions), atof/strtod (they need the absent COP1), exit/_exit, and the BIOS's
-// internal device functions (A0h:5Bh-6Fh, 90h-98h) and kernel set-up calls not listed.
+// cdrom:. Not supported (they stop the console): the BIOS's internal device functions
+// (A0h:5Bh-6Fh, 90h-98h) and kernel set-up calls not listed.
 //
 // Kernel RAM (psx-spx "BIOS Memory Map"), laid out at install(): the vectors at 80h (exception)
 // and A0h/B0h/C0h, the table of tables at 100h (ExCB, PCB, TCB, EvCB pointers and sizes), the
@@ -96,7 +96,8 @@ class Disc;
 
 class HleBios {
  public:
-  HleBios(Cpu& cpu, Bus& bus, Scheduler& sched) : cpu_(cpu), bus_(bus), sched_(sched) {}
+  // Puts the kanji font into the ROM image (hle_font.h), which a BIOS image loaded later replaces.
+  HleBios(Cpu& cpu, Bus& bus, Scheduler& sched);
 
   // Writes the kernel's vectors, tables and stubs into RAM and sets SR/I_MASK as the BIOS leaves
   // them.
@@ -112,6 +113,8 @@ class HleBios {
   std::function<void(char)> on_tty;
   std::function<void(const std::string&)> on_log;
   std::function<void(const std::string&)> on_fatal;
+  // The program called exit/_exit with this code (hle_stdlib.cpp).
+  std::function<void(u32)> on_exit;
   // The controller in port 0/1 for the kernel's pad handler (nullptr when none is plugged).
   std::function<SioDevice*(int port)> pad_at;
   // The disc in the drive and the memory card in slot 0/1 for the file functions (nullptr: none).
@@ -142,6 +145,7 @@ class HleBios {
   // program's entry (start_program).
   static constexpr u32 kBootStub = 0x80000630;
   static constexpr u32 kVersionString = 0x80000640;
+  static constexpr u32 kFpuStub = 0x80000660;  // atof/strtod: a COP1 instruction (hle_stdlib.cpp)
   static constexpr u32 kRamSizeWord = 0x80000060;
   static constexpr u32 kStubs = 0x80001000;        // one "j tail; li t1,fn" per table entry
   static constexpr u32 kStubTails = 0x80001B00;    // per table: jump to the KSEG1 vector
@@ -155,12 +159,19 @@ class HleBios {
 
   // What to do when a program function called by the kernel returns.
   struct Resume {
-    enum Kind : u32 { kChainFunc1, kDispatch, kCaller } kind;
+    enum Kind : u32 { kChainFunc1, kDispatch, kCaller, kSearch } kind;
     u32 value;  // kChainFunc1: its func2; kCaller: the caller's ra
     u32 in_dispatch;
   };
   struct Heap {
     u32 start = 0, end = 0;
+  };
+  // qsort/lsearch/bsearch in progress (hle_stdlib.cpp): arguments, the caller's ra, and the step.
+  struct Search {
+    enum Op : u32 { kNone, kQsort, kLsearch, kBsearch } op = kNone;
+    u32 key = 0, base = 0, nel = 0, width = 0, cmp = 0, ra = 0;
+    u32 i = 0, lo = 0, hi = 0, mid = 0;  // lsearch: element i; bsearch/qsort: [lo, hi), mid
+    u32 temp = 0;                        // qsort: the heap block an element moves through
   };
 
   // Dispatch (hle_bios.cpp).
@@ -225,6 +236,16 @@ class HleBios {
   u32 str_to_long(u32 src, u32 end_ptr, u32 base);
   s32 compare(u32 a, u32 b, u32 n, bool stop_at_nul) const;
 
+  // Searching, sorting, floating point and exit (hle_stdlib.cpp).
+  bool stdlib_call(u32 table, u32 fn);
+  void program_exit(const char* name, u32 code);
+  void start_search(Search::Op op, u32 key, u32 base, u32 nel, u32 width, u32 cmp);
+  void next_comparison();
+  void compare(u32 a, u32 b);
+  void comparison_returned(s32 result);
+  void insert_element(u32 from, u32 to);
+  void finish_search(u32 v0);
+
   // printf formatting (hle_printf.cpp).
   std::string format(u32 fmt_addr) const;
 
@@ -274,7 +295,7 @@ class HleBios {
 
   // Executables (hle_exec.cpp).
   bool exec_call(u32 fn);
-  u32 exe_load(u32 path_addr, u32 headerbuf, bool body);
+  bool exe_load(u32 path_addr, u32 headerbuf, bool body);
   bool read_exe(const std::string& path, PsxExe& exe, std::vector<u8>& header, std::string& error);
   void copy_text(const PsxExe& exe);
   void zero_fill(u32 addr, u32 size);
@@ -316,6 +337,7 @@ class HleBios {
   std::set<u32> warned_;
   HleIoState io_;
   HleIoState2 io2_;
+  Search search_;
 };
 
 }  // namespace psx

@@ -49,8 +49,12 @@ bool cdrom_path(const std::string& path) {
 bool HleBios::exec_call(u32 fn) {
   const u32 a0 = cpu_.reg(kRegA0), a1 = cpu_.reg(kRegA1), a2 = cpu_.reg(kRegA2);
   switch (fn) {
-    case 0x41: return_to_caller(exe_load(a0, a1, false)); return true;  // LoadTest: the entry point, or 0
-    case 0x42: return_to_caller(exe_load(a0, a1, true) ? 1 : 0); return true;  // Load: 1, or 0
+    // LoadTest and Load return 1, or 0 when the file cannot be loaded. psx-spx gives no result and
+    // no Sony document was found; this is OpenBIOS's (pcsx-redux src/mips/openbios/kernel/
+    // psxexe.c, loadExeHeader/loadExe), a reimplementation that follows Sony's kernel down to its
+    // quirks (the 3Ch header bytes copied, LoadExec's 28-byte name buffer psx-spx also describes).
+    case 0x41: return_to_caller(exe_load(a0, a1, false) ? 1 : 0); return true;
+    case 0x42: return_to_caller(exe_load(a0, a1, true) ? 1 : 0); return true;
     case 0x43: exec(a0, a1, a2); return true;
     case 0x51: load_exec(read_string(a0), a1, a2); return true;
     case 0xA0: warm_boot(); return true;
@@ -84,19 +88,19 @@ bool HleBios::read_exe(const std::string& path, PsxExe& exe, std::vector<u8>& he
 }
 
 // LoadTest/Load: the header words to headerbuf, and for Load the text to its address (then the
-// i-cache is flushed, as Load calls FlushCache). Returns the entry point, or 0 with a log message.
-u32 HleBios::exe_load(u32 path_addr, u32 headerbuf, bool body) {
+// i-cache is flushed, as Load calls FlushCache). False, with a log message, when it cannot load.
+bool HleBios::exe_load(u32 path_addr, u32 headerbuf, bool body) {
   const std::string path = read_string(path_addr);
   PsxExe exe;
   std::vector<u8> header;
   std::string error;
   if (!read_exe(path, exe, header, error)) {
     if (on_log) on_log(std::string("HLE kernel: ") + (body ? "Load" : "LoadTest") + " refused " + error);
-    return 0;
+    return false;
   }
   for (u32 i = 0; i < kHeaderBytes; ++i) poke8(headerbuf + i, header[i]);
   if (body) copy_text(exe);
-  return exe.pc;
+  return true;
 }
 
 // Clears a RAM range (Exec's memfill region); addresses outside RAM are left alone.

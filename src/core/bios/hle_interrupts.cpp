@@ -50,9 +50,11 @@ void HleBios::exception() {
 // the kernel's return SYSCALL, which changed the COP0 registers).
 void HleBios::fail_exception() {
   u32 tcb = current_tcb(), cause = peek32(tcb + kTcbCause);
-  char msg[128];
-  std::snprintf(msg, sizeof msg, "unhandled CPU exception %u (Cause 0x%08X) at EPC 0x%08X, BadVaddr 0x%08X",
-                (cause >> 2) & 0x1F, cause, peek32(tcb + kTcbEpc), cpu_.cop0().badvaddr);
+  char msg[192];
+  const u32 epc = peek32(tcb + kTcbEpc);
+  std::snprintf(msg, sizeof msg, "unhandled CPU exception %u (Cause 0x%08X) at EPC 0x%08X, BadVaddr 0x%08X%s",
+                (cause >> 2) & 0x1F, cause, epc, cpu_.cop0().badvaddr,
+                epc == kFpuStub ? " (atof/strtod: the BIOS's code uses the absent COP1, psx-spx)" : "");
   dispatching_ = false;
   if (on_fatal) on_fatal(msg);
   cpu_.stop();
@@ -199,6 +201,7 @@ void HleBios::guest_returned() {
       dispatch_next();
       return;
     case Resume::kDispatch: dispatch_next(); return;
+    case Resume::kSearch: comparison_returned(static_cast<s32>(v0)); return;
     case Resume::kCaller:
       if (!callbacks_.empty()) {
         u32 f = callbacks_.front();

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "core/cpu/cop0.h"
+#include "core/cpu/decode.h"
 #include "core/gte/gte.h"
 #include "core/irq.h"
 #include "core/scheduler.h"
@@ -166,8 +167,20 @@ class CpuT {
   // `first` and `count`: the bytes of the word LWL/LWR merge (Bus::read_merged()).
   bool timed_read(u32 addr, u32 width, u32 rt, u32& v, u32 first = 0, u32 count = 4);
   // The bus-access tail of a load through the bus interface (the comment at kIoTail), set once
-  // its read is made: load_done_at_ as a RAM load's shadow leaves it.
-  void io_tail(u32 addr);
+  // its read is made: load_done_at_ as a RAM load's shadow leaves it. `reach`
+  // (cpu_detail::kTailUnknown ...): what a caller that knows the next instructions (the
+  // recompiler, from the words it compiled) already knows of which one meets the tail.
+  void io_tail(u32 addr, u32 reach = cpu_detail::kTailUnknown) {
+    if constexpr (kLoadShadow) {
+      using namespace cpu_detail;
+      if (!BusT::bus_load(addr) || !bus_.cached_code(current_pc_)) return;
+      if (reach == kTailUnknown || reach == kTailPastFirst) reach = tail_reach(reach);
+      load_done_at_ = sched_.now() + kIoTail + reach;
+      shadow_reg_ = 0;  // a reader of rt does not wait (the comment at kIoTail)
+    }
+  }
+  // The tail's reach (1, 2 or 3) from the instructions at pc_ and pc_ + 4 that `known` leaves open.
+  u32 tail_reach(u32 known) const;
   // Whether the instruction at vaddr meets such a tail: its fetch goes to memory or it is a load.
   bool meets_tail(u32 vaddr) const;
   void wait_load() {

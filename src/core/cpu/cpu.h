@@ -220,15 +220,16 @@ class CpuT {
   // measurements by rustation's author (gist.github.com/simias/a4c3fa560de72e67a5b0b2ce9cf0298c;
   // cycles from the sequence's start until every load has completed):
   //   lw;nop 8 | lw t0;lw t1;nop 14 | lw t0;lw t0;nop 15 | three lw, other registers, + nop 20,
-  //   the same register 22 | lw + 6 nops 8, + 7 nops 9 | lw t0; move t4,t0 (delay slot) 8.
+  //   the same register 22 | lw + 6 nops 8, + 7 nops 9 | lw t0; move t4,t0 (delay slot) 8 |
+  //   lw t0; nop; move t4,t0; 4 nops 13.
   // Model: a load instruction takes kLoadIssue cycles and its RAM access starts one cycle after
   // that, or when the previous load's access ends (a cycle later still for a load in the delay
   // slot of a load to the same register), and lasts kLoadBus cycles; the CPU waits only to start
   // that access, so one load waits at a time. Following instructions run in the access's shadow,
   // except that another memory access (a load, an i-cache miss) waits for it to end, and an
   // instruction after the delay slot that reads the loaded register ends no earlier than it (the
-  // value is there a cycle before: the instruction executes in the access's last cycle). The
-  // measurements include no such use, so that last rule is this model's, not a measured figure.
+  // value is there a cycle before: the instruction executes in the access's last cycle), as
+  // the last measurement has it.
   // Timed as tests/roms/cpu_load_timing does (timer reads around the sequence,
   // an empty sequence's time subtracted; the closing read's first cycle overlaps the wait), a
   // sequence takes max(e, C - 1): e when its instructions end, C when its last access ends.

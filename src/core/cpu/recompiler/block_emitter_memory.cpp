@@ -200,7 +200,7 @@ void Impl::io_address_check(const Step& s, Label& slow) {
 // and the load shadow (shadow() checks it here as at a segment's last instruction). The call
 // leaves a load's value in eax and whether the CPU must leave native code in r9d (io_checks()).
 // r10, a load landing, is kept across it. The call for a load knows where the port's bus tail
-// ends as far as the words compiled tell (tail_reach()).
+// ends as far as the words compiled tell (tail_plan()).
 void Impl::io_access(std::span<const Step> rest, size_t k) {
   const Step& s = rest[0];
   settle();  // a load's is made already (uses_time())

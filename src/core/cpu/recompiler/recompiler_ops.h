@@ -168,7 +168,7 @@ bool RecompilerT<BusT>::port_write(Cpu& c, u32 address, u32 value) {
 
 // A native I/O load's access (Impl::io_access()): port_read(), the native code having made
 // CpuT::load()'s checks and the instruction's bookkeeping, with where the bus tail ends as far as
-// the compiled words tell (`Reach`, Impl::tail_reach()). Events may run during the read
+// the compiled words tell (`Reach`, Impl::tail_plan()). Events may run during the read
 // (Bus::catch_up()), so the answer's bit 32 says where the CPU may no longer run natively:
 // stopped, a hook armed or an interrupt pending, as may_step() would find before the next
 // instruction (the native code checks the deadline).

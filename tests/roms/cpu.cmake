@@ -46,7 +46,7 @@ psx_add_run_test(rom.cpu_code_in_io_recompiler CODE 0 CHECKS 11
 psx_add_rom_test(cpu_dcache SOURCES cpu_dcache.c cpu_dcache.S CHECKS 10)
 psx_add_rom_test(cpu_icache SOURCES cpu_icache.c cpu_icache.S CHECKS 12)
 # Load timing: one check per measured sequence (SEQUENCES in the source).
-psx_add_rom_test(cpu_load_timing SOURCES cpu_load_timing.c cpu_load_timing.S CHECKS 8)
+psx_add_rom_test(cpu_load_timing SOURCES cpu_load_timing.c cpu_load_timing.S CHECKS 9)
 # On-chip port load timing (issue 59 item 5, pcsx-redux load-timings): 8 spacings.
 psx_add_rom_test(cpu_load_sweep SOURCES cpu_load_sweep.c cpu_load_sweep.S CHECKS 8)
 psx_add_run_test(rom.cpu_load_sweep_recompiler CODE 0 CHECKS 8
@@ -62,6 +62,6 @@ psx_add_rom_test(cpu_io_width SOURCES cpu_io_width.c CHECKS 28)
 psx_add_run_test(rom.cpu_io_width_recompiler CODE 0 CHECKS 28
   RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_io_width.exe --frames 600 --expect-exit --cpu recompiler)
 # Load cost by region and width (issue 59 item 5): 12 regions x 3 widths = 36.
-psx_add_rom_test(cpu_access_time SOURCES cpu_access_time.c cpu_access_time.S CHECKS 36)
-psx_add_run_test(rom.cpu_access_time_recompiler CODE 0 CHECKS 36
+psx_add_rom_test(cpu_access_time SOURCES cpu_access_time.c cpu_access_time.S CHECKS 48)
+psx_add_run_test(rom.cpu_access_time_recompiler CODE 0 CHECKS 48
   RUN --exe ${CMAKE_CURRENT_BINARY_DIR}/cpu_access_time.exe --frames 600 --expect-exit --cpu recompiler)

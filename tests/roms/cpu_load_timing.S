@@ -80,3 +80,12 @@
         lw      $t0, 0($a0)
         move    $t4, $t0
         DONE
+
+        TIMED   t_lw_nop_use
+        lw      $t0, 0($a0)
+        nop
+        move    $t4, $t0
+        .rept   4
+        nop
+        .endr
+        DONE

@@ -343,6 +343,43 @@ TEST(RecompilerTiming, LineMissesInsideNativeRuns) {
   }
 }
 
+// An I/O load's bus tail ends by the two instructions after it (CpuT::io_tail()); the native
+// call knows them from the words compiled on the load's line, and on the next line while that
+// line is whole in the i-cache (Impl::tail_plan(), call_io_load()). Polls of I_STAT at each word
+// of a line, followed by a RAM load first, second or not at all, in a loop that every second
+// pass runs code 4 KiB further on, which evicts every second line of the loop: there the next
+// line misses, its fetch meets the tail first, and the call looks for itself.
+TEST(RecompilerTiming, PortLoadTailsAcrossLines) {
+  constexpr u32 kA = 0x100, kB = kA + 0x1000 + 0x10, kT2 = 10, kAt = 1;
+  std::vector<u32> code = {itype(0x0F, 0, kAt, 0xFFFE), itype(0x0F, 0, kT2, 1),  // lui at; lui t2, 1
+                           itype(0x0D, kT2, kT2, 0xE888),                       // ori t2: 1E888h
+                           itype(0x2B, kAt, kT2, 0x130),                        // sw t2, BCC
+                           j(kBase + kA), kNop};
+  code.resize(kA / 4, kNop);
+  for (u32 reach = 1; reach <= 3; ++reach) {
+    for (u32 word = 0; word < 4; ++word) {
+      while (code.size() % 4 != word) code.push_back(rtype(0x21, kT1, kT2, kT2));  // addu t2, t1, t2
+      code.push_back(itype(0x23, kS5, kT0, kIStat - kTimers));                     // lw t0, I_STAT
+      for (u32 n = 1; n < 3; ++n)
+        code.push_back(n == reach ? itype(0x23, kS7, kT1, 4 * word) : rtype(0x21, kT0, kT2, kT2));
+    }
+  }
+  const u32 end = u32(code.size());
+  code.insert(code.end(), {itype(0x09, kT3, kT3, 1), itype(0x0C, kT3, kT2, 1),  // addiu t3; andi t2, t3, 1
+                           itype(0x04, kT2, 0, (kA / 4) - (end + 3)), kNop,     // beq t2, r0, the loop
+                           j(kBase + kB), kNop});
+  for (u32 line = kB; line < kB + 4 * (end - kA / 4) + 32; line += 32) {
+    code.resize(line / 4, kNop);
+    code.insert(code.end(), {j(kBase + line + 32), kNop});
+  }
+  code.back() = kNop;
+  code[code.size() - 2] = j(kBase + kA);
+  for (u32 seed = 1; seed <= 3; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_same_trace(code, seed, 5 + 9 * seed, 1);
+  }
+}
+
 TEST(RecompilerTiming, ProbedNativeLoops) {
   for (int seed = 1; seed <= test_scale::sized(6, 2); ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));

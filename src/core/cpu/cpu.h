@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "core/cpu/cop0.h"
+#include "core/cpu/decode.h"
 #include "core/gte/gte.h"
 #include "core/irq.h"
 #include "core/scheduler.h"
@@ -166,8 +167,20 @@ class CpuT {
   // `first` and `count`: the bytes of the word LWL/LWR merge (Bus::read_merged()).
   bool timed_read(u32 addr, u32 width, u32 rt, u32& v, u32 first = 0, u32 count = 4);
   // The bus-access tail of a load through the bus interface (the comment at kIoTail), set once
-  // its read is made: load_done_at_ as a RAM load's shadow leaves it.
-  void io_tail(u32 addr);
+  // its read is made: load_done_at_ as a RAM load's shadow leaves it. `reach`
+  // (cpu_detail::kTailUnknown ...): what a caller that knows the next instructions (the
+  // recompiler, from the words it compiled) already knows of which one meets the tail.
+  void io_tail(u32 addr, u32 reach = cpu_detail::kTailUnknown) {
+    if constexpr (kLoadShadow) {
+      using namespace cpu_detail;
+      if (!BusT::bus_load(addr) || !bus_.cached_code(current_pc_)) return;
+      if (reach == kTailUnknown || reach == kTailPastFirst) reach = tail_reach(reach);
+      load_done_at_ = sched_.now() + kIoTail + reach;
+      shadow_reg_ = 0;  // a reader of rt does not wait (the comment at kIoTail)
+    }
+  }
+  // The tail's reach (1, 2 or 3) from the instructions at pc_ and pc_ + 4 that `known` leaves open.
+  u32 tail_reach(u32 known) const;
   // Whether the instruction at vaddr meets such a tail: its fetch goes to memory or it is a load.
   bool meets_tail(u32 vaddr) const;
   void wait_load() {
@@ -207,15 +220,16 @@ class CpuT {
   // measurements by rustation's author (gist.github.com/simias/a4c3fa560de72e67a5b0b2ce9cf0298c;
   // cycles from the sequence's start until every load has completed):
   //   lw;nop 8 | lw t0;lw t1;nop 14 | lw t0;lw t0;nop 15 | three lw, other registers, + nop 20,
-  //   the same register 22 | lw + 6 nops 8, + 7 nops 9 | lw t0; move t4,t0 (delay slot) 8.
+  //   the same register 22 | lw + 6 nops 8, + 7 nops 9 | lw t0; move t4,t0 (delay slot) 8 |
+  //   lw t0; nop; move t4,t0; 4 nops 13.
   // Model: a load instruction takes kLoadIssue cycles and its RAM access starts one cycle after
   // that, or when the previous load's access ends (a cycle later still for a load in the delay
   // slot of a load to the same register), and lasts kLoadBus cycles; the CPU waits only to start
   // that access, so one load waits at a time. Following instructions run in the access's shadow,
   // except that another memory access (a load, an i-cache miss) waits for it to end, and an
   // instruction after the delay slot that reads the loaded register ends no earlier than it (the
-  // value is there a cycle before: the instruction executes in the access's last cycle). The
-  // measurements include no such use, so that last rule is this model's, not a measured figure.
+  // value is there a cycle before: the instruction executes in the access's last cycle), as
+  // the last measurement has it.
   // Timed as tests/roms/cpu_load_timing does (timer reads around the sequence,
   // an empty sequence's time subtracted; the closing read's first cycle overlaps the wait), a
   // sequence takes max(e, C - 1): e when its instructions end, C when its last access ends.

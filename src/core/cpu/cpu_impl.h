@@ -227,18 +227,15 @@ bool CpuT<BusT>::timed_read(u32 addr, u32 width, u32 rt, u32& v, u32 first, u32 
   return ok;
 }
 
-// Called with the read made (the time at the next instruction's start) and the pc at the next
-// instruction: the tail's end as the comment at kIoTail says, from the next two instructions
-// (the second follows the first in memory, also as a branch's delay slot). Only memory accesses
-// wait for it (wait_load(), a fetch's busy_until), as shadow_reg_ stays clear.
+// io_tail() is called with the read made (the time at the next instruction's start) and the pc
+// at the next instruction: the tail's end as the comment at kIoTail says, from the next two
+// instructions (the second follows the first in memory, also as a branch's delay slot), looked
+// at here where the caller does not know them. Only memory accesses wait for it (wait_load(), a
+// fetch's busy_until), as shadow_reg_ stays clear.
 template <class BusT>
-void CpuT<BusT>::io_tail(u32 addr) {
-  if constexpr (kLoadShadow) {
-    if (!BusT::bus_load(addr) || !bus_.cached_code(current_pc_)) return;
-    const Cycles now = sched_.now();
-    load_done_at_ = meets_tail(pc_) ? now + kIoTail + 1 : meets_tail(pc_ + 4) ? now + kIoTail + 2 : now + kIoTail + 3;
-    shadow_reg_ = 0;  // a reader of rt does not wait (the comment at kIoTail)
-  }
+u32 CpuT<BusT>::tail_reach(u32 known) const {
+  if (known == cpu_detail::kTailUnknown && meets_tail(pc_)) return 1;
+  return meets_tail(pc_ + 4) ? 2 : 3;
 }
 
 template <class BusT>
@@ -246,9 +243,7 @@ bool CpuT<BusT>::meets_tail(u32 vaddr) const {
   if constexpr (kLoadShadow) {
     u32 w;
     if (bus_.fetch_misses(vaddr)) return true;
-    if (!bus_.peek_code(vaddr, w)) return false;
-    const u32 op = w >> 26;
-    return (op >= 0x20 && op <= 0x26) || op == 0x32;  // LB..LWR, LWC2
+    return bus_.peek_code(vaddr, w) && cpu_detail::loads_memory(w);
   }
   return false;
 }

@@ -17,6 +17,15 @@ inline u32 simm(u32 i) { return static_cast<u32>(static_cast<s32>(static_cast<s1
 // JR or JALR: the only jumps whose target is not word-aligned by construction.
 inline bool jumps_by_register(u32 i) { return op(i) == 0 && (funct(i) == 0x08 || funct(i) == 0x09); }
 
+// Whether instruction i is a load that goes to memory (LB..LWR, LWC2): one that meets a port load's
+// bus tail (CpuT::meets_tail()).
+inline bool loads_memory(u32 i) { return (op(i) >= 0x20 && op(i) <= 0x26) || op(i) == 0x32; }
+
+// Where a port load's bus tail ends (CpuT::io_tail()), counted in cycles past kIoTail: 1 when the
+// first instruction after the load meets it, 2 the second, 3 neither. kTailUnknown: neither
+// instruction known yet; kTailPastFirst: the first known not to meet it, the second not known.
+inline constexpr u32 kTailUnknown = 0, kTailPastFirst = 4, kTailReaches = 5;
+
 // Whether instruction i reads general register r (nonzero) as a source operand.
 inline bool reads_reg(u32 i, u32 r) {
   const bool s = rs(i) == r, t = rt(i) == r;

@@ -397,7 +397,7 @@ void Impl::native(std::span<const Step> rest, size_t k, bool after_branch, Segme
   }
   const u32 d = dest(op, s.word);
   if (is_branch(op)) branch(op, s.pc, s.word, split);
-  else if (s.io != 0) io_access(s, k);
+  else if (s.io != 0) io_access(rest, k);
   else if (is_load(op)) load(op, s.word, pipe, seg.shadow[k] != Shadow::check);
   else if (is_store_or_swc2(op)) store(op, s.word);
   else if (op == NativeOp::Lwc2) lwc2(s.word);

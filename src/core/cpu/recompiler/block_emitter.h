@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "core/cpu/decode.h"
 #include "core/cpu/recompiler/block_links.h"
 #include "core/types.h"
 
@@ -117,8 +118,9 @@ class BlockEmitter {
     u32 recent_count;
     // An I/O load's or store's access for native code (RecompilerT::io_load(), io_store()), for
     // LB, LH, LW, LBU and LHU, and SB, SH and SW, in that order: the value loaded, with bit 32
-    // set where the CPU may no longer run natively.
-    u64 (*io_loads[5])(void* context, u32 address);
+    // set where the CPU may no longer run natively. A load's for each reach of its bus tail
+    // (cpu_detail::kTailReaches, Impl::tail_plan()).
+    u64 (*io_loads[5][cpu_detail::kTailReaches])(void* context, u32 address);
     u64 (*io_stores[3])(void* context, u32 address, u32 value);
   };
 

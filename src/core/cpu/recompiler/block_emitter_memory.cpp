@@ -5,8 +5,10 @@
 // KSEG0). Everything else about an access (an address error, user mode, a debug data break armed,
 // an isolated cache for a store, D-cache mode, memory watches, I/O and the other regions) sends
 // the instruction to its call step.
+#include "core/bus.h"
 #include "core/cpu/cop0.h"
 #include "core/cpu/decode.h"
+#include "core/cpu/icache.h"
 #include "core/cpu/recompiler/code_pages.h"
 #include "core/cpu/recompiler/emitter_impl.h"
 
@@ -197,8 +199,10 @@ void Impl::io_address_check(const Step& s, Label& slow) {
 // access native in one), the pipeline (plan() keeps the load before this one out of r10 alone)
 // and the load shadow (shadow() checks it here as at a segment's last instruction). The call
 // leaves a load's value in eax and whether the CPU must leave native code in r9d (io_checks()).
-// r10, a load landing, is kept across it.
-void Impl::io_access(const Step& s, size_t k) {
+// r10, a load landing, is kept across it. The call for a load knows where the port's bus tail
+// ends as far as the words compiled tell (tail_plan()).
+void Impl::io_access(std::span<const Step> rest, size_t k) {
+  const Step& s = rest[0];
   settle();  // a load's is made already (uses_time())
   const bool store = is_store(s.native);
   if (store) {
@@ -217,13 +221,51 @@ void Impl::io_access(const Step& s, size_t k) {
   lea(rdi, ptr[rbx - lay.bias]);
   mov(esi, r13d);
   if (store) call_leaf(reinterpret_cast<const void*>(lay.io_stores[u32(s.native) - u32(NativeOp::Sb)]));
-  else call_leaf(reinterpret_cast<const void*>(lay.io_loads[u32(s.native) - u32(NativeOp::Lb)]));
+  else call_io_load(s, tail_plan(rest));
   reload();
   add(rsp, 8);
   pop(r10);
   sub(instructions, int(k + 1));
   mov(r9, rax);
   shr(r9, 32);
+}
+
+// What CpuT::io_tail() would find of the two instructions after the I/O load rest[0], from the
+// words compiled where the i-cache is known to hold them. On the load's own line: that line's
+// check (line_check(), by the guard or at the line's first instruction) found every word of the
+// run on it a hit holding the word compiled, and nothing up to the load's tail changes that (the
+// i-cache changes by the CPU's fetches and stores alone; io_checks()). On the next line, where
+// its check is still to come: when that line is whole and not stale (call_io_load() tests it),
+// as line_check() reasons. Past the next line or the segment, the call looks itself.
+Impl::TailPlan Impl::tail_plan(std::span<const Step> rest) {
+  using namespace cpu_detail;
+  const u32 line = rest[0].pc & ~15u;
+  TailPlan plan;
+  const auto known = [&](size_t n) {
+    if (n >= rest.size() || rest[n].pc != rest[0].pc + 4 * n) return false;
+    if ((rest[n].pc & ~15u) == line) return true;
+    if ((rest[n].pc & ~15u) != line + 16) return false;
+    plan.next_line = line + 16;
+    return true;
+  };
+  if (!known(1)) return {};
+  if (loads_memory(rest[1].word)) plan.reach = 1;
+  else plan.reach = known(2) ? (loads_memory(rest[2].word) ? 2 : 3) : kTailPastFirst;
+  return plan;
+}
+
+// The call of RecompilerT::io_load() for the I/O load s, with the tail's reach that `plan`
+// gives, or, where the plan needs the next line and that line is not whole (a miss or a part
+// of the line) or stale, with the reach the call finds itself.
+void Impl::call_io_load(const Step& s, const TailPlan& plan) {
+  const auto* row = lay.io_loads[u32(s.native) - u32(NativeOp::Lb)];
+  mov(rax, reinterpret_cast<u64>(row[plan.reach]));
+  if (plan.next_line) {
+    mov(rcx, reinterpret_cast<u64>(row[cpu_detail::kTailUnknown]));
+    cmp(icache_tag(*plan.next_line), (Bus::physical(*plan.next_line) & ICache::kTagMask) | 0xF);
+    cmovne(rax, rcx);
+  }
+  call(rax);
 }
 
 // After a native I/O access (instruction k), the guard's checks for the instructions after it that

@@ -291,7 +291,15 @@ struct BlockEmitter::Impl : Xbyak::CodeGenerator {
   void address_checks(NativeOp op, u32 i, Xbyak::Label& slow);
   void load(NativeOp op, u32 i, const Pipe& pipe, bool bus_free);
   void io_address_check(const Step& s, Xbyak::Label& slow);
-  void io_access(const Step& s, size_t k);
+  void io_access(std::span<const Step> rest, size_t k);
+  // Where an I/O load's bus tail ends as far as the words compiled tell (tail_plan()): `reach`
+  // (cpu_detail::kTailUnknown ...), which holds where `next_line`, when set, is a hit.
+  struct TailPlan {
+    u32 reach = cpu_detail::kTailUnknown;
+    std::optional<u32> next_line;
+  };
+  static TailPlan tail_plan(std::span<const Step> rest);
+  void call_io_load(const Step& s, const TailPlan& plan);
   void io_checks(std::span<const Step> rest, size_t k, Segment& seg);
   void merge_unaligned(NativeOp op, u32 rt, const Pipe& pipe);
   void store(NativeOp op, u32 i);

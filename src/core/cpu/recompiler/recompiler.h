@@ -24,6 +24,7 @@
 #include <memory>
 #include <ostream>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/cpu/cpu.h"
@@ -115,11 +116,13 @@ class RecompilerT {
   template <NativeOp K>
   static void load_call(Cpu& c, u32 instr);
   template <NativeOp K>
-  static u32 port_read(Cpu& c, u32 address);
+  static u32 port_read(Cpu& c, u32 address, u32 reach = cpu_detail::kTailUnknown);
   template <NativeOp K>
   static bool port_write(Cpu& c, u32 address, u32 value);
-  template <NativeOp K>
+  template <NativeOp K, u32 Reach>
   static u64 io_load(void* context, u32 address);
+  template <NativeOp K, u32... Reach>
+  static void set_io_loads(BlockEmitter::Layout& l, std::integer_sequence<u32, Reach...>);
   template <NativeOp K>
   static u64 io_store(void* context, u32 address, u32 value);
   static bool leaves_native(const Cpu& c) { return c.stop_ || c.hook_armed_ || c.interrupt_pending(); }

@@ -140,14 +140,15 @@ void RecompilerT<BusT>::load_call(Cpu& c, u32 i) {
 
 // What CpuT::load() does past its checks for an I/O port: timed_read() waits for a load in
 // flight (an access outside RAM does not overlap one), reads the port and leaves its bus tail
-// (CpuT::io_tail()); the value, sign-extended for LB/LH.
+// (CpuT::io_tail(), with what the caller knows of where it ends); the value, sign-extended for
+// LB/LH.
 template <class BusT>
 template <NativeOp K>
-u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address) {
+u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address, u32 reach) {
   c.wait_load();
   u32 v;
   c.bus_.read_io(address, v, access_width(K));
-  c.io_tail(address);
+  c.io_tail(address, reach);
   if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
   if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
   return v;
@@ -166,15 +167,24 @@ bool RecompilerT<BusT>::port_write(Cpu& c, u32 address, u32 value) {
 }
 
 // A native I/O load's access (Impl::io_access()): port_read(), the native code having made
-// CpuT::load()'s checks and the instruction's bookkeeping. Events may run during the read (Bus::catch_up()), so the answer's bit 32
-// says where the CPU may no longer run natively: stopped, a hook armed or an interrupt pending,
-// as may_step() would find before the next instruction (the native code checks the deadline).
+// CpuT::load()'s checks and the instruction's bookkeeping, with where the bus tail ends as far as
+// the compiled words tell (`Reach`, Impl::tail_plan()). Events may run during the read
+// (Bus::catch_up()), so the answer's bit 32 says where the CPU may no longer run natively:
+// stopped, a hook armed or an interrupt pending, as may_step() would find before the next
+// instruction (the native code checks the deadline).
 template <class BusT>
-template <NativeOp K>
+template <NativeOp K, u32 Reach>
 u64 RecompilerT<BusT>::io_load(void* context, u32 address) {
   Cpu& c = *static_cast<Cpu*>(context);
-  const u32 v = port_read<K>(c, address);
+  const u32 v = port_read<K>(c, address, Reach);
   return v | u64{leaves_native(c)} << 32;
+}
+
+// Layout::io_loads' row for K: io_load() for each reach.
+template <class BusT>
+template <NativeOp K, u32... Reach>
+void RecompilerT<BusT>::set_io_loads(BlockEmitter::Layout& l, std::integer_sequence<u32, Reach...>) {
+  ((l.io_loads[u32(K) - u32(NativeOp::Lb)][Reach] = &io_load<K, Reach>), ...);
 }
 
 // A native I/O store's access (Impl::io_access()): port_write(), the native code having made
@@ -314,11 +324,12 @@ BlockEmitter::Layout RecompilerT<BusT>::layout(Cpu& c) {
   l.gte_write_control = [](void* g, u32 r, u32 v) { static_cast<Gte*>(g)->write_control(r, v); };
   l.gte_cycles = &Gte::command_cycles;
   if constexpr (std::is_same_v<BusT, Bus>) {
-    l.io_loads[0] = &io_load<NativeOp::Lb>;
-    l.io_loads[1] = &io_load<NativeOp::Lh>;
-    l.io_loads[2] = &io_load<NativeOp::Lw>;
-    l.io_loads[3] = &io_load<NativeOp::Lbu>;
-    l.io_loads[4] = &io_load<NativeOp::Lhu>;
+    constexpr auto reaches = std::make_integer_sequence<u32, cpu_detail::kTailReaches>{};
+    set_io_loads<NativeOp::Lb>(l, reaches);
+    set_io_loads<NativeOp::Lh>(l, reaches);
+    set_io_loads<NativeOp::Lw>(l, reaches);
+    set_io_loads<NativeOp::Lbu>(l, reaches);
+    set_io_loads<NativeOp::Lhu>(l, reaches);
     l.io_stores[0] = &io_store<NativeOp::Sb>;
     l.io_stores[1] = &io_store<NativeOp::Sh>;
     l.io_stores[2] = &io_store<NativeOp::Sw>;

@@ -63,8 +63,11 @@ void HleBios::install() {
   enqueue(3, kKernelElems + 16 * kDefInt);
   for (u32 id : {kRcnt0, kRcnt1, kRcnt2, kRcntVblank}) enqueue(1, kKernelElems + 16 * id);
 
-  // Post-boot state: kernel mode, COP2 enabled, hardware interrupts unmasked in SR, I_MASK 0.
-  cpu_.cop0().sr = Cop0::kCU2 | Cop0::kIP2 | Cop0::kIEc;
+  // Post-boot state: kernel mode, COP2 enabled, I_MASK 0, inside a critical section (SR.IEc and
+  // IM2 clear): OpenBIOS's boot (main/main.c, gameMainThunk, which follows the retail BIOS's boot
+  // code) calls EnterCriticalSection before Exec, and the SDKs' start-up leaves it with
+  // ExitCriticalSection once their handlers are in place (PSn00bSDK's RestartCallback).
+  cpu_.cop0().sr = Cop0::kCU2;
   exit_buf_ = kDefaultExit;
   dispatching_ = return_now_ = unresolved_ = false;
   resume_.clear();
@@ -178,9 +181,16 @@ bool HleBios::tty_call(u32 table, u32 fn) {
     switch (fn) {
       case 0x3C: putchar(a0); return true;
       case 0x3E: out(read_string(a0) + "\n", hle_cost::kTtyChar, 1); return true;
-      case 0x3F: {
-        std::string s = format(a0);
-        out(s, hle_cost::kPrintfChar, static_cast<u32>(s.size()));
+      case 0x3F: {  // printf: a call, each character and each conversion take OpenBIOS's time
+        std::string s = format(a0), fmt = read_string(a0);
+        u32 conversions = 0;
+        for (size_t i = 0; i + 1 < fmt.size(); ++i)
+          if (fmt[i] == '%') conversions += fmt[i + 1] == '%' ? (++i, 0) : 1;
+        const auto newlines = static_cast<Cycles>(std::count(s.begin(), s.end(), '\n'));
+        print(s);
+        return_after(static_cast<u32>(s.size()), hle_cost::kPrintfCall + Cycles{hle_cost::kPrintfChar} * s.size() +
+                                                      Cycles{hle_cost::kPrintfNewline} * newlines +
+                                                      Cycles{hle_cost::kPrintfConversion} * conversions);
         return true;
       }
       default: return false;

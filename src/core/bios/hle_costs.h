@@ -35,6 +35,10 @@ constexpr u32 kDefInt = 460;
 // DeliverEvent walking the 16 EvCBs (SYSTEM.CNF's default count), a callback's own code apart
 // (336-443).
 constexpr u32 kDeliverEvent = 380;
+// A SYSCALL (EnterCriticalSection, ExitCriticalSection...) from the instruction to the one after
+// it: the exception handler's register save, the syscall handler, ReturnFromException (430-1242
+// cycles in PSn00bSDK's timer and balls, median 582).
+constexpr u32 kSyscall = 580;
 // After the last chain: the longjmp through the exit buffer into the program's hook or into
 // ReturnFromException (149-222).
 constexpr u32 kChainExit = 180;

@@ -81,6 +81,7 @@ void HleBios::kernel_stub_syscall() {
 
 void HleBios::syscall() {
   Cop0& c = cpu_.cop0();
+  sched_.advance(hle_cost::kSyscall);
   u32 tcb = current_tcb();
   auto reg = [&](u32 r) { return tcb + kTcbRegs + 4 * r; };
   poke32(tcb + kTcbEpc, c.epc + 4);

@@ -184,8 +184,11 @@ bool HleBios::tty_call(u32 table, u32 fn) {
       case 0x3F: {  // printf: a call, each character and each conversion take OpenBIOS's time
         std::string s = format(a0), fmt = read_string(a0);
         u32 conversions = 0;
-        for (size_t i = 0; i + 1 < fmt.size(); ++i)
-          if (fmt[i] == '%') conversions += fmt[i + 1] == '%' ? (++i, 0) : 1;
+        for (size_t i = 0; i + 1 < fmt.size(); ++i) {
+          if (fmt[i] != '%') continue;
+          if (fmt[i + 1] != '%') ++conversions;  // "%%" prints a percent sign
+          ++i;
+        }
         const auto newlines = static_cast<Cycles>(std::count(s.begin(), s.end(), '\n'));
         print(s);
         return_after(static_cast<u32>(s.size()), hle_cost::kPrintfCall + Cycles{hle_cost::kPrintfChar} * s.size() +

@@ -181,19 +181,9 @@ bool HleBios::tty_call(u32 table, u32 fn) {
     switch (fn) {
       case 0x3C: putchar(a0); return true;
       case 0x3E: out(read_string(a0) + "\n", hle_cost::kTtyChar, 1); return true;
-      case 0x3F: {  // printf: a call, each character and each conversion take OpenBIOS's time
-        std::string s = format(a0), fmt = read_string(a0);
-        u32 conversions = 0;
-        for (size_t i = 0; i + 1 < fmt.size(); ++i) {
-          if (fmt[i] != '%') continue;
-          if (fmt[i + 1] != '%') ++conversions;  // "%%" prints a percent sign
-          ++i;
-        }
-        const auto newlines = static_cast<Cycles>(std::count(s.begin(), s.end(), '\n'));
-        print(s);
-        return_after(static_cast<u32>(s.size()), hle_cost::kPrintfCall + Cycles{hle_cost::kPrintfChar} * s.size() +
-                                                      Cycles{hle_cost::kPrintfNewline} * newlines +
-                                                      Cycles{hle_cost::kPrintfConversion} * conversions);
+      case 0x3F: {
+        std::string s = format(a0);
+        out(s, hle_cost::kPrintfChar, static_cast<u32>(s.size()));
         return true;
       }
       default: return false;

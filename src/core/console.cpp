@@ -181,7 +181,12 @@ void Console::side_load(const PsxExe& exe) {
   // The HLE kernel's Exec() caller: a return from the entry point stops with a message.
   if (hle_mode_) cpu_.set_reg(31, HleBios::kExitStub);
   cpu_.set_pc(exe.pc);
-  if (hle_mode_) hle_.start_program(exe.pc);
+  if (hle_mode_) {
+    // A BIOS hands over inside the critical section of its boot (HleBios::install), so the VBlank
+    // of the frame before the program's is still pending in I_STAT (OpenBIOS leaves bit 0 set).
+    irq_.raise(Irq::VBlank);
+    hle_.start_program(exe.pc);
+  }
 }
 
 void Console::on_reach(u32 pc) {

@@ -7,6 +7,7 @@ psx_add_rom_test(bios_kernel SOURCES bios_kernel.c bios_calls.S CHECKS 43)
 psx_add_rom_test(bios_entry SOURCES bios_entry.c CHECKS 9)
 psx_add_rom_test(bios_load_delay SOURCES bios_load_delay.c bios_calls.S CHECKS 6)
 psx_add_rom_test(bios_exceptions SOURCES bios_exceptions.c bios_calls.S CHECKS 5)
+psx_add_rom_test(bios_pad_vblank SOURCES bios_pad_vblank.c bios_calls.S CHECKS 8)
 # Run by both CPUs too: the recompiler keeps a load in flight in a host register and hands the
 # kernel the CPU's pending-load fields only on its way out of a block.
 psx_add_run_test(rom.bios_load_delay_recompiler CODE 0 CHECKS 6

@@ -41,9 +41,14 @@ int main(void) {
   CHECK_EQ("memcpy returns dst", (uint32_t)bios_memcpy(buf + 8, "hi", 3), (uint32_t)(buf + 8));
   CHECK_EQ("memcpy copies", buf[8] == 'h' && buf[9] == 'i', 1);
 
-  /* The HLE kernel boots with SR.IEc set; EnterCriticalSection clears it and reports that
-     interrupts were enabled, ExitCriticalSection sets it again. */
-  CHECK_EQ("boot SR.IEc", sr() & 1, 1);
+  /* The program starts inside a critical section, as a BIOS's boot leaves it (OpenBIOS
+     main/main.c: EnterCriticalSection before Exec): SR.IEc and IM2 clear, so EnterCriticalSection
+     reports that interrupts were disabled (psx-spx "SYS(01h)"). ExitCriticalSection sets both;
+     EnterCriticalSection then clears them and reports that they were enabled. */
+  CHECK_EQ("boot SR.IEc and IM2", sr() & 0x401, 0);
+  CHECK_EQ("EnterCriticalSection at boot returns 0", enter_critical_section(), 0);
+  exit_critical_section();
+  CHECK_EQ("SR.IEc and IM2 after exit", sr() & 0x401, 0x401);
   CHECK_EQ("EnterCriticalSection returns 1", enter_critical_section(), 1);
   CHECK_EQ("SR.IEc after enter", sr() & 1, 0);
   CHECK_EQ("EnterCriticalSection again returns 0", enter_critical_section(), 0);

@@ -70,8 +70,11 @@ void HleBios::install() {
   enqueue(3, kKernelElems + 16 * kDefInt);
   for (u32 id : {kRcnt0, kRcnt1, kRcnt2, kRcntVblank}) enqueue(1, kKernelElems + 16 * id);
 
-  // Post-boot state: kernel mode, COP2 enabled, hardware interrupts unmasked in SR, I_MASK 0.
-  cpu_.cop0().sr = Cop0::kCU2 | Cop0::kIP2 | Cop0::kIEc;
+  // Post-boot state: kernel mode, COP2 enabled, I_MASK 0, inside a critical section (SR.IEc and
+  // IM2 clear): OpenBIOS's boot (main/main.c, gameMainThunk, which follows the retail BIOS's boot
+  // code) calls EnterCriticalSection before Exec, and the SDKs' start-up leaves it with
+  // ExitCriticalSection once their handlers are in place (PSn00bSDK's RestartCallback).
+  cpu_.cop0().sr = Cop0::kCU2;
   exit_buf_ = kDefaultExit;
   dispatching_ = return_now_ = unresolved_ = false;
   resume_.clear();

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "core/bios/hle_bios.h"
+#include "core/bios/hle_costs.h"
 #include "core/bus.h"
 #include "core/disc/iso9660.h"
 
@@ -153,9 +154,10 @@ bool HleBios::cd_call(u32 fn) {
     case 0x71:
     case 0x95: io_.cd_dir.fill(0); return_to_caller(0); return true;
     // _96_remove, EnqueueCdIntr/DequeueCdIntr, SetCdromIrqAutoAbort: no BIOS CD-ROM interrupt
-    // handler exists here to add or remove, so CD-ROM IRQs stay the program's own.
+    // handler exists here to add or remove, so CD-ROM IRQs stay the program's own; _96_remove
+    // takes a BIOS's time.
     case 0x56:
-    case 0x72:
+    case 0x72: return_after(0, hle_cost::kCdRemove); return true;
     case 0x9E:
     case 0xA2:
     case 0xA3: return_to_caller(0); return true;

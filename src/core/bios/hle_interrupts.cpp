@@ -19,6 +19,12 @@ constexpr u32 kIStat = 0xBF801070, kIMask = 0xBF801074;
 constexpr u32 kB0 = 0xB0, kC0 = 0xC0;
 // RFE: pop the KU/IE stack (previous -> current, old -> previous).
 inline u32 rfe(u32 sr) { return (sr & ~0xFu) | ((sr >> 2) & 0xF); }
+// Books an interrupt's kernel time step by step, as the BIOS's handler takes it (hle_costs.h):
+// saved_cause is the Cause the TCB holds for the exception being handled; the other exceptions
+// take none here.
+void book(Scheduler& sched, u32 saved_cause, u32 cycles) {
+  if (((saved_cause >> 2) & 0x1F) == static_cast<u32>(Exception::Interrupt)) sched.advance(cycles);
+}
 }  // namespace
 
 void HleBios::exception() {
@@ -36,7 +42,7 @@ void HleBios::exception() {
   dispatching_ = true;
   return_now_ = false;
   unresolved_ = code != static_cast<u32>(Exception::Interrupt);
-  if (!unresolved_) sched_.advance(hle_cost::kInterruptEntry);
+  book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kExceptionEntry + hle_cost::kChainPriority);
   chain_prio_ = 0;
   chain_elem_ = chain_head(0);
   // The hardware executes a GTE command at the interrupted address before taking the
@@ -77,6 +83,7 @@ void HleBios::kernel_stub_syscall() {
 
 void HleBios::syscall() {
   Cop0& c = cpu_.cop0();
+  sched_.advance(hle_cost::kSyscall);
   u32 tcb = current_tcb();
   auto reg = [&](u32 r) { return tcb + kTcbRegs + 4 * r; };
   poke32(tcb + kTcbEpc, c.epc + 4);
@@ -143,9 +150,11 @@ void HleBios::dispatch_next() {
     }
     if (!chain_elem_) {
       if (++chain_prio_ >= 4) break;
+      book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kChainPriority);
       chain_elem_ = chain_head(chain_prio_);
       continue;
     }
+    book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kChainElement);
     u32 elem = chain_elem_;
     chain_elem_ = peek32(elem);
     u32 func2 = peek32(elem + 4), func1 = peek32(elem + 8);
@@ -164,6 +173,7 @@ void HleBios::dispatch_next() {
     return;
   }
   // All chains done: longjmp through the exit buffer with v0 = 1 (ra, sp, fp, s0-s7, gp).
+  book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kChainExit);
   dispatching_ = false;
   u32 b = exit_buf_;
   cpu_.set_reg(kSp, peek32(b + 4));
@@ -237,7 +247,10 @@ bool HleBios::run_native(u32 id) {
 // entry shows the error and hangs on a BIOS: here the console stops, once the event's
 // callbacks have run (one may return from the exception instead).
 bool HleBios::unresolved_exception() {
-  if (!unresolved_) return false;
+  if (!unresolved_) {
+    book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kHandlerMiss);
+    return false;
+  }
   deliver_event(0xF0000010, 0x1000);
   u32 entry = peek32(kTableA + 4 * 0x40);
   if (entry == kStubs + 8 * 0x40) {
@@ -254,8 +267,10 @@ bool HleBios::unresolved_exception() {
 // psx-spx "BIOS Event Summary"), acknowledging those SetIrqAutoAck turned on.
 bool HleBios::def_int() {
   static constexpr u32 kClass[11] = {1, 2, 3, 4, 5, 6, 6, 8, 0xB, 9, 0xA};
+  book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kDefInt);
   for (u32 i = 0; i < 11; ++i) {
     if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & (1u << i))) continue;
+    book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kDeliverEvent);
     deliver_event(0xF0000000 | kClass[i], 0x1000);
     if (irq_auto_ack_ & (1u << i)) io_write(kIStat, ~(1u << i) & 0xFFFF, 4);
   }
@@ -267,22 +282,30 @@ bool HleBios::def_int() {
 // OpenBIOS's handlers test IRQ0 for it too).
 bool HleBios::rcnt_handler(u32 t) {
   u32 bit = t == 3 ? 1u : 1u << (4 + t);
-  if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & bit)) return false;
+  if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & bit)) {
+    book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kHandlerMiss);
+    return false;
+  }
+  book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kRcntHit + hle_cost::kDeliverEvent);
   deliver_event(0xF2000000 | t, 0x0002);
   if (!clear_rcnt_[t]) return false;
   io_write(kIStat, ~bit & 0xFFFF, 4);
   return true;
 }
 
-// PadCardIrq: at VBlank, both pads are read into the InitPad buffers (status, ID, data).
+// PadCardIrq: at VBlank, both pads are read into the InitPad buffers (status, ID, data); with
+// ChangeClearPad on, the VBlank IRQ is acknowledged and the walk goes on to the lower chains, as
+// OpenBIOS's pad handler does (sio0/driver.c, sio0Handler: it never returns from the exception).
 bool HleBios::pad_handler() {
-  if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & 1)) return false;
-  sched_.advance(hle_cost::kPadPoll);
+  if (!(io_read(kIStat, 4) & io_read(kIMask, 4) & 1)) {
+    book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kHandlerMiss);
+    return false;
+  }
+  book(sched_, peek32(current_tcb() + kTcbCause), hle_cost::kPadPoll);
   for (int port = 0; port < 2; ++port)
     if (pad_buf_[port]) read_pad(port, pad_buf_[port]);
-  if (!clear_pad_) return false;
-  io_write(kIStat, 0xFFFE, 4);
-  return true;
+  if (clear_pad_) io_write(kIStat, 0xFFFE, 4);
+  return false;
 }
 
 // One "read" command (01h 42h 00h...) straight to the controller (psx-spx "Controllers -
@@ -404,15 +427,23 @@ bool HleBios::interrupt_call(u32 table, u32 fn) {
       for (u32 i = 0; i < cpu_.reg(7) && i < 0x22; ++i) poke8(cpu_.reg(6) + i, 0);
       return_after(2, hle_cost::kInitPad);
       return true;
-    case 0x13:  // StartPad: enqueue the pad handler, VBlank IRQ on
+    case 0x13:  // StartPad: enqueue the pad handler, VBlank IRQ acknowledged and on, and the
+      // VBlank root counter handler no longer ends the exception before the pad handler runs
+      // (ChangeClearRCnt(3,0)) while the pad handler acknowledges (ChangeClearPad(1)), as
+      // OpenBIOS's startPad does (sio0/driver.c) and Sony's libraries do after enqueueing their
+      // own pad handler.
       if (!pad_started_) enqueue(2, kKernelElems + 16 * kPad);
       pad_started_ = true;
+      clear_rcnt_[3] = 0;
+      clear_pad_ = 1;
+      io_write(kIStat, 0xFFFE, 4);
       io_write(kIMask, io_read(kIMask, 4) | 1, 4);
       return_after(1, hle_cost::kStartPad);
       return true;
-    case 0x14:  // StopPad
+    case 0x14:  // StopPad: the pad handler out, VBlank auto-acknowledge back on (stopPad)
       if (pad_started_) dequeue(2, kKernelElems + 16 * kPad);
       pad_started_ = false;
+      clear_rcnt_[3] = 1;
       return_to_caller(1);
       return true;
     case 0x17: return_from_exception(); return true;

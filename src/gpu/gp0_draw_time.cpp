@@ -17,19 +17,12 @@ namespace {
 // CPU cycles per pixel in 1/4096 units: HBlanks * 2152.87 cycles (an NTSC scanline, 3413 video
 // clocks of 53.693175 MHz; psx-spx "GPU Timings") / (399 * 76,800 pixels): the program reads its
 // counter once the 400th command starts, 399 drawn. Fill 1216 HBlanks; rectangle 7603,
-// semi-transparent 11455, textured 15138; VRAM-to-VRAM copy 19132. Gouraud shading and lines
-// were not measured: they cost what flat polygons do. For comparison, Mednafen charges 0.5
-// cycles a flat polygon pixel, 0.75 a semi-transparent one and 1 a textured one (no texture
-// cache misses), about 0.077 a fill pixel.
-// Polygons also cost a time per row of each triangle (kPolyRow): the quads whose pixels are 3/4
-// and 1/2 on screen took 5845 and 3968 HBlanks where the full one took 7727, so a quad costs
-// 0.52818 cycles a pixel plus 1128.1 cycles (from the full and half rows; the 3/4 one then comes
-// out 0.04% long). Every row is 240 lines high, so a time per command would fit as well; it is
-// taken per row (1128.1 / 480 triangle rows = 2.350 cycles) because 1128 cycles a command would
-// cap the GPU far below the polygon rates games reach. Semi-transparent quads 11648 HBlanks and
-// textured ones 39938 give their pixel costs after the same rows.
-constexpr s64 kFill = 350, kRect = 2188, kRectSemi = 3296, kRectTextured = 4356, kCopy = 5506;
-constexpr s64 kPoly = 2163, kPolySemi = 3292, kPolyTextured = 11433, kPolyRow = 9626;
+// semi-transparent 11455, textured 15138; polygon (quad) 7727, semi-transparent 11648, textured
+// 39938; VRAM-to-VRAM copy 19132. Gouraud shading and lines were not measured: they cost what
+// flat polygons do. For comparison, Mednafen charges 0.5 cycles a flat polygon pixel, 0.75 a
+// semi-transparent one and 1 a textured one (no texture cache misses), about 0.077 a fill pixel.
+constexpr s64 kFill = 350, kRect = 2188, kRectSemi = 3296, kRectTextured = 4356;
+constexpr s64 kPoly = 2224, kPolySemi = 3352, kPolyTextured = 11493, kCopy = 5506;
 
 // Positions as a command gives them (11-bit signed), before the drawing offset: a triangle's area
 // and a line's length do not depend on where they lie, so the drawing area is moved by minus the
@@ -50,34 +43,24 @@ inline s32 area2(Point a, Point b, Point c) {
   return std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
 }
 
-// A triangle's time in 1/4096 cycles at `cost` a pixel: its area, scaled by the part of its
-// bounding box inside the drawing area, and the rows of that part. One with no area draws
-// nothing (the renderers skip it) and costs nothing.
-s64 triangle_time(Point a, Point b, Point c, s64 cost, const gpu::TimeArea& area) {
+// A triangle's pixels: its area, scaled by the part of its bounding box inside the drawing area.
+s64 triangle_pixels(Point a, Point b, Point c, const gpu::TimeArea& area) {
   const s32 x0 = std::min({a.x, b.x, c.x}), x1 = std::max({a.x, b.x, c.x});
   const s32 y0 = std::min({a.y, b.y, c.y}), y1 = std::max({a.y, b.y, c.y});
-  const s64 twice = area2(a, b, c), inside = clipped(x0, y0, x1, y1, area);
-  if (twice == 0 || inside == 0) return 0;
   const s64 box = s64{x1 - x0} * (y1 - y0);
-  const s64 rows = std::min(y1, area.bottom_end) - std::max(y0, area.top);
-  return twice / 2 * inside / box * cost + rows * kPolyRow;
+  if (box == 0) return 0;
+  return s64{area2(a, b, c) / 2} * clipped(x0, y0, x1, y1, area) / box;
 }
 
 // A polygon partly inside the drawing area (out of line: the common cases need none of it).
-[[gnu::noinline]] s64 clipped_polygon_time(const Point* p, bool quad, s64 cost, const gpu::TimeArea& area) {
-  return triangle_time(p[0], p[1], p[2], cost, area) + (quad ? triangle_time(p[1], p[2], p[3], cost, area) : 0);
+[[gnu::noinline]] s64 clipped_polygon_pixels(const Point* p, bool quad, const gpu::TimeArea& area) {
+  return triangle_pixels(p[0], p[1], p[2], area) + (quad ? triangle_pixels(p[1], p[2], p[3], area) : 0);
 }
 
-// A triangle's rows when its box lies wholly inside the drawing area.
-inline s32 rows_inside(Point a, Point b, Point c) {
-  return std::max({a.y, b.y, c.y}) - std::min({a.y, b.y, c.y});
-}
-
-// A polygon's time in 1/4096 cycles: its triangles' (the second of a quad is corners 1-3). Most
-// polygons lie wholly inside the drawing area or wholly outside it; then each triangle's box does
-// too (it lies in the polygon's), its clipped part is its whole box or nothing, and no division
-// is needed.
-s64 polygon_time(const u32* w, u32 c, s64 cost, const gpu::TimeArea& area) {
+// A polygon's pixels: its triangles' (the second of a quad is corners 1-3). Most polygons lie
+// wholly inside the drawing area or wholly outside it; then each triangle's box does too (it lies
+// in the polygon's), its clipped part is its whole box or nothing, and no division is needed.
+s64 polygon_pixels(const u32* w, u32 c, const gpu::TimeArea& area) {
   const u32 stride = 1 + ((c >> 2) & 1) + ((c >> 4) & 1);  // position, texcoord, next colour
   const bool quad = c & 0x08;
   Point p[4] = {raw_position(w[1]), raw_position(w[1 + stride]), raw_position(w[1 + 2 * stride])};
@@ -88,12 +71,8 @@ s64 polygon_time(const u32* w, u32 c, s64 cost, const gpu::TimeArea& area) {
   const s32 y1 = std::max(std::max(p[0].y, p[1].y), std::max(p[2].y, p[3].y));
   if (x1 <= area.left || x0 >= area.right_end || y1 <= area.top || y0 >= area.bottom_end) return 0;
   if (x0 < area.left || x1 > area.right_end || y0 < area.top || y1 > area.bottom_end)
-    return clipped_polygon_time(p, quad, cost, area);
-  s64 time = 0;
-  if (const s32 a = area2(p[0], p[1], p[2])) time += s64{a / 2} * cost + s64{rows_inside(p[0], p[1], p[2])} * kPolyRow;
-  if (!quad) return time;
-  if (const s32 a = area2(p[1], p[2], p[3])) time += s64{a / 2} * cost + s64{rows_inside(p[1], p[2], p[3])} * kPolyRow;
-  return time;
+    return clipped_polygon_pixels(p, quad, area);
+  return area2(p[0], p[1], p[2]) / 2 + (quad ? area2(p[1], p[2], p[3]) / 2 : 0);
 }
 }  // namespace
 
@@ -103,8 +82,9 @@ Cycles Gpu::draw_time(const u32* w) const {
   s64 pixels = 0, cost = 0;
   switch (c >> 5) {
     case 1:  // polygon: bit 4 Gouraud, 3 quad, 2 textured
-      return static_cast<Cycles>(
-          static_cast<u64>(polygon_time(w, c, textured ? kPolyTextured : semi ? kPolySemi : kPoly, time_area_)) >> 12);
+      pixels = polygon_pixels(w, c, time_area_);
+      cost = textured ? kPolyTextured : semi ? kPolySemi : kPoly;
+      break;
     case 2: {  // line (a polyline's first segment; the others come through book_line())
       const Point a = raw_position(w[1]), b = raw_position(w[(c & 0x10) ? 3 : 2]);
       pixels = std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)) + 1;

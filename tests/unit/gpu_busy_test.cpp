@@ -44,17 +44,6 @@ TEST_F(GpuBusyTest, FullScreenQuadTakesItsMeasuredTime) {
   expect_busy_for(41692);
 }
 
-// The quads of gpu/bandwidth half off screen (3968 HBlanks: 21,410 cycles each) and a quarter off
-// (5845: 31,538): a pixel costs less than the full quad's time over its pixels, the rest is a
-// time per row (gp0_draw_time.cpp). The drawing area is the program's 320x240 screen.
-TEST_F(GpuBusyTest, QuadsPartlyOffScreenTakeTheirMeasuredTimes) {
-  gp0({0xE3000000, 0xE4000000 | (239u << 10) | 319u});
-  gp0({0x28000000, xy(-160, 0), xy(160, 0), xy(-160, 240), xy(160, 240)});
-  expect_busy_for(21410);
-  gp0({0x28000000, xy(-80, 0), xy(240, 0), xy(-80, 240), xy(240, 240)});
-  expect_busy_for(31538);
-}
-
 // gpu/gpustat's linked-list case: the second rectangle waits in the FIFO while the first draws,
 // so 28 and 25 (direction 2) read 0 too, until the second starts; 26 until it ends.
 TEST_F(GpuBusyTest, ACommandWaitingBehindTheDrawingOneFillsTheFifo) {

@@ -398,7 +398,7 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
       cells.before[c] = cells.after[c] - (p.cells.after[c] - p.cells.before[c]);
     }
     Proven::Reproof& r = p.reproof;
-    if (!same_start(r, cpu, cells)) {
+    if (!same_start(r, cpu, cells, p.named)) {
       IdleProof proof(before, cpu.regs_, cpu.load_reg_, cpu.load_val_, cells);
       r.repeats = proof.run(p.path.data(), p.len);
       r.max_k = proof.max_k();
@@ -421,9 +421,15 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
 }
 
 // Whether the proof last made again from p's head (Proven::Reproof) started from the registers,
-// the load in flight and the stored words' values there are now: it is then the same proof.
-bool IdleSkip::same_start(const Proven::Reproof& r, const Cpu& cpu, const IdleCells& cells) {
-  if (!r.valid || r.regs != cpu.regs_ || r.load_reg != cpu.load_reg_ || r.load_val != cpu.load_val_) return false;
+// the load in flight and the stored words' values there are now: it is then the same proof. A
+// register no instruction of the path names (`named`) is neither read nor written by it and plays
+// no part in the proof (as in reuse_proof()), so it may differ.
+bool IdleSkip::same_start(const Proven::Reproof& r, const Cpu& cpu, const IdleCells& cells, u32 named) {
+  if (!r.valid || r.load_reg != cpu.load_reg_ || r.load_val != cpu.load_val_) return false;
+  for (u32 m = named; m != 0; m &= m - 1) {
+    const u32 reg = static_cast<u32>(std::countr_zero(m));
+    if (r.regs[reg] != cpu.regs_[reg]) return false;
+  }
   for (u32 c = 0; c < cells.count; ++c)
     if (r.words[c] != cells.after[c]) return false;
   return true;

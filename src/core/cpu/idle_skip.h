@@ -177,7 +177,7 @@ class IdleSkip {
   // Skips from the head when an iteration starting here is one that a proof covers (repeated).
   Examined repeat(CpuT<Bus>& cpu);
   bool repeats(CpuT<Bus>& cpu, Proven& p, u64& count);
-  static bool same_start(const Proven::Reproof& r, const CpuT<Bus>& cpu, const IdleCells& cells);
+  static bool same_start(const Proven::Reproof& r, const CpuT<Bus>& cpu, const IdleCells& cells, u32 named);
   void note_context(CpuT<Bus>& cpu, Proven& p, Cycles shadow0, u32 shadow_reg0, Cycles t0, Cycles done0,
                     u64 steps) const;
   // The bound for the iteration just recorded (path_, from `before` to `after`) taken from the

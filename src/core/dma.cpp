@@ -266,42 +266,52 @@ u32 Dma::run_block(u32 ch) {
 // nodes costs one scheduler event per kListBatchNodes nodes; the CPU gets the same share of the
 // time. may_run() can change only where words reach the device (its request follows the
 // device's state, which nothing else changes during the batch) or where the list ends (finish()
-// clears Busy), so after an empty node the answer last given still holds.
+// clears Busy), so after an empty node the answer last given still holds. Host time: the held
+// cycles are added up and charged only where the device sees the time (before a node's words)
+// and at the batch's end; charges add up exactly (charge_cycles256()), so the time each device
+// write sees and the time the batch ends are those of charging every header and block at once.
 u32 Dma::run_list(u32 ch, u32 budget, bool alone) {
   Channel& c = channels_[ch];
   c.chcr &= ~kChcrTrigger;
+  const u32 max_nodes = alone ? kListBatchNodes : 1;
+  const u64 word256 = clocks_per256_words(ch);
+  u32 madr = c.madr;
   u32 moved = 0;
   u32 nodes = 0;
-  u32 headers = 0;       // headers read and not yet charged: charges add up exactly, so the
-                         // empty nodes before the next words (or the batch's end) are charged at once
+  u64 held256 = 0;       // held, not yet charged
   bool vouched = false;  // may_run() held after the trigger's clearing, and no words moved since
   for (;;) {
     // Node: header word (bits 24-31 word count, bits 0-23 next node), then the words for the
     // device.
-    const u32 addr = c.madr & kAddressMask;
+    const u32 addr = madr & kAddressMask;
     const u32 header = bus_.dma_read_word(addr);
     const u32 count = header >> 24;
+    madr = header & 0x00FFFFFF;
     moved += count + 1;
     ++nodes;
-    ++headers;
-    c.madr = header & 0x00FFFFFF;
-    const bool end = (c.madr & 0x00800000) != 0;  // the hardware tests bit 23 alone
-    // An end marker other than 0x00FFFFFF still ends the list, with the bus error flag raised: on
-    // hardware 0x800000, 0x800001 and 0xFFFFF0 all leave DICR bit 15 set and MADR on the marker.
-    if (end && c.madr != kListEnd) dicr_ |= kDicrBusError;
+    held256 += kListHeader256;
     if (count) {
-      charge_cycles256(u64{headers} * kListHeader256 + kListPayloadSetup256);
-      headers = 0;
+      charge_cycles256(held256 + kListPayloadSetup256);
       to_device(ch, addr + 4, count, false);
-      charge(ch, count);
+      held256 = u64{count} * word256;
       vouched = false;
     }
-    if (end || !alone || moved >= budget || nodes == kListBatchNodes) break;
-    if (!vouched && !(vouched = may_run(ch))) break;
+    // The hardware tests bit 23 alone for the list's end.
+    if ((madr & 0x00800000) || nodes == max_nodes || moved >= budget) break;
+    // As may_run(): Busy, the enable and resume_at stay as they were through the batch, and the
+    // trigger was cleared above.
+    if (!vouched && !(vouched = c.chopping_started || device_request(ch))) break;
   }
-  charge_cycles256(u64{headers} * kListHeader256);
-  if (c.madr & 0x00800000) finish(ch);
-  else c.resume_at = sched_.now() - late_credit_ + Cycles{nodes} * kListGapCycles;
+  charge_cycles256(held256);
+  c.madr = madr;
+  if (madr & 0x00800000) {
+    // An end marker other than 0x00FFFFFF still ends the list, with the bus error flag raised: on
+    // hardware 0x800000, 0x800001 and 0xFFFFF0 all leave DICR bit 15 set and MADR on the marker.
+    if (madr != kListEnd) dicr_ |= kDicrBusError;
+    finish(ch);
+  } else {
+    c.resume_at = sched_.now() - late_credit_ + Cycles{nodes} * kListGapCycles;
+  }
   return moved;
 }
 
@@ -361,11 +371,13 @@ void Dma::from_device(u32 ch, u32 addr, u32 count, bool backward) {
 }
 
 void Dma::charge(u32 ch, u32 words, u32 extra_per256) {
+  charge_cycles256(u64{words} * (extra_per256 + clocks_per256_words(ch)));
+}
+
+u64 Dma::clocks_per256_words(u32 ch) const {
   // psx-spx lists CD-ROM DMA at 24 clocks a word with the BIOS's CDROM Delay/Size setting and 40
   // with the games' one: the rate follows the register (Bus::dma_word_cycles).
-  u64 per256 = extra_per256 +
-               (ch == Cdrom ? 256 * bus_.dma_word_cycles(Bus::kCdromDelay) : kClocksPer256Words[ch]);
-  charge_cycles256(u64{words} * per256);
+  return ch == Cdrom ? 256 * u64{bus_.dma_word_cycles(Bus::kCdromDelay)} : kClocksPer256Words[ch];
 }
 
 void Dma::charge_cycles256(u64 cycles256) {

@@ -96,6 +96,8 @@ class Dma : public IoDevice {
   void from_device(u32 ch, u32 addr, u32 count, bool backward);
   // Holds the CPU for `words` at the channel's rate plus `extra_per256` clocks per 0x100 words.
   void charge(u32 ch, u32 words, u32 extra_per256 = 0);
+  // The channel's rate in CPU clocks per 0x100 words.
+  u64 clocks_per256_words(u32 ch) const;
   // Holds the CPU for `cycles256` / 256 cycles (the remainder carries over to the next charge).
   void charge_cycles256(u64 cycles256);
 

@@ -242,6 +242,7 @@ IdleSkip::Examined IdleSkip::examine(Cpu& cpu) {
     max_k = proof.max_k();
     ++stats_.proofs;
     Proven* p = &proven_[proven_next_++ % kProofs];
+    p->reproof.valid = false;
     p->head = head;
     p->len = path_len_;
     std::copy(path_.begin(), path_.begin() + path_len_, p->path.begin());
@@ -396,17 +397,42 @@ bool IdleSkip::repeats(Cpu& cpu, Proven& p, u64& n) {
       cells.after[c] = word_at(bus, cells.location[c]);
       cells.before[c] = cells.after[c] - (p.cells.after[c] - p.cells.before[c]);
     }
-    IdleProof proof(before, cpu.regs_, cpu.load_reg_, cpu.load_val_, cells);
-    if (!proof.run(p.path.data(), p.len)) return false;
-    covered = proof.max_k() == ~u64{0} ? proof.max_k() : proof.max_k() + 1;
+    Proven::Reproof& r = p.reproof;
+    if (!same_start(r, cpu, cells, p.named)) {
+      IdleProof proof(before, cpu.regs_, cpu.load_reg_, cpu.load_val_, cells);
+      r.repeats = proof.run(p.path.data(), p.len);
+      r.max_k = proof.max_k();
+      r.regs = cpu.regs_;
+      r.load_reg = cpu.load_reg_;
+      r.load_val = cpu.load_val_;
+      for (u32 c = 0; c < cells.count; ++c) r.words[c] = cells.after[c];
+      r.valid = true;
+    }
+    if (!r.repeats) return false;
+    covered = r.max_k == ~u64{0} ? r.max_k : r.max_k + 1;
     if (cells.count == 0) {  // the proof now starts here, for the loop's next entry from here
       p.before = before;
-      p.max_k = proof.max_k();
+      p.max_k = r.max_k;
     }
   }
   // Whole iterations that end before the next event.
   n = std::min<u64>(covered, (deadline - 1 - now) / p.cost);
   return n > 0;
+}
+
+// Whether the proof last made again from p's head (Proven::Reproof) started from the registers,
+// the load in flight and the stored words' values there are now: it is then the same proof. A
+// register no instruction of the path names (`named`) is neither read nor written by it and plays
+// no part in the proof (as in reuse_proof()), so it may differ.
+bool IdleSkip::same_start(const Proven::Reproof& r, const Cpu& cpu, const IdleCells& cells, u32 named) {
+  if (!r.valid || r.load_reg != cpu.load_reg_ || r.load_val != cpu.load_val_) return false;
+  for (u32 m = named; m != 0; m &= m - 1) {
+    const u32 reg = static_cast<u32>(std::countr_zero(m));
+    if (r.regs[reg] != cpu.regs_[reg]) return false;
+  }
+  for (u32 c = 0; c < cells.count; ++c)
+    if (r.words[c] != cells.after[c]) return false;
+  return true;
 }
 
 // A store the loop may make (before it runs): a word to RAM or the scratchpad that reaches memory

@@ -161,10 +161,23 @@ class IdleSkip {
     u32 shadow_reg = 0;
     bool load_done_moved = false;  // ... and load_done_at_ at `load_done` cycles from its start
     Cycles load_done = 0;
+    // The proof repeats() last made again from the head, from what it depends on besides the
+    // path, line and cells above: the registers, the load in flight and the stored words' values
+    // (an IdleProof is a function of these). A loop that stores (a pad delay's `volatile`
+    // counter) is met again from the same start at every call, and its proof is not redone.
+    struct Reproof {
+      bool valid = false;
+      std::array<u32, 32> regs{};
+      u32 load_reg = 0, load_val = 0;
+      std::array<u32, IdleCells::kMax> words{};
+      bool repeats = false;
+      u64 max_k = 0;
+    } reproof;
   };
   // Skips from the head when an iteration starting here is one that a proof covers (repeated).
   Examined repeat(CpuT<Bus>& cpu);
   bool repeats(CpuT<Bus>& cpu, Proven& p, u64& count);
+  static bool same_start(const Proven::Reproof& r, const CpuT<Bus>& cpu, const IdleCells& cells, u32 named);
   void note_context(CpuT<Bus>& cpu, Proven& p, Cycles shadow0, u32 shadow_reg0, Cycles t0, Cycles done0,
                     u64 steps) const;
   // The bound for the iteration just recorded (path_, from `before` to `after`) taken from the

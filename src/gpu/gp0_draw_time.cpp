@@ -1,7 +1,7 @@
 // How long the GPU is busy with a drawing command, for GPUSTAT's ready bits (psx-spx "GPU Status
 // Register"; ps1-tests gpu/gpustat): bit 26 reads 0 while the GPU draws, bit 28 (and 25 in DMA
 // direction 2) while a command waits in the FIFO for the one drawing. The time is a cost per pixel
-// drawn (and for polygons per triangle row), measured on a console by ps1-tests gpu/bandwidth
+// drawn, measured on a console by ps1-tests gpu/bandwidth
 // (400 commands over a 320x240 screen, timed in HBlanks): the pixels a command covers in the
 // drawing area times that cost, booked from the later of now and the end of the previous
 // command. Computed from the command's words alone, so it never makes a deferred draw log draw.

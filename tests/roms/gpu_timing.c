@@ -86,6 +86,17 @@ static void start_dma(uint32_t bcr, uint32_t chcr) {
   D_CHCR(DMA_GPU) = chcr;
 }
 
+/* A DMA linked list of two rectangles (the second waits behind the first), the GPU idle and in
+   DMA direction 2 (CPU to GP0), ready for start_dma(0, 0x01000401). */
+static void two_tile_list(void) {
+  list[0] = 3u << 24 | PHYS(&list[4]);
+  tile(&list[1], 0x008000, 128, 0);
+  list[4] = 3u << 24 | 0xFFFFFF;
+  tile(&list[5], 0x800000, 256, 0);
+  wait_idle();
+  GPU_GP1 = 0x04000002;
+}
+
 static void expect_stat(const char *name, uint32_t stat, uint32_t console) {
   CHECK_EQ(name, stat & STAT_BITS, console);
 }
@@ -108,12 +119,7 @@ static void gpustat_cases(void) {
   expect_stat("gpustat cpu during", during, 0x10000000);
   expect_stat("gpustat cpu after", after, 0x14000000);
 
-  list[0] = 3u << 24 | PHYS(&list[4]);
-  tile(&list[1], 0x008000, 128, 0);
-  list[4] = 3u << 24 | 0xFFFFFF;
-  tile(&list[5], 0x800000, 256, 0);
-  wait_idle();
-  GPU_GP1 = 0x04000002;
+  two_tile_list();
   before = GPU_STAT;
   start_dma(0, 0x01000401);
   during = GPU_STAT;
@@ -261,12 +267,7 @@ static void gpu_sync_cases(void) {
   CHECK_EQ("gpu_sync dma off: returns 0", gpu_sync(), 0);
   CHECK_EQ("gpu_sync dma off: bit 28 after", GPU_STAT & R28, R28);
 
-  list[0] = 3u << 24 | PHYS(&list[4]);
-  tile(&list[1], 0x008000, 128, 0);
-  list[4] = 3u << 24 | 0xFFFFFF;
-  tile(&list[5], 0x800000, 256, 0);
-  wait_idle();
-  GPU_GP1 = 0x04000002;
+  two_tile_list();
   start_dma(0, 0x01000401);
   CHECK_EQ("gpu_sync list: returns 0", gpu_sync(), 0);
   const uint32_t after = GPU_STAT;

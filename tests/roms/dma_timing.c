@@ -31,8 +31,9 @@ static const uint16_t block_hw[65] = {
    passes 0x1FFFF (1 word/64 and 128 clocks, 2 words/128 clocks) are left out (0). So are two
    that psxrl does not match (docs/fidelity.md): 1 word/2 clocks took 20595 on the console, a
    third more than 1 word/1 clock (16693) where every other step adds the clocks it gives (psxrl:
-   18578), and 2 words/1 clock took as long as 2 words/2 clocks (10520; psxrl 9360). The rule
-   docs/fidelity.md gives for them needs the poll loop below to take the console's 10 cycles. */
+   18585), and 2 words/1 clock took as long as 2 words/2 clocks (10520; psxrl 9369). The rule
+   docs/fidelity.md gives for them needs the CPU to run beside a window (its poll loop below
+   takes the console's 10 cycles since the reader wait). */
 static const uint32_t chop_hw[8][8] = {
     {16693, 0, 22834, 30867, 47672, 81926, 0, 0},
     {0, 10519, 12511, 16463, 24668, 41037, 73765, 0},

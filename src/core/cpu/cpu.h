@@ -169,20 +169,22 @@ class CpuT {
   // The bus-access tail of a load through the bus interface (the comment at kIoTail), set once
   // its read is made: load_done_at_ as a RAM load's shadow leaves it. `reach`
   // (cpu_detail::kTailUnknown ...): what a caller that knows the next instructions (the
-  // recompiler, from the words it compiled) already knows of which one meets the tail.
-  void io_tail(u32 addr, u32 reach = cpu_detail::kTailUnknown) {
+  // recompiler, from the words it compiled) already knows of which one meets the tail. rt: the
+  // loaded register, whose reader after the delay slot waits for the tail (shadow_stall()).
+  void io_tail(u32 addr, u32 rt, u32 reach = cpu_detail::kTailUnknown) {
     if constexpr (kLoadShadow) {
       using namespace cpu_detail;
       if (!BusT::bus_load(addr) || !bus_.cached_code(current_pc_)) return;
-      if (reach == kTailUnknown || reach == kTailPastFirst) reach = tail_reach(reach);
+      if (reach == kTailUnknown || reach == kTailPastFirst) reach = tail_reach(reach, rt);
       load_done_at_ = sched_.now() + kIoTail + reach;
-      shadow_reg_ = 0;  // a reader of rt does not wait (the comment at kIoTail)
+      shadow_reg_ = rt;
     }
   }
   // The tail's reach (1, 2 or 3) from the instructions at pc_ and pc_ + 4 that `known` leaves open.
-  u32 tail_reach(u32 known) const;
-  // Whether the instruction at vaddr meets such a tail: its fetch goes to memory or it is a load.
-  bool meets_tail(u32 vaddr) const;
+  u32 tail_reach(u32 known, u32 rt) const;
+  // Whether the instruction at vaddr meets such a tail: its fetch goes to memory, it is a load,
+  // or it reads `reader` (nonzero: the loaded register, for the second instruction after the load).
+  bool meets_tail(u32 vaddr, u32 reader = 0) const;
   void wait_load() {
     if (sched_.now() < load_done_at_) sched_.advance(load_done_at_ - sched_.now());
   }
@@ -254,10 +256,14 @@ class CpuT {
   // ps1-tests cpu/access-time's loop (load, bnez, nop, nop, addiu) hides the tail: 3 a load from
   // a port, as on the console; its 32-bit SPU read, an LWL+LWR pair 2 instructions apart, is two
   // 16-bit reads (18 each, Bus::read_merged()) and the tail met whole, then in part: 39, as on
-  // the console. A reader of the loaded register does not wait for the tail: load-timings has a
-  // reader 2nd or 3rd cost 2 cycles more, but ps1-tests' timers program (a counter read with a
-  // reader 2nd costs no more than its issue cycle) and dma/chopping (its poll loop, a reader 2nd,
-  // as rom.dma_timing's fit has it) side against that (docs/fidelity.md).
+  // the console. A reader of the loaded register after the delay slot waits for the tail's end,
+  // and the second instruction after the load meets the tail when it is that reader: 32 x (lw
+  // I_STAT + 8 instructions, an addiu of the register 2nd..8th) cost 420, 420, 388, 356 ... in
+  // load-timings' loadInterlocked, so a load 13, 13, 12, 11 ... cycles: reader 2nd, reach 2, the
+  // tail ends 4 cycles after the read, where the reader would end at 2 (+2); 3rd, reach 3, ends
+  // at 5 for 3 (+2); 4th +1; 5th on, none. ps1-tests dma/chopping's 64 pairs fit only with this
+  // (its poll loop, a reader 2nd, at 10 cycles); ps1-tests timers stands against it
+  // (docs/fidelity.md).
   static constexpr Cycles kIoTail = 2;
   Cycles load_done_at_ = 0;  // when the last shadowed load's RAM access ends
   u32 shadow_reg_ = 0;       // its destination register, until an instruction waits for it or

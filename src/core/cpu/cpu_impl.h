@@ -216,13 +216,13 @@ bool CpuT<BusT>::timed_read(u32 addr, u32 width, u32 rt, u32& v, u32 first, u32 
     wait_load();
     if (count != 4) {
       if (!bus_.read_merged(addr, v, first, count)) return false;
-      io_tail(addr);
+      io_tail(addr, rt);
       return true;
     }
   }
   const bool ok = width == 4 ? bus_.read32(addr, v) : width == 2 ? bus_.read16(addr, v) : bus_.read8(addr, v);
   if constexpr (kLoadShadow) {
-    if (ok) io_tail(addr);
+    if (ok) io_tail(addr, rt);
   }
   return ok;
 }
@@ -230,20 +230,21 @@ bool CpuT<BusT>::timed_read(u32 addr, u32 width, u32 rt, u32& v, u32 first, u32 
 // io_tail() is called with the read made (the time at the next instruction's start) and the pc
 // at the next instruction: the tail's end as the comment at kIoTail says, from the next two
 // instructions (the second follows the first in memory, also as a branch's delay slot), looked
-// at here where the caller does not know them. Only memory accesses wait for it (wait_load(), a
-// fetch's busy_until), as shadow_reg_ stays clear.
+// at here where the caller does not know them. Memory accesses wait for it (wait_load(), a
+// fetch's busy_until), and so does a reader of rt after the delay slot (shadow_stall()).
 template <class BusT>
-u32 CpuT<BusT>::tail_reach(u32 known) const {
+u32 CpuT<BusT>::tail_reach(u32 known, u32 rt) const {
   if (known == cpu_detail::kTailUnknown && meets_tail(pc_)) return 1;
-  return meets_tail(pc_ + 4) ? 2 : 3;
+  return meets_tail(pc_ + 4, rt) ? 2 : 3;
 }
 
 template <class BusT>
-bool CpuT<BusT>::meets_tail(u32 vaddr) const {
+bool CpuT<BusT>::meets_tail(u32 vaddr, u32 reader) const {
   if constexpr (kLoadShadow) {
+    using namespace cpu_detail;
     u32 w;
     if (bus_.fetch_misses(vaddr)) return true;
-    return bus_.peek_code(vaddr, w) && cpu_detail::loads_memory(w);
+    return bus_.peek_code(vaddr, w) && (loads_memory(w) || (reader != 0 && reads_reg(w, reader)));
   }
   return false;
 }

@@ -120,7 +120,7 @@ class BlockEmitter {
     // LB, LH, LW, LBU and LHU, and SB, SH and SW, in that order: the value loaded, with bit 32
     // set where the CPU may no longer run natively. A load's for each reach of its bus tail
     // (cpu_detail::kTailReaches, Impl::tail_plan()).
-    u64 (*io_loads[5][cpu_detail::kTailReaches])(void* context, u32 address);
+    u64 (*io_loads[5][cpu_detail::kTailReaches])(void* context, u32 address, u32 rt);
     u64 (*io_stores[3])(void* context, u32 address, u32 value);
   };
 

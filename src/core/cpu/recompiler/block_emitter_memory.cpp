@@ -249,12 +249,14 @@ Impl::TailPlan Impl::tail_plan(std::span<const Step> rest) {
     return true;
   };
   if (!known(1)) return {};
+  const u32 t = rt(rest[0].word);  // its reader second meets the tail (CpuT::meets_tail())
+  const auto meets = [&](u32 w) { return loads_memory(w) || (t != 0 && reads_reg(w, t)); };
   if (loads_memory(rest[1].word)) plan.reach = 1;
-  else plan.reach = known(2) ? (loads_memory(rest[2].word) ? 2 : 3) : kTailPastFirst;
+  else plan.reach = known(2) ? (meets(rest[2].word) ? 2 : 3) : kTailPastFirst;
   return plan;
 }
 
-// The call of RecompilerT::io_load() for the I/O load s, with the tail's reach that `plan`
+// The call of RecompilerT::io_load() for the I/O load s (edx: its rt), with the tail's reach that `plan`
 // gives, or, where the plan needs the next line and that line is not whole (a miss or a part
 // of the line) or stale, with the reach the call finds itself.
 void Impl::call_io_load(const Step& s, const TailPlan& plan) {
@@ -265,6 +267,7 @@ void Impl::call_io_load(const Step& s, const TailPlan& plan) {
     cmp(icache_tag(*plan.next_line), (Bus::physical(*plan.next_line) & ICache::kTagMask) | 0xF);
     cmovne(rax, rcx);
   }
+  mov(edx, cpu_detail::rt(s.word));
   call(rax);
 }
 

@@ -131,7 +131,7 @@ bool Impl::has_stall(const Step& s, Shadow shadow, u32 shadowed) {
 // Segment::shadow and Segment::shadowed for a segment's instructions; `reach`: instructions
 // since the last that may have left a load shadowed, this one included (kLoadIssue + kLoadBus - 1).
 // Instructions after one that waits for the segment's last load (shadow_known()) still check:
-// that load's address may have gone through the bus interface, whose tail no reader waits for.
+// that load's address may have gone through the bus interface, whose tail ends apart.
 void Impl::plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>& shadow,
                        std::vector<u32>& shadowed) {
   shadow.resize(run.size());
@@ -141,8 +141,8 @@ void Impl::plan_shadow(std::span<const Step> run, u32 reach, std::vector<Shadow>
     shadow[k] = since > reach ? Shadow::none : since < reach ? Shadow::check : Shadow::clear;
     if (shadow[k] == Shadow::check && known && k - last < reach) shadowed[k] = cpu_detail::rt(run[last].word);
     if (is_load(run[k].native)) {
-      // An I/O load leaves its bus tail with the shadow clear (CpuT::io_tail()); but its call
-      // for another address (its fallback) may be a RAM load's, shadowing rt: checked at run time.
+      // An I/O load's bus tail ends where its call finds (CpuT::io_tail()), and its call for
+      // another address (its fallback) may be a RAM load's: both checked at run time.
       known = run[k].io == 0;
       last = k;
     }
@@ -187,8 +187,8 @@ void Impl::shadow(const Step& s, size_t k, Segment& seg) {
 // its own access starting after that one's end), so either the access in flight is that
 // load's, with shadow_reg_ = r, or it has ended (now >= load_done_at_), and then the check
 // clears shadow_reg_ whatever it holds; or the load's address, not the guessed one, went through
-// the bus interface (CpuT::io_tail()), whose tail leaves shadow_reg_ clear: no reader waits for
-// it, so the wait tests shadow_reg_. Which one is decided at run time, but whether s waits
+// the bus interface: by cached code its tail shadows r too (CpuT::io_tail()), by other code it
+// leaves no shadow, so the wait tests shadow_reg_. Which one is decided at run time, but whether s waits
 // is known now: when it reads r outside r's load delay slot. No stub and no register compare:
 // a waiting instruction moves time to the access's end (no earlier than now) and clears.
 // Where s does not wait, the check only clears shadow_reg_, and only the segment's `last`
@@ -201,7 +201,7 @@ void Impl::shadow_known(const Step& s, const Pipe& pipe, u32 r, bool last) {
   if (waits_for_load(s, r, pipe.after_load && pipe.load_reg == r)) {
     settle();
     Label clear;
-    cmp(cpu32(lay.shadow_reg), 0);  // the load went through the bus interface: no reader waits
+    cmp(cpu32(lay.shadow_reg), 0);  // no shadow left (CpuT::io_tail() from uncached code)
     je(clear);
     mov(rcx, cpu64(lay.load_done_at));
     cmp(now, rcx);

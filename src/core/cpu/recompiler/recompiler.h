@@ -116,11 +116,11 @@ class RecompilerT {
   template <NativeOp K>
   static void load_call(Cpu& c, u32 instr);
   template <NativeOp K>
-  static u32 port_read(Cpu& c, u32 address, u32 reach = cpu_detail::kTailUnknown);
+  static u32 port_read(Cpu& c, u32 address, u32 rt, u32 reach = cpu_detail::kTailUnknown);
   template <NativeOp K>
   static bool port_write(Cpu& c, u32 address, u32 value);
   template <NativeOp K, u32 Reach>
-  static u64 io_load(void* context, u32 address);
+  static u64 io_load(void* context, u32 address, u32 rt);
   template <NativeOp K, u32... Reach>
   static void set_io_loads(BlockEmitter::Layout& l, std::integer_sequence<u32, Reach...>);
   template <NativeOp K>

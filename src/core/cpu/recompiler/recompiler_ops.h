@@ -135,20 +135,20 @@ void RecompilerT<BusT>::load_call(Cpu& c, u32 i) {
   const bool plain = (addr & (access_width(K) - 1)) == 0 && !(c.cop0_.sr & Cop0::kKUc) &&
                      !(c.cop0_.dcic & Cop0::kDcicDAE);
   if (!plain || !BusT::io_address(addr)) return c.execute(i);
-  c.delayed_load(rt(i), port_read<K>(c, addr));
+  c.delayed_load(rt(i), port_read<K>(c, addr, rt(i)));
 }
 
 // What CpuT::load() does past its checks for an I/O port: timed_read() waits for a load in
 // flight (an access outside RAM does not overlap one), reads the port and leaves its bus tail
-// (CpuT::io_tail(), with what the caller knows of where it ends); the value, sign-extended for
+// (CpuT::io_tail() for rt, with what the caller knows of where it ends); the value, sign-extended for
 // LB/LH.
 template <class BusT>
 template <NativeOp K>
-u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address, u32 reach) {
+u32 RecompilerT<BusT>::port_read(Cpu& c, u32 address, u32 rt, u32 reach) {
   c.wait_load();
   u32 v;
   c.bus_.read_io(address, v, access_width(K));
-  c.io_tail(address, reach);
+  c.io_tail(address, rt, reach);
   if constexpr (K == NativeOp::Lh) v = u32(s32(s16(v)));
   if constexpr (K == NativeOp::Lb) v = u32(s32(s8(v)));
   return v;
@@ -174,9 +174,9 @@ bool RecompilerT<BusT>::port_write(Cpu& c, u32 address, u32 value) {
 // instruction (the native code checks the deadline).
 template <class BusT>
 template <NativeOp K, u32 Reach>
-u64 RecompilerT<BusT>::io_load(void* context, u32 address) {
+u64 RecompilerT<BusT>::io_load(void* context, u32 address, u32 rt) {
   Cpu& c = *static_cast<Cpu*>(context);
-  const u32 v = port_read<K>(c, address, Reach);
+  const u32 v = port_read<K>(c, address, rt, Reach);
   return v | u64{leaves_native(c)} << 32;
 }
 

@@ -8,53 +8,24 @@
         .set noat
         .text
 
-        .macro  TIMED name, load
-        .balign 16
-        .globl  \name
-\name:
-        lui     $t8, 0x1F80
-        li      $t7, 2
+#include "counter2_bracket.inc"
+
+# The access-time loop, 100 times a pass: nop, `before`, addiu, `after`, bnez, nop.
+        .macro  LOOP name, before, after
+        COUNTED \name
 1:      li      $t6, 100
         lhu     $t9, 0x1120($t8)
 2:      nop
+        \before
         addiu   $t6, $t6, -1
-        \load
+        \after
         bnez    $t6, 2b
         nop
-        lhu     $v0, 0x1120($t8)
-        addiu   $t7, $t7, -1
-        bnez    $t7, 1b
-        nop
-        subu    $v0, $v0, $t9
-        jr      $ra
-        andi    $v0, $v0, 0xFFFF
+        DONE
         .endm
 
-        .macro  TIMED_PAIR name
-        .balign 16
-        .globl  \name
-\name:
-        lui     $t8, 0x1F80
-        li      $t7, 2
-1:      li      $t6, 100
-        lhu     $t9, 0x1120($t8)
-2:      nop
-        lwl     $a1, 3($a0)
-        addiu   $t6, $t6, -1
-        lwr     $a1, 0($a0)
-        bnez    $t6, 2b
-        nop
-        lhu     $v0, 0x1120($t8)
-        addiu   $t7, $t7, -1
-        bnez    $t7, 1b
-        nop
-        subu    $v0, $v0, $t9
-        jr      $ra
-        andi    $v0, $v0, 0xFFFF
-        .endm
-
-        TIMED   t_none, ""
-        TIMED_PAIR t_lwlr
-        TIMED   t_lbu, "lbu $a1, 0($a0)"
-        TIMED   t_lhu, "lhu $a1, 0($a0)"
-        TIMED   t_lw, "lw $a1, 0($a0)"
+        LOOP    t_none, "", ""
+        LOOP    t_lwlr, "lwl $a1, 3($a0)", "lwr $a1, 0($a0)"
+        LOOP    t_lbu, "", "lbu $a1, 0($a0)"
+        LOOP    t_lhu, "", "lhu $a1, 0($a0)"
+        LOOP    t_lw, "", "lw $a1, 0($a0)"

@@ -7,24 +7,7 @@
         .set noat
         .text
 
-        .macro  TIMED name
-        .balign 16
-        .globl  \name
-\name:
-        lui     $t8, 0x1F80
-        li      $t7, 2
-1:      lhu     $t9, 0x1120($t8)
-        .endm
-
-        .macro  DONE
-        lhu     $v0, 0x1120($t8)
-        addiu   $t7, $t7, -1
-        bnez    $t7, 1b
-        nop
-        subu    $v0, $v0, $t9
-        jr      $ra
-        andi    $v0, $v0, 0xFFFF
-        .endm
+#include "counter2_bracket.inc"
 
         .macro  SPACED name, nops
         TIMED   \name

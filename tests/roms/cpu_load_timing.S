@@ -5,83 +5,65 @@
         .set noat
         .text
 
-        .macro  TIMED name
-        .balign 16
-        .globl  \name
-\name:
-        lui     $t8, 0x1F80
-        li      $t7, 2
-1:      lhu     $t9, 0x1120($t8)
-        nop                     # four instructions keep the counter read's own bus tail (cpu.h
-        nop                     # kIoTail, met by a load in the next two) out of the sequence,
-        nop                     # which would otherwise hide it in a first load but not in the
-        nop                     # empty sequence's closing read
-        .endm
+#include "counter2_bracket.inc"
 
-        .macro  DONE
-        lhu     $v0, 0x1120($t8)
-        addiu   $t7, $t7, -1
-        bnez    $t7, 1b
-        nop
-        subu    $v0, $v0, $t9
-        jr      $ra
-        andi    $v0, $v0, 0xFFFF
-        .endm
-
-        TIMED   t_empty
+# The opening read is followed by four nops: they keep its own bus tail (cpu.h kIoTail, met by a
+# load in the next two) out of the sequence, which would otherwise hide it in a first load but
+# not in the empty sequence's closing read.
+        TIMED   t_empty, 4
         DONE
 
-        TIMED   t_lw_nop
+        TIMED   t_lw_nop, 4
         lw      $t0, 0($a0)
         nop
         DONE
 
-        TIMED   t_lw_lw_nop
+        TIMED   t_lw_lw_nop, 4
         lw      $t0, 0($a0)
         lw      $t1, 4($a0)
         nop
         DONE
 
-        TIMED   t_lw_lw_same_nop
+        TIMED   t_lw_lw_same_nop, 4
         lw      $t0, 0($a0)
         lw      $t0, 4($a0)
         nop
         DONE
 
-        TIMED   t_lw3_nop
+        TIMED   t_lw3_nop, 4
         lw      $t0, 0($a0)
         lw      $t1, 4($a0)
         lw      $t2, 8($a0)
         nop
         DONE
 
-        TIMED   t_lw3_same_nop
+        TIMED   t_lw3_same_nop, 4
         lw      $t0, 0($a0)
         lw      $t0, 4($a0)
         lw      $t0, 8($a0)
         nop
         DONE
 
-        TIMED   t_lw_6nops
+        TIMED   t_lw_6nops, 4
         lw      $t0, 0($a0)
         .rept   6
         nop
         .endr
         DONE
 
-        TIMED   t_lw_7nops
+        TIMED   t_lw_7nops, 4
         lw      $t0, 0($a0)
         .rept   7
         nop
         .endr
         DONE
 
-        TIMED   t_lw_move
+        TIMED   t_lw_move, 4
         lw      $t0, 0($a0)
         move    $t4, $t0
         DONE
 
-        TIMED   t_lw_nop_use
+        TIMED   t_lw_nop_use, 4
         lw      $t0, 0($a0)
         nop
         move    $t4, $t0
